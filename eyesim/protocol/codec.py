@@ -1,0 +1,155 @@
+"""Encoding and decoding of protocol frames: length prefix, header, typed payload fields."""
+
+from __future__ import annotations
+
+import struct
+from typing import NamedTuple, Sequence
+
+from eyesim.protocol import generated as g
+
+_LEN = struct.Struct("<I")
+_HEADER = struct.Struct("<HHI")  # op, kind, request id
+_I32 = struct.Struct("<i")
+_U32 = struct.Struct("<I")
+_F64 = struct.Struct("<d")
+
+
+class ProtocolError(Exception):
+    """A frame or payload that does not follow the protocol; `code` is one of the ERR_* values."""
+
+    def __init__(self, code: int, message: str):
+        super().__init__(message)
+        self.code = code
+
+
+class Message(NamedTuple):
+    op: int
+    kind: int
+    request_id: int
+    payload: bytes
+
+
+def _encode_field(out: list[bytes], typ: str, value) -> None:
+    if typ == "i32":
+        out.append(_I32.pack(value))
+    elif typ == "u32":
+        out.append(_U32.pack(value))
+    elif typ == "f64":
+        out.append(_F64.pack(value))
+    elif typ == "str":
+        raw = value.encode("utf-8")
+        out.append(_U32.pack(len(raw)))
+        out.append(raw)
+    elif typ == "bytes":
+        raw = bytes(value)
+        out.append(_U32.pack(len(raw)))
+        out.append(raw)
+    elif typ == "i32s":
+        out.append(_U32.pack(len(value)))
+        out.append(struct.pack(f"<{len(value)}i", *value))
+    else:
+        raise ValueError(f"unknown field type {typ!r}")
+
+
+def encode_payload(layout: Sequence[tuple[str, str]], values: Sequence) -> bytes:
+    if len(values) != len(layout):
+        raise ValueError(f"expected {len(layout)} values, got {len(values)}")
+    out: list[bytes] = []
+    for (_, typ), value in zip(layout, values):
+        _encode_field(out, typ, value)
+    return b"".join(out)
+
+
+def decode_payload(layout: Sequence[tuple[str, str]], payload: bytes) -> tuple:
+    """Decode `payload` by `layout`; raises ProtocolError(BAD_PAYLOAD) on any mismatch."""
+    values = []
+    pos = 0
+    end = len(payload)
+    try:
+        for name, typ in layout:
+            if typ == "i32":
+                values.append(_I32.unpack_from(payload, pos)[0])
+                pos += 4
+            elif typ == "u32":
+                values.append(_U32.unpack_from(payload, pos)[0])
+                pos += 4
+            elif typ == "f64":
+                values.append(_F64.unpack_from(payload, pos)[0])
+                pos += 8
+            else:
+                (n,) = _U32.unpack_from(payload, pos)
+                pos += 4
+                size = n * 4 if typ == "i32s" else n
+                if pos + size > end:
+                    raise ProtocolError(g.ERR_BAD_PAYLOAD, f"field {name!r}: length {n} runs past the payload")
+                raw = payload[pos:pos + size]
+                pos += size
+                if typ == "str":
+                    values.append(raw.decode("utf-8"))
+                elif typ == "bytes":
+                    values.append(raw)
+                else:
+                    values.append(list(struct.unpack(f"<{n}i", raw)))
+    except struct.error:
+        raise ProtocolError(g.ERR_BAD_PAYLOAD, f"payload too short ({end} bytes) for its fields") from None
+    except UnicodeDecodeError:
+        raise ProtocolError(g.ERR_BAD_PAYLOAD, "a text field is not valid UTF-8") from None
+    if pos != end:
+        raise ProtocolError(g.ERR_BAD_PAYLOAD, f"{end - pos} unexpected bytes after the last field")
+    return tuple(values)
+
+
+def encode_frame(op: int, kind: int, request_id: int, payload: bytes) -> bytes:
+    body_len = _HEADER.size + len(payload)
+    return _LEN.pack(body_len) + _HEADER.pack(op, kind, request_id) + payload
+
+
+def encode_message(op: int, kind: int, request_id: int, values: Sequence) -> bytes:
+    """Encode a request or reply of operation `op` with its fields' values."""
+    spec = g.OPS[op]
+    layout = spec.request if kind == g.KIND_REQUEST else spec.reply
+    return encode_frame(op, kind, request_id, encode_payload(layout, values))
+
+
+def encode_error(op: int, request_id: int, code: int, message: str) -> bytes:
+    return encode_frame(op, g.KIND_ERROR, request_id, encode_payload(g.ERROR_PAYLOAD, (code, message)))
+
+
+def decode_body(body: bytes) -> Message:
+    if len(body) < _HEADER.size:
+        raise ProtocolError(g.ERR_BAD_FRAME, f"frame of {len(body)} bytes is shorter than its header")
+    op, kind, request_id = _HEADER.unpack_from(body)
+    return Message(op, kind, request_id, body[_HEADER.size:])
+
+
+class FrameDecoder:
+    """Reassembles frames from a byte stream split or coalesced in any way."""
+
+    def __init__(self, max_frame: int = g.MAX_FRAME):
+        self._buffer = bytearray()
+        self._max_frame = max_frame
+
+    def feed(self, data: bytes) -> list[Message]:
+        """Add received bytes; return the complete messages they finish, in order.
+
+        Raises ProtocolError(BAD_FRAME) when a frame announces a size beyond the limit."""
+        self._buffer += data
+        messages = []
+        buf = self._buffer
+        pos = 0
+        while len(buf) - pos >= 4:
+            (length,) = _LEN.unpack_from(buf, pos)
+            if length > self._max_frame or length < _HEADER.size:
+                raise ProtocolError(g.ERR_BAD_FRAME,
+                                    f"frame length {length} outside {_HEADER.size}..{self._max_frame}")
+            if len(buf) - pos - 4 < length:
+                break
+            messages.append(decode_body(bytes(buf[pos + 4:pos + 4 + length])))
+            pos += 4 + length
+        if pos:
+            del buf[:pos]
+        return messages
+
+    @property
+    def pending_bytes(self) -> int:
+        return len(self._buffer)
