@@ -36,6 +36,8 @@ def load() -> tuple[dict, list]:
 def python_source(spec: dict) -> str:
     out = [f'"""Protocol tables. {BANNER}"""', "", "from eyesim.protocol.ops import OpSpec", ""]
     out.append(f"VERSION = {spec['version']}")
+    out.append(f"DEFAULT_HOST = {spec['default_host']!r}")
+    out.append(f"DEFAULT_PORT = {spec['default_port']}")
     out.append(f"MAX_FRAME = {spec['max_frame']}")
     out.append(f"HEADER_SIZE = {spec['header_size']}")
     for kind, value in spec["kinds"].items():
@@ -65,6 +67,8 @@ def c_source(spec: dict) -> str:
     out = [f"/* {BANNER} */", "#ifndef EYESIM_PROTOCOL_GEN_H", "#define EYESIM_PROTOCOL_GEN_H", "",
            "#include <stdint.h>", ""]
     out.append(f"#define ES_PROTOCOL_VERSION {spec['version']}u")
+    out.append(f"#define ES_DEFAULT_HOST \"{spec['default_host']}\"")
+    out.append(f"#define ES_DEFAULT_PORT {spec['default_port']}")
     out.append(f"#define ES_MAX_FRAME {spec['max_frame']}u")
     out.append(f"#define ES_HEADER_SIZE {spec['header_size']}u")
     for kind, value in spec["kinds"].items():

@@ -3,6 +3,8 @@
 from eyesim.protocol.ops import OpSpec
 
 VERSION = 1
+DEFAULT_HOST = '127.0.0.1'
+DEFAULT_PORT = 9797
 MAX_FRAME = 16777216
 HEADER_SIZE = 8
 KIND_REQUEST = 0

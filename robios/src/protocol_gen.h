@@ -5,6 +5,8 @@
 #include <stdint.h>
 
 #define ES_PROTOCOL_VERSION 1u
+#define ES_DEFAULT_HOST "127.0.0.1"
+#define ES_DEFAULT_PORT 9797
 #define ES_MAX_FRAME 16777216u
 #define ES_HEADER_SIZE 8u
 #define ES_KIND_REQUEST 0
