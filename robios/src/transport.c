@@ -1,0 +1,602 @@
+/* transport.c: the connection: lazy connect + handshake, reply routing by request id, clear endings. */
+#include "transport.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <netdb.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdatomic.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <sys/socket.h>
+#include <time.h>
+#include <unistd.h>
+
+#define DEFAULT_CONNECT_TIMEOUT_S 10.0
+#define MIN_HANDSHAKE_TIMEOUT_S 5.0 /* a busy simulator may take a moment to answer HELLO */
+#define RETRY_INTERVAL_MS 100
+#define REPORTED_ERRORS_MAX 64
+
+#ifndef MSG_NOSIGNAL
+#define MSG_NOSIGNAL 0 /* macOS: SO_NOSIGPIPE is set on the socket instead */
+#endif
+
+/* A caller waiting for the reply to its request; lives on the caller's stack. */
+typedef struct waiter {
+    uint32_t request_id;
+    pthread_cond_t ready;
+    uint8_t *body; /* the reply's frame body, handed over by the reader thread */
+    uint32_t len;
+    struct waiter *next;
+} waiter;
+
+/* Results of reading from the socket besides 0 (ok) and a positive errno. */
+enum { READ_EOF = -1, READ_TIMEOUT = -2, READ_BAD_LENGTH = -3, READ_NO_MEMORY = -4 };
+
+static pthread_once_t connect_once = PTHREAD_ONCE_INIT;
+static int sock = -1;
+static char address[300]; /* "host:port", for messages */
+
+static pthread_mutex_t send_lock = PTHREAD_MUTEX_INITIALIZER; /* whole frames, one at a time */
+static pthread_mutex_t wait_lock = PTHREAD_MUTEX_INITIALIZER; /* guards waiters, connection_dead */
+static waiter *waiters;
+static bool connection_dead; /* set only once the program is exiting anyway */
+
+static atomic_uint last_request_id;
+static atomic_bool exiting; /* exit() is running: a lost connection is no longer news */
+
+static pthread_mutex_t ending_lock = PTHREAD_MUTEX_INITIALIZER;
+static bool ending; /* es_fatal is ending the program */
+static pthread_t ending_thread;
+
+static pthread_mutex_t reported_lock = PTHREAD_MUTEX_INITIALIZER;
+static uint32_t reported[REPORTED_ERRORS_MAX];
+static unsigned reported_count;
+
+static _Thread_local uint8_t *kept_reply; /* backs text/array results until the thread's next call */
+
+/* ---- Ending the program ------------------------------------------------------------------------ */
+
+static _Noreturn void wait_for_exit(void)
+{
+    for (;;)
+        pause();
+}
+
+_Noreturn void es_fatal(int status, const char *format, ...)
+{
+    char line[1024];
+    va_list ap;
+    va_start(ap, format);
+    vsnprintf(line, sizeof line, format, ap);
+    va_end(ap);
+
+    pthread_mutex_lock(&ending_lock);
+    bool first = !ending;
+    bool again = ending && pthread_equal(ending_thread, pthread_self());
+    if (first) {
+        ending = true;
+        ending_thread = pthread_self();
+    }
+    pthread_mutex_unlock(&ending_lock);
+
+    if (first) {
+        fprintf(stderr, "eyesim: %s\n", line);
+        exit(status); /* exit, not _exit: the program's buffered stdout still gets written */
+    }
+    if (again)
+        _exit(status); /* failed again inside exit() (an atexit handler): do not re-enter exit */
+    wait_for_exit(); /* another thread is ending the program */
+}
+
+/* True for the thread that is ending the program (its atexit handlers may still call the API: they
+ * get error values). Any other thread calling now just waits for the process to end. */
+static bool program_ending(void)
+{
+    pthread_mutex_lock(&ending_lock);
+    bool mine = ending && pthread_equal(ending_thread, pthread_self());
+    bool other = ending && !mine;
+    pthread_mutex_unlock(&ending_lock);
+    if (other)
+        wait_for_exit();
+    return mine;
+}
+
+static void note_exit(void)
+{
+    atomic_store(&exiting, true);
+}
+
+/* The connection is gone: end the program. If it is ending anyway (exit() is running), the calls
+ * still waiting, say an atexit handler stopping the robot, get errors instead of hanging. */
+static void connection_lost(const char *reason)
+{
+    if (!atomic_load(&exiting))
+        es_fatal(ES_EXIT_CONNECTION_LOST, "lost the connection to the simulator at %s (%s); the program ends",
+                 address, reason);
+    pthread_mutex_lock(&wait_lock);
+    connection_dead = true;
+    for (waiter *w = waiters; w; w = w->next)
+        pthread_cond_signal(&w->ready);
+    pthread_mutex_unlock(&wait_lock);
+}
+
+/* ---- Time -------------------------------------------------------------------------------------- */
+
+static double now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + (double)t.tv_nsec / 1e9;
+}
+
+/* Milliseconds left until `deadline` (a now_s time), for poll; a negative deadline means never. */
+static int ms_until(double deadline)
+{
+    if (deadline < 0)
+        return -1;
+    double left = (deadline - now_s()) * 1000.0;
+    return left <= 0 ? 0 : left > 1e9 ? 1000000000 : (int)ceil(left);
+}
+
+static void sleep_ms(int ms)
+{
+    struct timespec t = {ms / 1000, (long)(ms % 1000) * 1000000L};
+    while (nanosleep(&t, &t) != 0 && errno == EINTR) {
+    }
+}
+
+/* ---- Socket I/O -------------------------------------------------------------------------------- */
+
+static int send_all(const uint8_t *data, size_t len)
+{
+    while (len > 0) {
+        ssize_t n = send(sock, data, len, MSG_NOSIGNAL);
+        if (n < 0) {
+            if (errno == EINTR)
+                continue;
+            return errno;
+        }
+        data += n;
+        len -= (size_t)n;
+    }
+    return 0;
+}
+
+static int recv_exact(uint8_t *data, size_t len, double deadline)
+{
+    while (len > 0) {
+        if (deadline >= 0) {
+            struct pollfd p = {.fd = sock, .events = POLLIN};
+            int ready = poll(&p, 1, ms_until(deadline));
+            if (ready < 0 && errno == EINTR)
+                continue;
+            if (ready < 0)
+                return errno;
+            if (ready == 0)
+                return READ_TIMEOUT;
+        }
+        ssize_t n = recv(sock, data, len, 0);
+        if (n == 0)
+            return READ_EOF;
+        if (n < 0) {
+            if (errno == EINTR)
+                continue;
+            return errno;
+        }
+        data += n;
+        len -= (size_t)n;
+    }
+    return 0;
+}
+
+/* Reads one frame; *body (malloc'd) gets everything after the length prefix. */
+static int read_frame(double deadline, uint8_t **body, uint32_t *len)
+{
+    uint8_t prefix[4];
+    int rc = recv_exact(prefix, sizeof prefix, deadline);
+    if (rc)
+        return rc;
+    *len = (uint32_t)prefix[0] | (uint32_t)prefix[1] << 8 | (uint32_t)prefix[2] << 16 | (uint32_t)prefix[3] << 24;
+    if (*len < ES_HEADER_SIZE || *len > ES_MAX_FRAME)
+        return READ_BAD_LENGTH;
+    if (!(*body = malloc(*len)))
+        return READ_NO_MEMORY;
+    if ((rc = recv_exact(*body, *len, deadline))) {
+        free(*body);
+        *body = NULL;
+    }
+    return rc;
+}
+
+static const char *read_error(int rc)
+{
+    switch (rc) {
+    case READ_EOF: return "connection closed";
+    case READ_TIMEOUT: return "timed out";
+    case READ_BAD_LENGTH: return "frame length outside the protocol's limits";
+    case READ_NO_MEMORY: return "out of memory";
+    default: return strerror(rc);
+    }
+}
+
+/* ---- Errors from the simulator ---------------------------------------------------------------- */
+
+static uint32_t error_key(const char *function, int32_t code, const es_value *message)
+{
+    uint32_t h = 2166136261u; /* FNV-1a */
+    for (const char *c = function; *c; c++)
+        h = (h ^ (uint8_t)*c) * 16777619u;
+    h = (h ^ (uint32_t)code) * 16777619u;
+    for (uint32_t k = 0; k < message->n; k++)
+        h = (h ^ ((const uint8_t *)message->p)[k]) * 16777619u;
+    return h;
+}
+
+/* Prints "eyesim: <function>: <message>" the first time this function gets this error, so a loop
+ * that keeps failing does not flood the terminal. SHUTDOWN means the simulator is going away. */
+static void report_error(const char *function, const es_value *fields)
+{
+    int32_t code = (int32_t)fields[0].i;
+    const es_value *message = &fields[1];
+    if (code == ES_ERR_SHUTDOWN && !atomic_load(&exiting))
+        es_fatal(ES_EXIT_CONNECTION_LOST, "the simulator at %s is shutting down (%.*s); the program ends", address,
+                 (int)message->n, (const char *)message->p);
+    uint32_t key = error_key(function, code, message);
+    bool seen = false;
+    pthread_mutex_lock(&reported_lock);
+    for (unsigned k = 0; k < reported_count && !seen; k++)
+        seen = reported[k] == key;
+    if (!seen && reported_count < REPORTED_ERRORS_MAX)
+        reported[reported_count++] = key;
+    pthread_mutex_unlock(&reported_lock);
+    if (!seen)
+        fprintf(stderr, "eyesim: %s: %.*s\n", function, (int)message->n, (const char *)message->p);
+}
+
+/* ---- The reader thread ------------------------------------------------------------------------- */
+
+/* Hands a reply to the caller waiting for its request id. Anything else is dropped; an error
+ * nobody asked for (the simulator complaining about the connection) is still shown. */
+static void deliver(uint8_t *body, uint32_t len)
+{
+    es_header header;
+    es_decode_header(body, len, &header); /* cannot fail: read_frame checked the length */
+    pthread_mutex_lock(&wait_lock);
+    waiter *w = waiters;
+    while (w && (w->request_id != header.request_id || w->body))
+        w = w->next;
+    if (w) {
+        w->body = body;
+        w->len = len;
+        pthread_cond_signal(&w->ready);
+    }
+    pthread_mutex_unlock(&wait_lock);
+    if (w)
+        return;
+    es_value fields[8];
+    unsigned count;
+    if (header.kind == ES_KIND_ERROR && es_decode_message(body, len, &header, fields, &count) == ES_CODEC_OK)
+        report_error("simulator", fields);
+    free(body);
+}
+
+static void *read_replies(void *unused)
+{
+    (void)unused;
+    for (;;) {
+        uint8_t *body;
+        uint32_t len;
+        int rc = read_frame(-1, &body, &len);
+        if (rc == READ_BAD_LENGTH && !atomic_load(&exiting))
+            es_fatal(ES_EXIT_PROTOCOL, "the simulator at %s sent a malformed frame; the program ends", address);
+        if (rc == READ_NO_MEMORY)
+            es_fatal(ES_EXIT_PROTOCOL, "out of memory reading a reply from the simulator");
+        if (rc) {
+            connection_lost(read_error(rc));
+            return NULL;
+        }
+        deliver(body, len);
+    }
+}
+
+static void start_reader(void)
+{
+    /* The reader must never run the program's signal handlers: block everything in it. */
+    sigset_t all, old;
+    sigfillset(&all);
+    pthread_sigmask(SIG_SETMASK, &all, &old);
+    pthread_attr_t attr;
+    pthread_attr_init(&attr);
+    pthread_attr_setdetachstate(&attr, PTHREAD_CREATE_DETACHED);
+    pthread_t reader;
+    int rc = pthread_create(&reader, &attr, read_replies, NULL);
+    pthread_attr_destroy(&attr);
+    pthread_sigmask(SIG_SETMASK, &old, NULL);
+    if (rc)
+        es_fatal(ES_EXIT_PROTOCOL, "cannot start the thread that reads replies (%s)", strerror(rc));
+}
+
+/* ---- Connecting -------------------------------------------------------------------------------- */
+
+static uint32_t new_request_id(void)
+{
+    uint32_t id;
+    do /* 0 is skipped when the counter wraps: it is never a real request */
+        id = atomic_fetch_add(&last_request_id, 1u) + 1u;
+    while (id == 0);
+    return id;
+}
+
+static const char *program_name(void)
+{
+#if defined(__linux__)
+    extern char *program_invocation_short_name;
+    return program_invocation_short_name;
+#elif defined(__APPLE__) || defined(__FreeBSD__)
+    return getprogname();
+#else
+    return "";
+#endif
+}
+
+static double connect_timeout(void)
+{
+    const char *text = getenv("EYESIM_CONNECT_TIMEOUT");
+    if (!text || !*text)
+        return DEFAULT_CONNECT_TIMEOUT_S;
+    char *end;
+    double seconds = strtod(text, &end);
+    if (*end || !(seconds >= 0) || seconds > 1e6) {
+        fprintf(stderr, "eyesim: EYESIM_CONNECT_TIMEOUT=%s is not a number of seconds; using %g\n", text,
+                DEFAULT_CONNECT_TIMEOUT_S);
+        return DEFAULT_CONNECT_TIMEOUT_S;
+    }
+    return seconds;
+}
+
+/* One connection attempt to one address, giving up after timeout_ms. Returns the socket or -1. */
+static int try_connect(const struct addrinfo *ai, int timeout_ms, int *error)
+{
+    /* Close-on-exec: programs the robot program starts must not hold the connection open. */
+#ifdef SOCK_CLOEXEC
+    int fd = socket(ai->ai_family, ai->ai_socktype | SOCK_CLOEXEC, ai->ai_protocol);
+#else
+    int fd = socket(ai->ai_family, ai->ai_socktype, ai->ai_protocol);
+    if (fd >= 0)
+        fcntl(fd, F_SETFD, FD_CLOEXEC);
+#endif
+    if (fd < 0) {
+        *error = errno;
+        return -1;
+    }
+    int flags = fcntl(fd, F_GETFL);
+    fcntl(fd, F_SETFL, flags | O_NONBLOCK); /* so an unreachable host cannot outlast the timeout */
+    int rc = connect(fd, ai->ai_addr, ai->ai_addrlen);
+    if (rc < 0 && (errno == EINPROGRESS || errno == EINTR)) {
+        struct pollfd p = {.fd = fd, .events = POLLOUT};
+        rc = poll(&p, 1, timeout_ms);
+        if (rc == 0) {
+            errno = ETIMEDOUT;
+            rc = -1;
+        } else if (rc > 0) {
+            socklen_t size = sizeof *error;
+            getsockopt(fd, SOL_SOCKET, SO_ERROR, error, &size);
+            rc = *error ? -1 : 0;
+            errno = *error;
+        }
+    }
+    if (rc < 0) {
+        *error = errno;
+        close(fd);
+        return -1;
+    }
+    fcntl(fd, F_SETFL, flags);
+    return fd;
+}
+
+/* Connects to host:port, retrying until `timeout` seconds have passed. */
+static int open_connection(const char *host, const char *port, double timeout)
+{
+    struct addrinfo hints = {0}, *found;
+    hints.ai_family = AF_UNSPEC;
+    hints.ai_socktype = SOCK_STREAM;
+    hints.ai_flags = AI_NUMERICSERV;
+    int rc = getaddrinfo(host, port, &hints, &found);
+    if (rc)
+        es_fatal(ES_EXIT_NO_SIMULATOR, "cannot find the simulator's host %s (%s); check EYESIM_HOST", host,
+                 gai_strerror(rc));
+
+    double deadline = now_s() + timeout;
+    bool announced = false;
+    int error = 0;
+    for (;;) {
+        for (struct addrinfo *ai = found; ai; ai = ai->ai_next) {
+            int wait_ms = ms_until(deadline);
+            int fd = try_connect(ai, wait_ms < 50 ? 50 : wait_ms > 1000 ? 1000 : wait_ms, &error);
+            if (fd >= 0) {
+                freeaddrinfo(found);
+                return fd;
+            }
+        }
+        int left_ms = ms_until(deadline);
+        if (left_ms == 0)
+            es_fatal(ES_EXIT_NO_SIMULATOR,
+                     "no simulator answered at %s within %g s (%s); start the simulator first, or set "
+                     "EYESIM_HOST/EYESIM_PORT",
+                     address, timeout, strerror(error));
+        if (!announced) {
+            fprintf(stderr, "eyesim: waiting for the simulator at %s (set EYESIM_HOST/EYESIM_PORT) ...\n", address);
+            announced = true;
+        }
+        sleep_ms(left_ms < RETRY_INTERVAL_MS ? left_ms : RETRY_INTERVAL_MS);
+    }
+}
+
+/* HELLO: protocol version, which robot (EYESIM_ROBOT), program name, pid. Refusal ends the program. */
+static void handshake(double timeout)
+{
+    const char *robot = getenv("EYESIM_ROBOT");
+    es_value hello[4] = {es_int(ES_PROTOCOL_VERSION), es_text(robot), es_text(program_name()), es_int(getpid())};
+    uint32_t id = new_request_id();
+    es_buf frame = {0};
+    if (es_encode_message(&frame, ES_OP_HELLO, ES_KIND_REQUEST, id, hello) != ES_CODEC_OK)
+        es_fatal(ES_EXIT_PROTOCOL, "cannot encode the handshake (is EYESIM_ROBOT very long?)");
+    int rc = send_all(frame.data, frame.len);
+    es_buf_free(&frame);
+    if (rc)
+        es_fatal(ES_EXIT_CONNECTION_LOST, "the simulator at %s closed the connection during the handshake (%s)",
+                 address, strerror(rc));
+
+    uint8_t *body;
+    uint32_t len;
+    double wait = timeout < MIN_HANDSHAKE_TIMEOUT_S ? MIN_HANDSHAKE_TIMEOUT_S : timeout;
+    rc = read_frame(now_s() + wait, &body, &len);
+    if (rc == READ_TIMEOUT)
+        es_fatal(ES_EXIT_NO_SIMULATOR, "no handshake reply from %s within %g s; is that the EyeSim simulator?",
+                 address, wait);
+    if (rc == READ_BAD_LENGTH)
+        es_fatal(ES_EXIT_PROTOCOL, "%s sent a malformed handshake reply; is that the EyeSim simulator?", address);
+    if (rc)
+        es_fatal(ES_EXIT_CONNECTION_LOST, "the simulator at %s closed the connection during the handshake (%s)",
+                 address, read_error(rc));
+
+    es_header header;
+    es_value fields[8];
+    unsigned count;
+    rc = es_decode_message(body, len, &header, fields, &count);
+    if (rc || header.op != ES_OP_HELLO || header.request_id != id || header.kind == ES_KIND_REQUEST)
+        es_fatal(ES_EXIT_PROTOCOL, "%s sent a malformed handshake reply (%s)", address,
+                 rc ? es_codec_error(rc) : "not an answer to HELLO");
+    if (header.kind == ES_KIND_ERROR)
+        es_fatal(ES_EXIT_REFUSED, "the simulator at %s refused this program: %.*s", address, (int)fields[1].n,
+                 (const char *)fields[1].p);
+    free(body);
+}
+
+static void connect_to_simulator(void)
+{
+    const char *host = getenv("EYESIM_HOST");
+    if (!host || !*host)
+        host = ES_DEFAULT_HOST;
+    char port[16];
+    const char *port_text = getenv("EYESIM_PORT");
+    if (port_text && *port_text) {
+        char *end;
+        long number = strtol(port_text, &end, 10);
+        if (*end || number < 1 || number > 65535)
+            es_fatal(ES_EXIT_NO_SIMULATOR, "EYESIM_PORT=%s is not a port number (1-65535)", port_text);
+        snprintf(port, sizeof port, "%ld", number);
+    } else {
+        snprintf(port, sizeof port, "%d", ES_DEFAULT_PORT);
+    }
+    bool ipv6_literal = strchr(host, ':') != NULL;
+    snprintf(address, sizeof address, ipv6_literal ? "[%s]:%s" : "%s:%s", host, port);
+
+    double timeout = connect_timeout();
+    sock = open_connection(host, port, timeout);
+    int on = 1;
+    setsockopt(sock, IPPROTO_TCP, TCP_NODELAY, &on, sizeof on); /* calls are small and latency-bound */
+#ifdef SO_NOSIGPIPE
+    setsockopt(sock, SOL_SOCKET, SO_NOSIGPIPE, &on, sizeof on);
+#endif
+    handshake(timeout);
+    atexit(note_exit);
+    start_reader();
+}
+
+/* ---- Calls ------------------------------------------------------------------------------------- */
+
+static bool has_variable_fields(const es_type *types, unsigned count)
+{
+    for (unsigned k = 0; k < count; k++)
+        if (types[k] == ES_T_STR || types[k] == ES_T_BYTES || types[k] == ES_T_I32S)
+            return true;
+    return false;
+}
+
+/* Checks and decodes the reply to `op`; returns 0 when `results` hold its values. */
+static int take_reply(const char *function, uint16_t op, uint8_t *body, uint32_t len, es_value *results)
+{
+    es_header header;
+    es_value fields[8];
+    unsigned count;
+    int rc = es_decode_message(body, len, &header, fields, &count);
+    if (rc == ES_CODEC_OK && header.op == op && header.kind == ES_KIND_ERROR) {
+        report_error(function, fields);
+        free(body);
+        return -1;
+    }
+    if (rc || header.op != op || header.kind != ES_KIND_REPLY) {
+        fprintf(stderr, "eyesim: %s: malformed reply from the simulator (%s)\n", function,
+                rc ? es_codec_error(rc) : "not an answer to this call");
+        free(body);
+        return -1;
+    }
+    memcpy(results, fields, count * sizeof fields[0]);
+    if (has_variable_fields(es_find_op(op)->reply, count))
+        kept_reply = body;
+    else
+        free(body);
+    return 0;
+}
+
+int es_call(const char *function, uint16_t op, const es_value *args, es_value *results)
+{
+    if (program_ending())
+        return -1;
+    pthread_once(&connect_once, connect_to_simulator);
+    free(kept_reply);
+    kept_reply = NULL;
+
+    waiter me = {.request_id = new_request_id()};
+    es_buf frame = {0};
+    int rc = es_encode_message(&frame, op, ES_KIND_REQUEST, me.request_id, args);
+    if (rc) {
+        fprintf(stderr, "eyesim: %s: %s\n", function, es_codec_error(rc));
+        es_buf_free(&frame);
+        return -1;
+    }
+
+    /* Register before sending, so even an instant reply finds its waiter. */
+    pthread_cond_init(&me.ready, NULL);
+    pthread_mutex_lock(&wait_lock);
+    bool dead = connection_dead;
+    if (!dead) {
+        me.next = waiters;
+        waiters = &me;
+    }
+    pthread_mutex_unlock(&wait_lock);
+
+    if (!dead) {
+        pthread_mutex_lock(&send_lock);
+        rc = send_all(frame.data, frame.len);
+        pthread_mutex_unlock(&send_lock);
+        if (rc)
+            connection_lost(strerror(rc)); /* returns only while the program is exiting anyway */
+    }
+    es_buf_free(&frame);
+
+    /* Other threads' calls go on meanwhile: only this caller sleeps until its reply is routed here. */
+    pthread_mutex_lock(&wait_lock);
+    while (!dead && !me.body && !connection_dead)
+        pthread_cond_wait(&me.ready, &wait_lock);
+    for (waiter **link = &waiters; *link; link = &(*link)->next)
+        if (*link == &me) {
+            *link = me.next;
+            break;
+        }
+    pthread_mutex_unlock(&wait_lock);
+    pthread_cond_destroy(&me.ready);
+
+    if (!me.body)
+        return -1; /* the connection closed while the program exits */
+    return take_reply(function, op, me.body, me.len, results);
+}

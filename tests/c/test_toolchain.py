@@ -1,0 +1,114 @@
+"""`eyesim cc` / `eyesim c++` (eyesim/toolchain.py): command lines, pass-through, errors."""
+
+from __future__ import annotations
+
+import argparse
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from eyesim import toolchain
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def test_linking_adds_the_library_after_the_arguments(robios_prefix, monkeypatch):
+    monkeypatch.delenv("CC", raising=False)
+    command = toolchain.compiler_command("cc", ["prog.c", "-o", "prog"], robios_prefix)
+    lib = robios_prefix / "lib"
+    assert command == ["cc", f"-I{robios_prefix / 'include'}", "prog.c", "-o", "prog",
+                       f"-L{lib}", f"-Wl,-rpath,{lib}", "-leyesim", "-lpthread", "-lm"]
+
+
+@pytest.mark.parametrize("flag", ["-c", "-E", "-S", "-fsyntax-only", "--version"])
+def test_compile_only_runs_get_no_link_flags(robios_prefix, flag):
+    command = toolchain.compiler_command("cc", [flag, "prog.c"], robios_prefix)
+    assert f"-I{robios_prefix / 'include'}" in command
+    assert not any(arg.startswith(("-L", "-l", "-Wl,")) for arg in command)
+
+
+def test_compilers_come_from_cc_and_cxx(robios_prefix, monkeypatch):
+    monkeypatch.setenv("CC", "ccache gcc -m64")
+    monkeypatch.setenv("CXX", "clang++")
+    assert toolchain.compiler_command("cc", ["-c", "a.c"], robios_prefix)[:3] == ["ccache", "gcc", "-m64"]
+    assert toolchain.compiler_command("c++", ["-c", "a.cpp"], robios_prefix)[0] == "clang++"
+    monkeypatch.delenv("CXX")
+    assert toolchain.compiler_command("c++", ["-c", "a.cpp"], robios_prefix)[0] == "c++"
+
+
+def test_missing_library_is_a_clear_error(tmp_path, capsys):
+    assert toolchain.run_compiler("cc", ["prog.c"], tmp_path) == 1
+    err = capsys.readouterr().err
+    assert "RoBIOS C library is not installed" in err
+    assert str(tmp_path / "include" / "eyebot.h") in err and str(tmp_path / "lib") in err
+
+
+def test_missing_compiler_is_a_clear_error(robios_prefix, monkeypatch, capsys):
+    monkeypatch.setenv("CC", "no-such-compiler-here")
+    assert toolchain.run_compiler("cc", ["prog.c"], robios_prefix) == 1
+    assert "compiler 'no-such-compiler-here' not found" in capsys.readouterr().err
+
+
+def test_compiler_exit_status_is_returned(robios_prefix, tmp_path):
+    bad = tmp_path / "bad.c"
+    bad.write_text("int main(void) { return undeclared; }\n")
+    assert toolchain.run_compiler("cc", ["-c", str(bad), "-o", str(tmp_path / "bad.o")], robios_prefix) != 0
+
+
+def parser_with_toolchain() -> argparse.ArgumentParser:
+    """The way eyesim/cli.py builds its parser, with only this module registered."""
+    parser = argparse.ArgumentParser(prog="eyesim")
+    toolchain.register(parser.add_subparsers(dest="command"))
+    return parser
+
+
+@pytest.mark.parametrize("argv", [["cc", "-o", "prog", "prog.c"], ["c++", "-h"], ["cc", "--", "+x", ""],
+                                  ["cc", "prog.c", "-Wl,-rpath,/x", "-O2"]])
+def test_every_argument_passes_through(argv):
+    args = parser_with_toolchain().parse_args(argv)
+    assert args.args == argv[1:]
+    assert callable(args.func)
+
+
+def test_eyesim_cc_builds_a_program_that_runs_without_ld_library_path(robios_prefix, tmp_path, monkeypatch,
+                                                                      free_port_env):
+    monkeypatch.setenv("EYESIM_ROBIOS", str(robios_prefix))
+    source = tmp_path / "hello.c"
+    source.write_text('#include "eyebot.h"\n#include <stdio.h>\nint main(void) { printf("%d\\n", KEY4); return 0; }\n')
+    exe = tmp_path / "hello"
+    args = parser_with_toolchain().parse_args(["cc", str(source), "-o", str(exe)])
+    assert args.func(args) == 0
+    ran = subprocess.run([str(exe)], capture_output=True, text=True, timeout=10, env=free_port_env)
+    assert (ran.returncode, ran.stdout) == (0, "8\n")
+
+
+def test_static_library_links_too(robios_prefix, tmp_path, fake_sim):
+    source = tmp_path / "static.c"
+    source.write_text('#include "eyebot.h"\n#include <stdio.h>\n'
+                      'int main(void) { printf("%d\\n", PSDGet(PSD_LEFT)); return 0; }\n')
+    exe = tmp_path / "static"
+    command = ["cc", "-std=c11", f"-I{robios_prefix / 'include'}", str(source),
+               str(robios_prefix / "lib" / "libeyesim.a"), "-lpthread", "-lm", "-o", str(exe)]
+    built = subprocess.run(command, capture_output=True, text=True)
+    assert built.returncode == 0, built.stderr
+    fake_sim.script["PSD_GET"] = (321,)
+    ran = subprocess.run([str(exe)], capture_output=True, text=True, timeout=20, env=fake_sim.env())
+    assert (ran.returncode, ran.stdout, ran.stderr) == (0, "321\n", "")
+
+
+def test_python_m_eyesim_cc(robios_prefix, tmp_path):
+    try:
+        from eyesim import cli
+        cli.build_parser()
+    except ImportError as error:  # other subcommand modules may not exist yet
+        pytest.skip(f"the eyesim CLI does not load yet: {error}")
+    source = tmp_path / "m.c"
+    source.write_text('#include "eyebot.h"\nint main(void) { return KEY1 - 1; }\n')
+    env = {**os.environ, "PYTHONPATH": str(ROOT), "EYESIM_ROBIOS": str(robios_prefix)}
+    done = subprocess.run([sys.executable, "-m", "eyesim", "cc", "-o", str(tmp_path / "m"), str(source)],
+                          capture_output=True, text=True, env=env)
+    assert done.returncode == 0, done.stderr
+    assert subprocess.run([str(tmp_path / "m")]).returncode == 0
