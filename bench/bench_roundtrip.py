@@ -1,0 +1,77 @@
+"""Round trip of PSDGet from a C program (realtime mode) beside raw TCP echo round trips.
+
+Baselines measured in the same run: a C echo server (the kernel's floor) and an asyncio echo
+server in Python (the floor of the runtime our server is written in). Prints a table, writes
+bench/results/roundtrip.json."""
+
+from __future__ import annotations
+
+import asyncio
+import os
+import subprocess
+import sys
+import threading
+
+from common import BENCH, build_c, print_table, start_simulator, stop, summary, write_results
+
+CALLS = 1000
+BUILD = BENCH / "results" / "build"
+
+
+def samples(output: str) -> list[float]:
+    return [float(line) for line in output.split()]
+
+
+def c_echo(client) -> list[float]:
+    server_binary = build_c(BENCH / "programs" / "echo_server.c", BUILD / "echo_server")
+    server = subprocess.Popen([str(server_binary)], stdout=subprocess.PIPE, text=True)
+    port = server.stdout.readline().strip()
+    result = subprocess.run([str(client), port, str(CALLS)], capture_output=True, text=True, check=True)
+    server.wait(timeout=10)
+    return samples(result.stdout)
+
+
+def python_echo(client) -> list[float]:
+    loop = asyncio.new_event_loop()
+    threading.Thread(target=loop.run_forever, daemon=True).start()
+
+    class Echo(asyncio.Protocol):
+        def connection_made(self, transport):
+            self.transport = transport
+
+        def data_received(self, data):
+            self.transport.write(data)
+
+    server = asyncio.run_coroutine_threadsafe(loop.create_server(Echo, "127.0.0.1", 0), loop).result()
+    port = server.sockets[0].getsockname()[1]
+    result = subprocess.run([str(client), str(port), str(CALLS)], capture_output=True, text=True, check=True)
+    loop.call_soon_threadsafe(loop.stop)
+    return samples(result.stdout)
+
+
+def psd_get() -> list[float]:
+    program = build_c(BENCH / "programs" / "psd_roundtrip.c", BUILD / "psd_roundtrip")
+    simulator, port = start_simulator("--headless", "--clock", "realtime")
+    try:
+        env = dict(os.environ, EYESIM_PORT=str(port))
+        result = subprocess.run([str(program), str(CALLS)], capture_output=True, text=True, check=True, env=env)
+    finally:
+        stop(simulator)
+    return samples(result.stdout)
+
+
+def main() -> int:
+    client = build_c(BENCH / "programs" / "echo_client.c", BUILD / "echo_client")
+    results = {"c_echo": summary(c_echo(client)), "python_echo": summary(python_echo(client)),
+               "psd_get": summary(psd_get())}
+    base = results["c_echo"]["median_ms"]
+    rows = [(name, f"{r['mean_ms']:.3f}", f"{r['median_ms']:.3f}", f"{r['p99_ms']:.3f}",
+             f"{r['median_ms'] / base:.1f}x") for name, r in results.items()]
+    print_table(f"Round trip, {CALLS} calls (ms)", rows, ("what", "mean", "median", "p99", "median vs C echo"))
+    print("targets: PSDGet median <= 0.15 ms, p99 <= 1 ms (EyeSim V2 published: mean 4.587, median 4.642)")
+    print(f"wrote {write_results('roundtrip', results)}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,28 @@
+"""Registry of RoBIOS operations: one handler module per RoBIOS group, looked up by op code.
+
+A handler is `handler(sim, robot, request) -> reply values | Pending`; it raises CommandError for
+requests it cannot serve. The network layer never knows what an operation means."""
+
+from __future__ import annotations
+
+from eyesim.commands import key, lcd, os, psd, sim, vw
+from eyesim.commands.errors import CommandError
+from eyesim.protocol import generated
+
+GROUP_MODULES = (lcd, key, os, psd, vw, sim)
+
+
+def _build_registry() -> dict:
+    registry = {}
+    for module in GROUP_MODULES:
+        for name, handler in module.HANDLERS.items():
+            op = generated.OPS_BY_NAME[name]
+            if op.code in registry:
+                raise RuntimeError(f"operation {name} has two handlers")
+            registry[op.code] = handler
+    return registry
+
+
+HANDLERS = _build_registry()
+
+__all__ = ["HANDLERS", "CommandError"]

@@ -1,0 +1,364 @@
+"""The Simulation: owns the scene, the physics world, the robots, the clock and the request queue.
+
+One simulation thread runs `run()`: it applies queued requests and commands, steps physics, updates
+sensors, completes pending replies and publishes snapshots (DESIGN.md principle 5). Other threads
+talk to it only through `submit`/`call`, which enqueue work.
+
+Deterministic mode is a conservative lock-step: every connected program has its own clock
+(`Session.local_time_us`). Each request is handled at its program's time and advances that time by
+the operation's documented cost; physics only steps once every program is either blocked in a
+pending call or has asked for something at or beyond the next step. Requests are taken in order
+of (time, robot id), so the result does not depend on how the OS schedules the programs."""
+
+from __future__ import annotations
+
+import heapq
+import itertools
+import logging
+import queue
+import time
+import traceback
+
+from eyesim import commands
+from eyesim.clock import Clock
+from eyesim.events import EventBus
+from eyesim.physics.world import PhysicsWorld, add_floor, add_wall, floor_of, new_spec
+from eyesim.protocol import encode_error, encode_message, generated as g
+from eyesim.robot.build import add_robot
+from eyesim.robot.components.keys import Keys
+from eyesim.robot.components.lcd import Lcd
+from eyesim.scene.description import Scene
+from eyesim.session import Pending, Request, Session
+
+log = logging.getLogger("eyesim")
+
+DEFAULT_STEP_US = 2000  # physics step: 2 ms
+SNAPSHOT_PERIOD = 1 / 30  # wall seconds between published snapshots
+MAX_CATCH_UP_STEPS = 50  # realtime: steps taken in one go before looking at the queue again
+IDLE_WAIT = 0.05  # s the loop sleeps when nothing can happen (paused, waiting for programs)
+
+
+class Simulation:
+    def __init__(self, scene: Scene, clock: Clock | None = None, step_us: int = DEFAULT_STEP_US):
+        self.scene = scene
+        self.clock = clock or Clock()
+        self.step_us = step_us
+        self.events = EventBus()
+        self.inbox: queue.SimpleQueue = queue.SimpleQueue()
+        self.sessions: list[Session] = []
+        self.expected_programs: set[int] = set()  # robot ids whose launched program has not connected
+        self.time_us = 0
+        self.steps = 0
+        self._scheduled: list = []  # heap of (time_us, seq, action) run at step boundaries
+        self._sequence = itertools.count()
+        self._stopping = False
+        self._last_snapshot = 0.0
+        self._lcd_sent: dict[int, int] = {}
+        self.step_observers: list = []  # called as observer(sim) after every physics step
+        self._build()
+
+    # -- building ------------------------------------------------------------------------------
+    def _build(self) -> None:
+        spec = new_spec(self.step_us / 1e6)
+        self.floor = floor_of(self.scene)
+        add_floor(spec, self.floor)
+        for index, wall in enumerate(self.scene.world.walls):
+            add_wall(spec, index, wall)
+        self.robots = [add_robot(spec, robot_id, self.scene.robot_types[p.type_name], p)
+                       for robot_id, p in enumerate(self.scene.robots, start=1)]
+        self.world = PhysicsWorld(spec)
+        for robot in self.robots:
+            robot.bind(self.world)
+            for component in robot.components:
+                component.reset()
+
+    def reset(self) -> None:
+        """Back to the scene's initial state; connected programs stay connected."""
+        self.world.reset()
+        for robot in self.robots:
+            for component in robot.components:
+                component.reset()
+        self.events.emit({"type": "reset"})
+
+    @property
+    def time(self) -> float:
+        return self.time_us / 1e6
+
+    def robot_by_id(self, robot_id: int):
+        return self.robots[robot_id - 1] if 1 <= robot_id <= len(self.robots) else None
+
+    # -- entry points for other threads ---------------------------------------------------------
+    def submit(self, request: Request) -> None:
+        self.inbox.put(("request", request))
+
+    def connect(self, session: Session) -> None:
+        self.inbox.put(("connect", session))
+
+    def disconnect(self, session: Session) -> None:
+        self.inbox.put(("disconnect", session))
+
+    def call(self, action) -> None:
+        """Run `action(sim)` on the simulation thread (browser commands, launcher notices)."""
+        self.inbox.put(("call", action))
+
+    def stop(self) -> None:
+        self._stopping = True
+        self.inbox.put(("wake", None))
+
+    # -- things that happen at a simulation time ------------------------------------------------
+    def schedule(self, time_us: int, action) -> None:
+        """Run `action(sim)` at the first step boundary at or after `time_us` (scripted input)."""
+        heapq.heappush(self._scheduled, (time_us, next(self._sequence), action))
+
+    def press_key(self, robot_id: int, key: int) -> None:
+        robot = self.robot_by_id(robot_id)
+        if robot is None:
+            raise ValueError(f"no robot {robot_id}")
+        robot.component(Keys).press(key)
+
+    # -- the loop --------------------------------------------------------------------------------
+    def run(self, until: float | None = None) -> None:
+        """Run until `stop()` or until simulation time reaches `until` seconds."""
+        until_us = None if until is None else round(until * 1e6)
+        self.clock.anchor(self.time_us)
+        try:
+            while not self._stopping and (until_us is None or self.time_us < until_us):
+                if self.clock.deterministic:
+                    self._deterministic_round()
+                else:
+                    self._realtime_round()
+                self._publish()
+        finally:
+            self._publish(force=True)
+
+    def _realtime_round(self) -> None:
+        if self.clock.paused:
+            self._handle_inbox(block=IDLE_WAIT)
+            return
+        wait = self.clock.seconds_until(self.time_us + self.step_us)
+        if wait > 0 and not self.clock.as_fast_as_possible:
+            self._handle_inbox(block=min(wait, SNAPSHOT_PERIOD))
+            return
+        self._handle_inbox(block=None)
+        steps = 1 if self.clock.as_fast_as_possible else MAX_CATCH_UP_STEPS
+        for _ in range(steps):
+            self.step()
+            if self.clock.as_fast_as_possible or self.clock.seconds_until(self.time_us + self.step_us) > 0:
+                break
+        if not self.clock.as_fast_as_possible and self.clock.seconds_until(self.time_us) < -0.25:
+            self.clock.anchor(self.time_us)  # too far behind (slow machine): don't try to catch up
+
+    def _handle_inbox(self, block: float | None) -> None:
+        """Handle everything queued; with `block`, first wait up to that long for something."""
+        try:
+            item = self.inbox.get(timeout=block) if block else self.inbox.get_nowait()
+        except queue.Empty:
+            return
+        while True:
+            self._handle(item)
+            try:
+                item = self.inbox.get_nowait()
+            except queue.Empty:
+                return
+
+    def _handle(self, item) -> None:
+        kind, payload = item
+        if kind == "request":
+            session = payload.session
+            if session.closed:
+                return
+            if self.clock.deterministic and payload.op.code != g.OP_HELLO and session.robot is not None:
+                session.queued.append(payload)
+            else:
+                payload.time_us = max(self.time_us, session.local_time_us)
+                self._execute(payload)
+        elif kind == "connect":
+            payload.local_time_us = self.time_us
+            self.sessions.append(payload)
+        elif kind == "disconnect":
+            self._drop_session(payload)
+        elif kind == "call":
+            try:
+                payload(self)
+            except Exception:
+                log.error("command failed:\n%s", traceback.format_exc())
+            self._wake_pending()
+
+    def _deterministic_round(self) -> None:
+        self._handle_inbox(block=None)
+        live = [s for s in self.sessions if s.robot is not None and not s.closed]
+        waiting_for = [s for s in live if not s.queued and not s.pending]
+        if waiting_for or self.expected_programs:
+            self._handle_inbox(block=IDLE_WAIT)  # a program is computing: wait for its next call
+            return
+        boundary = self.time_us + self.step_us
+        best = None
+        for session in live:
+            if session.queued:
+                key = (session.local_time_us, session.robot.id)
+            else:
+                wake = min((p.wake_us for _, p in session.pending if p.wake_us is not None), default=None)
+                if wake is None:
+                    continue
+                key = (max(wake, self.time_us), session.robot.id)
+            if key[0] < boundary and (best is None or key < best[0]):
+                best = (key, session)
+        if best is None:
+            self.step()
+            return
+        (at_us, _), session = best
+        if session.queued:
+            request = session.queued.popleft()
+            request.time_us = at_us
+            self._execute(request)
+        else:
+            self._wake_session(session, at_us)
+
+    def step(self) -> None:
+        """One physics step with its three phases."""
+        while self._scheduled and self._scheduled[0][0] <= self.time_us:
+            _, _, action = heapq.heappop(self._scheduled)
+            action(self)
+        dt = self.step_us / 1e6
+        for robot in self.robots:
+            for component in robot.components:
+                component.before_step(dt)
+        self.world.step()
+        self.time_us += self.step_us
+        self.steps += 1
+        for robot in self.robots:
+            for component in robot.components:
+                component.after_step(dt)
+        self._wake_pending()
+        for observer in self.step_observers:
+            observer(self)
+
+    # -- requests --------------------------------------------------------------------------------
+    def _execute(self, request: Request) -> None:
+        session = request.session
+        op = request.op
+        try:
+            if op.code == g.OP_HELLO:
+                result = self._hello(request)
+            elif session.robot is None:
+                raise commands.CommandError("the first request must be the HELLO handshake", g.ERR_NO_HANDSHAKE)
+            else:
+                result = commands.HANDLERS[op.code](self, session.robot, request)
+        except commands.CommandError as error:
+            session.local_time_us = request.time_us + op.cost_us
+            self._send(session, encode_error(op.code, request.request_id, error.code, str(error)))
+            return
+        except Exception:
+            log.error("handler for %s failed:\n%s", op.name, traceback.format_exc())
+            session.local_time_us = request.time_us + op.cost_us
+            self._send(session, encode_error(op.code, request.request_id, g.ERR_BAD_ARGUMENT,
+                                             f"{op.name}: internal simulator error (see the simulator log)"))
+            return
+        if isinstance(result, Pending):
+            session.pending.append((request, result))
+            session.local_time_us = request.time_us
+            return
+        session.local_time_us = request.time_us + op.cost_us
+        self._send(session, encode_message(op.code, g.KIND_REPLY, request.request_id, result))
+
+    def _hello(self, request: Request) -> tuple:
+        version, selector, program, pid = request.args
+        session = request.session
+        if version != g.VERSION:
+            raise commands.CommandError(f"protocol version {version} is not supported; this simulator speaks "
+                                        f"version {g.VERSION} (rebuild the program with this EyeSim's `eyesim cc`)",
+                                        g.ERR_VERSION)
+        if session.robot is not None:
+            raise commands.CommandError("handshake sent twice", g.ERR_BAD_PAYLOAD)
+        robot = self._choose_robot(selector)
+        session.robot, session.program, session.pid = robot, program, pid
+        session.local_time_us = self.time_us
+        self.expected_programs.discard(robot.id)
+        log.info("%s connected", session.name)
+        return (g.VERSION, robot.id, robot.name)
+
+    def _choose_robot(self, selector: str):
+        taken = {s.robot.id for s in self.sessions if s.robot is not None and not s.closed}
+        names = ", ".join(f"{r.id} {r.name}" for r in self.robots) or "none"
+        if not self.robots:
+            raise commands.CommandError("the scene has no robots", g.ERR_NO_ROBOT)
+        if selector == "":
+            free = [r for r in self.robots if r.id not in taken]
+            if not free:
+                raise commands.CommandError(f"every robot already runs a program (robots: {names})", g.ERR_NO_ROBOT)
+            return free[0]
+        if selector.isdigit():
+            candidates = [self.robot_by_id(int(selector))] if self.robot_by_id(int(selector)) else []
+        else:
+            candidates = [r for r in self.robots if r.name.lower() == selector.lower()]
+        if not candidates:
+            raise commands.CommandError(f"no robot {selector!r} in the scene (robots: {names})", g.ERR_NO_ROBOT)
+        free = [r for r in candidates if r.id not in taken]
+        if not free:
+            raise commands.CommandError(f"robot {selector!r} already runs a program", g.ERR_NO_ROBOT)
+        return free[0]
+
+    def _wake_pending(self) -> None:
+        for session in self.sessions:
+            if session.pending:
+                self._wake_session(session, self.time_us)
+
+    def _wake_session(self, session: Session, at_us: int) -> None:
+        """Complete the session's pending replies whose condition holds at time `at_us`."""
+        still = []
+        for request, pending in session.pending:
+            values = pending.poll(at_us)
+            if values is None:
+                still.append((request, pending))
+                continue
+            session.local_time_us = max(session.local_time_us, at_us)
+            self._send(session, encode_message(request.op.code, g.KIND_REPLY, request.request_id, values))
+        session.pending = still
+
+    def _send(self, session: Session, frame: bytes) -> None:
+        if not session.closed:
+            session.connection.send(frame)
+
+    def _drop_session(self, session: Session) -> None:
+        session.closed = True
+        session.pending.clear()
+        session.queued.clear()
+        if session in self.sessions:
+            self.sessions.remove(session)
+            log.info("%s disconnected", session.name)
+
+    def shutdown_sessions(self) -> None:
+        for session in list(self.sessions):
+            session.connection.close()
+            self._drop_session(session)
+
+    # -- publishing ------------------------------------------------------------------------------
+    def _publish(self, force: bool = False) -> None:
+        if not self.events.listeners:
+            return
+        now = time.perf_counter()
+        if not force and now - self._last_snapshot < SNAPSHOT_PERIOD:
+            return
+        self._last_snapshot = now
+        if self.events.wants_lcd:
+            for robot in self.robots:
+                lcd = robot.component(Lcd)
+                if lcd is not None and self._lcd_sent.get(robot.id) != lcd.version:
+                    self._lcd_sent[robot.id] = lcd.version
+                    self.events.emit({"type": "lcd", "robot": robot.id, "pixels": lcd.pixels.copy()})
+        self.events.snapshot(self.snapshot())
+
+    def republish_lcd(self) -> None:
+        """Send every robot's LCD again at the next publish tick (a browser has just connected)."""
+        self._lcd_sent.clear()
+
+    def snapshot(self) -> dict:
+        data = self.world.data
+        robots = [{"id": r.id, "pos": [float(v) for v in data.xpos[r.body]],
+                   "quat": [float(v) for v in data.xquat[r.body]]} for r in self.robots]
+        return {"type": "snapshot", "time": self.time, "robots": robots, "objects": []}
+
+    def status(self) -> dict:
+        speed = "max" if self.clock.speed == float("inf") else self.clock.speed
+        return {"type": "status", "time": self.time, "paused": self.clock.paused, "speed": speed,
+                "clock": self.clock.mode}

@@ -1,0 +1,126 @@
+"""Starting and supervising robot programs: environment, console output, exit codes."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import threading
+from dataclasses import dataclass
+from pathlib import Path
+
+
+@dataclass
+class ProgramRun:
+    robot_id: int
+    path: Path
+    process: subprocess.Popen | None = None
+    exit_code: int | None = None
+    stopped_by_us: bool = False
+    error: str | None = None
+
+    @property
+    def name(self) -> str:
+        return self.path.name
+
+    @property
+    def failed(self) -> bool:
+        if self.error:
+            return True
+        return self.exit_code not in (None, 0) and not self.stopped_by_us
+
+
+def command_for(path: Path) -> list[str]:
+    """How to start a program: Python files with this Python, anything else as an executable."""
+    if path.suffix == ".py":
+        return [sys.executable, str(path)]
+    return [str(path)]
+
+
+class Launcher:
+    """Starts each program for its robot and forwards its output to the console and the viewer."""
+
+    def __init__(self, sim, host: str, port: int, echo: bool = True):
+        self.sim = sim
+        self.host = host
+        self.port = port
+        self.echo = echo
+        self.runs: list[ProgramRun] = []
+        self._lock = threading.Lock()
+        self._threads: list[threading.Thread] = []
+
+    def start(self, robot_id: int, path: str | Path) -> ProgramRun:
+        run = ProgramRun(robot_id, Path(path).resolve())
+        self.runs.append(run)
+        if not run.path.is_file():
+            run.error = f"program not found: {run.path}"
+            self._print(run, "stderr", f"eyesim: {run.error}\n")
+            return run
+        env = dict(os.environ, EYESIM_HOST=self.host, EYESIM_PORT=str(self.port), EYESIM_ROBOT=str(robot_id))
+        env.setdefault("PYTHONUNBUFFERED", "1")
+        robot_id_ = robot_id
+        self.sim.call(lambda sim: sim.expected_programs.add(robot_id_))
+        try:
+            run.process = subprocess.Popen(command_for(run.path), cwd=run.path.parent, env=env,
+                                           stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                                           stderr=subprocess.PIPE)
+        except OSError as error:
+            run.error = f"cannot start {run.path}: {error.strerror}"
+            self._print(run, "stderr", f"eyesim: {run.error}\n")
+            self.sim.call(lambda sim: sim.expected_programs.discard(robot_id_))
+            return run
+        self.sim.call(lambda sim: sim.events.program(robot_id_, "started", run.name, None))
+        for stream in ("stdout", "stderr"):
+            thread = threading.Thread(target=self._forward, args=(run, stream), daemon=True)
+            thread.start()
+            self._threads.append(thread)
+        waiter = threading.Thread(target=self._wait, args=(run,), daemon=True)
+        waiter.start()
+        self._threads.append(waiter)
+        return run
+
+    def _forward(self, run: ProgramRun, stream: str) -> None:
+        pipe = getattr(run.process, stream)
+        for raw in iter(pipe.readline, b""):
+            self._print(run, stream, raw.decode("utf-8", errors="replace"))
+        pipe.close()
+
+    def _print(self, run: ProgramRun, stream: str, text: str) -> None:
+        if self.echo:
+            with self._lock:
+                target = sys.stdout if stream == "stdout" else sys.stderr
+                target.write(f"[robot {run.robot_id}] {text.rstrip(chr(10))}\n")
+                target.flush()
+        robot_id = run.robot_id
+        self.sim.call(lambda sim: sim.events.console(robot_id, stream, text))
+
+    def _wait(self, run: ProgramRun) -> None:
+        run.exit_code = run.process.wait()
+        robot_id = run.robot_id
+
+        def exited(sim):
+            sim.expected_programs.discard(robot_id)
+            sim.events.program(robot_id, "exited", run.name, run.exit_code)
+
+        self.sim.call(exited)
+
+    @property
+    def all_exited(self) -> bool:
+        return all(run.process is None or run.process.poll() is not None for run in self.runs)
+
+    def stop_all(self, grace: float = 2.0) -> None:
+        """Stop programs still running (the run is over) and wait for their output to drain."""
+        for run in self.runs:
+            if run.process is not None and run.process.poll() is None:
+                run.stopped_by_us = True
+                run.process.terminate()
+        for run in self.runs:
+            if run.process is not None:
+                try:
+                    run.process.wait(timeout=grace)
+                except subprocess.TimeoutExpired:
+                    run.process.kill()
+                    run.process.wait()
+        for thread in self._threads:
+            thread.join(timeout=grace)
+

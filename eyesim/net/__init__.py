@@ -1,0 +1,1 @@
+"""Networking: the I/O thread and the TCP server for RoBIOS programs."""

@@ -1,0 +1,1 @@
+"""Scene description -> MuJoCo model; stepping, ray casts and pose access."""

@@ -1,0 +1,30 @@
+"""The interface every robot component implements (DESIGN.md, Contracts)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from eyesim.physics.world import PhysicsWorld
+
+
+class Component:
+    """One part of a robot: a drive, a sensor, the LCD, ... Components never touch the network.
+
+    Life cycle: created while the MuJoCo model is built (adding their bodies/actuators to the
+    spec), `bind` once the model is compiled, `reset` to their initial state, then
+    `before_step`/`after_step` around every physics step."""
+
+    kind = "component"
+
+    def bind(self, world: PhysicsWorld) -> None:
+        self.world = world
+
+    def reset(self) -> None:
+        pass
+
+    def before_step(self, dt: float) -> None:
+        pass
+
+    def after_step(self, dt: float) -> None:
+        pass

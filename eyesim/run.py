@@ -1,0 +1,227 @@
+"""`eyesim run`: load a scene, serve programs and the viewer, start the scene's programs, simulate."""
+
+from __future__ import annotations
+
+import argparse
+import logging
+import math
+import os
+import re
+import sys
+import webbrowser
+
+from eyesim.clock import DETERMINISTIC, MAX_SPEED, REALTIME, Clock
+from eyesim.engine import Simulation
+from eyesim.launcher import Launcher
+from eyesim.net.io_thread import IoThread
+from eyesim.net.program_server import ProgramServer
+from eyesim.protocol import generated as g
+from eyesim.robot.components.keys import KEY_NAMES
+
+DEFAULT_VIEWER_PORT = 8080
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser("run", help="run the simulator on a scene (default: the bundled arena)",
+                                   description="Run the simulator on a scene file (.sim, .wld, .maz or JSON).")
+    parser.add_argument("scene", nargs="?", help="scene file; default: the bundled arena with one S4")
+    parser.add_argument("--headless", action="store_true", help="no viewer; print a status line per robot at the end")
+    parser.add_argument("--until", type=float, metavar="SECONDS", help="stop at this simulation time")
+    parser.add_argument("--host", default=g.DEFAULT_HOST, help=f"address to serve on (default {g.DEFAULT_HOST})")
+    parser.add_argument("--port", type=int, default=int(os.environ.get("EYESIM_PORT", g.DEFAULT_PORT)),
+                        help=f"port for programs (default {g.DEFAULT_PORT}, or $EYESIM_PORT; 0 = any free port)")
+    parser.add_argument("--viewer-port", type=int, default=DEFAULT_VIEWER_PORT,
+                        help=f"port for the browser viewer (default {DEFAULT_VIEWER_PORT}; 0 = any free port)")
+    parser.add_argument("--speed", default="1", help="realtime speed factor, or 'max' for as fast as possible")
+    parser.add_argument("--clock", choices=(REALTIME, DETERMINISTIC),
+                        help="realtime (default with the viewer) or deterministic (default headless)")
+    parser.add_argument("--program", action="append", default=[], metavar="ROBOT=PATH",
+                        help="run PATH for ROBOT (id or name); repeatable; overrides the scene's program")
+    parser.add_argument("--key", action="append", default=[], metavar="ROBOT:KEY@SECONDS",
+                        help="press a soft key at a simulation time, e.g. 1:KEY1@2.5; repeatable")
+    parser.add_argument("--record", metavar="CSV", help="write every robot's true pose every 10 ms to CSV")
+    parser.add_argument("--save-lcd", metavar="DIR", help="at the end, save each robot's LCD as DIR/robot<id>-lcd.png")
+    parser.add_argument("--open", action="store_true", help="open the viewer in a web browser")
+    parser.add_argument("--verbose", "-v", action="store_true", help="log connections and internal events")
+    parser.set_defaults(func=main)
+
+
+class UsageError(Exception):
+    pass
+
+
+def parse_speed(text: str) -> float:
+    if text == "max":
+        return MAX_SPEED
+    try:
+        speed = float(text)
+    except ValueError:
+        raise UsageError(f"--speed {text!r}: expected a number or 'max'") from None
+    if not speed > 0:
+        raise UsageError(f"--speed {text!r}: must be positive")
+    return speed
+
+
+def find_robot(sim: Simulation, selector: str):
+    if selector.isdigit() and sim.robot_by_id(int(selector)):
+        return sim.robot_by_id(int(selector))
+    for robot in sim.robots:
+        if robot.name.lower() == selector.lower():
+            return robot
+    names = ", ".join(f"{r.id} ({r.name})" for r in sim.robots) or "none"
+    raise UsageError(f"no robot {selector!r} in the scene; robots: {names}")
+
+
+def parse_program(sim: Simulation, text: str) -> tuple[int, str]:
+    selector, sep, path = text.partition("=")
+    if not sep or not path:
+        raise UsageError(f"--program {text!r}: expected ROBOT=PATH, e.g. 1=./drive")
+    return find_robot(sim, selector).id, path
+
+
+def parse_key(sim: Simulation, text: str) -> tuple[int, int, float]:
+    match = re.fullmatch(r"(\w+):(KEY[1-4])@([0-9.]+)", text.strip(), flags=re.IGNORECASE)
+    if not match:
+        raise UsageError(f"--key {text!r}: expected ROBOT:KEYn@SECONDS, e.g. 1:KEY1@2.5")
+    robot = find_robot(sim, match.group(1))
+    return robot.id, KEY_NAMES[match.group(2).upper()], float(match.group(3))
+
+
+def load(path: str | None):
+    from eyesim.scene import DEFAULT_SCENE, SceneError, load_scene
+
+    try:
+        scene = load_scene(path or DEFAULT_SCENE)
+    except SceneError as error:
+        for diagnostic in error.diagnostics:
+            print(diagnostic, file=sys.stderr)
+        raise UsageError(f"cannot load {path}") from None
+    except OSError as error:
+        raise UsageError(f"cannot read {path}: {error.strerror}") from None
+    for warning in scene.warnings:
+        print(warning, file=sys.stderr)
+    return scene
+
+
+def status_line(robot, run) -> str:
+    x, y, _, phi = robot.pose_mm()
+    line = f"robot {robot.id} {robot.name}: x={x:.0f} mm y={y:.0f} mm phi={phi:.1f} deg"
+    if run is None:
+        return line + ", no program"
+    if run.error:
+        return line + f", program {run.name}: {run.error}"
+    if run.stopped_by_us:
+        return line + f", program {run.name}: still running at the end (stopped)"
+    return line + f", program {run.name}: exit code {run.exit_code}"
+
+
+def main(args) -> int:
+    logging.basicConfig(level=logging.INFO if args.verbose else logging.WARNING, format="eyesim: %(message)s")
+    try:
+        return simulate(args)
+    except UsageError as error:
+        print(f"eyesim run: {error}", file=sys.stderr)
+        return 2
+
+
+def simulate(args) -> int:
+    speed = parse_speed(args.speed)
+    mode = args.clock or (DETERMINISTIC if args.headless else REALTIME)
+    scene = load(args.scene)
+    sim = Simulation(scene, Clock(mode, speed))
+    programs: dict[int, str] = {}
+    for robot, placement in zip(sim.robots, scene.robots):
+        if placement.program:
+            programs[robot.id] = placement.program
+    for text in args.program:
+        robot_id, path = parse_program(sim, text)
+        programs[robot_id] = path
+    for text in args.key:
+        robot_id, key, seconds = parse_key(sim, text)
+        sim.schedule(round(seconds * 1e6), lambda s, r=robot_id, k=key: s.press_key(r, k))
+
+    io = IoThread()
+    io.start()
+    server = ProgramServer(sim, io, args.host, args.port)
+    try:
+        server.start()
+    except OSError as error:
+        raise UsageError(f"cannot listen for programs on {args.host}:{args.port}: {error.strerror} "
+                         f"(is another simulator running? try --port 0)") from None
+    viewer = None
+    if not args.headless:
+        from eyesim.web.server import ViewerServer
+
+        viewer = ViewerServer(sim, io, args.host, args.viewer_port)
+        try:
+            viewer.start()
+        except OSError as error:
+            raise UsageError(f"cannot serve the viewer on port {args.viewer_port}: {error.strerror} "
+                             f"(try --viewer-port 0)") from None
+        print(f"EyeSim viewer: {viewer.url}", flush=True)
+        if args.open and _has_display():
+            webbrowser.open(viewer.url)
+    print(f"EyeSim: {len(sim.robots)} robot(s), programs connect to {args.host}:{server.port} "
+          f"({mode} clock{'' if speed == 1 else f', speed {args.speed}'})", flush=True)
+
+    recorder = None
+    if args.record:
+        from eyesim.record import TrajectoryRecorder
+
+        recorder = TrajectoryRecorder(args.record)
+        sim.step_observers.append(recorder)
+    launcher = Launcher(sim, args.host, server.port)
+    for robot_id, path in sorted(programs.items()):
+        launcher.start(robot_id, path)
+    if args.headless and programs and args.until is None:
+        # Headless with programs and no time limit: the run ends when the last program exits.
+        started = sum(1 for run in launcher.runs if run.process is not None)
+        sim.events.subscribe(_StopWhenProgramsExit(sim, started))
+        if not started:
+            sim.stop()
+    try:
+        sim.run(until=args.until)
+    except KeyboardInterrupt:
+        print("\neyesim: interrupted", file=sys.stderr)
+    finally:
+        launcher.stop_all()
+        sim.shutdown_sessions()
+        server.stop()
+        if viewer is not None:
+            viewer.stop()
+        io.stop()
+        if recorder is not None:
+            recorder.close()
+    if args.save_lcd:
+        from eyesim.record import save_lcd_images
+
+        save_lcd_images(sim, args.save_lcd)
+    runs = {run.robot_id: run for run in launcher.runs}
+    if args.headless or args.until is not None:
+        print(f"EyeSim: stopped at t={sim.time:.3f} s")
+        for robot in sim.robots:
+            print(status_line(robot, runs.get(robot.id)))
+    return 1 if any(run.failed for run in launcher.runs) else 0
+
+
+class _StopWhenProgramsExit:
+    """Listens for program exits and stops the simulation after the last one."""
+
+    wants_lcd = False
+
+    def __init__(self, sim, count: int):
+        self.sim = sim
+        self.remaining = count
+
+    def on_event(self, message: dict) -> None:
+        if message["type"] == "program" and message["event"] == "exited":
+            self.remaining -= 1
+            if self.remaining <= 0:
+                self.sim.stop()
+
+    def on_snapshot(self, message: dict) -> None:
+        pass
+
+
+def _has_display() -> bool:
+    return sys.platform in ("darwin", "win32") or bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))

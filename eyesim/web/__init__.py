@@ -1,0 +1,1 @@
+"""The browser viewer: HTTP + WebSocket server; built assets in static/."""

@@ -1,0 +1,259 @@
+"""HTTP + WebSocket server for the browser viewer (docs/viewer-channel.md), on the I/O thread.
+
+The simulation hands events and snapshots to the hub on its own thread; the hub moves them to
+the I/O loop and on to each browser. Every browser has its own ordered event queue and a single
+"latest snapshot" slot, so a slow or closed browser never slows the simulation or other browsers.
+LCD images are PNG-encoded off both threads, in a worker."""
+
+from __future__ import annotations
+
+import asyncio
+import base64
+import io
+import json
+import logging
+import math
+import time
+from collections import deque
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+from aiohttp import WSMsgType, web
+from PIL import Image
+
+from eyesim.paths import STATIC_DIR
+from eyesim.robot.components.keys import KEYS
+from eyesim.web.scene_message import scene_message
+
+log = logging.getLogger("eyesim.web")
+CONSOLE_BACKLOG = 500  # console chunks per robot replayed to a browser that connects late
+
+
+def encode_lcd(pixels) -> str:
+    buffer = io.BytesIO()
+    Image.fromarray(pixels).save(buffer, format="PNG", compress_level=1)
+    return base64.b64encode(buffer.getvalue()).decode("ascii")
+
+
+class Browser:
+    """One connected browser tab: its ordered events and its latest snapshot."""
+
+    def __init__(self, ws: web.WebSocketResponse):
+        self.ws = ws
+        self.events: deque = deque()  # (coalesce key or None, str or Future[str])
+        self.snapshot: str | None = None
+        self.wake = asyncio.Event()
+
+    def add_event(self, item, coalesce_key=None) -> None:
+        if coalesce_key is not None:
+            for index, (key, _) in enumerate(self.events):
+                if key == coalesce_key:
+                    self.events[index] = (key, item)
+                    self.wake.set()
+                    return
+        self.events.append((coalesce_key, item))
+        self.wake.set()
+
+    def set_snapshot(self, text: str) -> None:
+        self.snapshot = text
+        self.wake.set()
+
+    async def pump(self) -> None:
+        while not self.ws.closed:
+            await self.wake.wait()
+            self.wake.clear()
+            while self.events:
+                _, item = self.events.popleft()
+                text = await item if isinstance(item, asyncio.Future) else item
+                await self.ws.send_str(text)
+            if self.snapshot is not None:
+                text, self.snapshot = self.snapshot, None
+                await self.ws.send_str(text)
+
+
+class ViewerHub:
+    """The simulation's listener on the viewer side; lives on the I/O loop."""
+
+    def __init__(self, sim, loop: asyncio.AbstractEventLoop):
+        self.sim = sim
+        self.loop = loop
+        self.browsers: set[Browser] = set()
+        self.encoder = ThreadPoolExecutor(max_workers=1, thread_name_prefix="eyesim-png")
+        self.lcd: dict[int, asyncio.Future] = {}
+        self.menus: dict[int, str] = {}
+        self.programs: dict[int, str] = {}
+        self.console: dict[int, deque] = {}
+        self._rate = (time.perf_counter(), 0.0, 1.0)  # wall, sim time, real-time factor
+
+    # -- Listener interface, called on the simulation thread --------------------------------
+    @property
+    def wants_lcd(self) -> bool:
+        return bool(self.browsers)
+
+    def on_event(self, message: dict) -> None:
+        self.loop.call_soon_threadsafe(self._event, message)
+
+    def on_snapshot(self, message: dict) -> None:
+        self.loop.call_soon_threadsafe(self._snapshot, message, self.sim.status())
+
+    # -- I/O loop ----------------------------------------------------------------------------
+    def _event(self, message: dict) -> None:
+        kind = message["type"]
+        if kind == "lcd":
+            robot, pixels = message["robot"], message["pixels"]
+            future = self.loop.run_in_executor(self.encoder, _lcd_message, robot, pixels)
+            self.lcd[robot] = future
+            for browser in self.browsers:
+                browser.add_event(future, coalesce_key=("lcd", robot))
+            return
+        if kind == "reset":
+            message = scene_message(self.sim, self._texture_url())
+        text = json.dumps(message)
+        if kind == "menu":
+            self.menus[message["robot"]] = text
+        elif kind == "program":
+            self.programs[message["robot"]] = text
+        elif kind == "console":
+            self.console.setdefault(message["robot"], deque(maxlen=CONSOLE_BACKLOG)).append(text)
+        for browser in self.browsers:
+            browser.add_event(text)
+
+    def _snapshot(self, message: dict, status: dict) -> None:
+        wall, sim_time, rate = self._rate
+        now = time.perf_counter()
+        if now - wall >= 0.5:
+            rate = (status["time"] - sim_time) / (now - wall)
+            self._rate = (now, status["time"], rate)
+        status["real_time_factor"] = round(rate, 3) if math.isfinite(rate) else None
+        text = json.dumps(message)
+        status_text = json.dumps(status)
+        for browser in self.browsers:
+            browser.set_snapshot(text)
+            browser.add_event(status_text, coalesce_key=("status",))
+
+    def _texture_url(self) -> str | None:
+        texture = self.sim.scene.world.floor_texture
+        return "/scene/floor-texture" if texture and Path(texture).is_file() else None
+
+    async def attach(self, browser: Browser) -> None:
+        browser.add_event(json.dumps(scene_message(self.sim, self._texture_url())))
+        for robot in self.sim.robots:
+            if robot.id in self.menus:
+                browser.add_event(self.menus[robot.id])
+            if robot.id in self.programs:
+                browser.add_event(self.programs[robot.id])
+            for chunk in self.console.get(robot.id, ()):
+                browser.add_event(chunk)
+            if robot.id in self.lcd:
+                browser.add_event(self.lcd[robot.id], coalesce_key=("lcd", robot.id))
+        self.browsers.add(browser)
+        # A browser that connects now needs the current LCD images even if nothing changes.
+        self.sim.call(lambda sim: sim.republish_lcd())
+
+    def detach(self, browser: Browser) -> None:
+        self.browsers.discard(browser)
+
+    # -- commands from a browser -------------------------------------------------------------
+    def command(self, message: dict) -> str | None:
+        """Queue a browser command for the simulation; return an error text for a bad one."""
+        kind = message.get("type")
+        if kind == "key":
+            robot, key = message.get("robot"), message.get("key")
+            if not isinstance(robot, int) or self.sim.robot_by_id(robot) is None:
+                return f"key: no robot {robot!r}"
+            if key not in KEYS:
+                return f"key: {key!r} is not one of 1, 2, 4, 8"
+            self.sim.call(lambda sim: sim.press_key(robot, key))
+        elif kind in ("pause", "resume"):
+            self.sim.call(lambda sim: sim.clock.set_paused(kind == "pause", sim.time_us))
+        elif kind == "speed":
+            value = message.get("value")
+            if not isinstance(value, (int, float)) or not value > 0:
+                return f"speed: {value!r} is not a positive number"
+            self.sim.call(lambda sim: sim.clock.set_speed(float(value), sim.time_us))
+        elif kind == "reset":
+            self.sim.call(lambda sim: sim.reset())
+        else:
+            return f"unknown message type {kind!r}"
+        return None
+
+
+def _lcd_message(robot: int, pixels) -> str:
+    return json.dumps({"type": "lcd", "robot": robot, "png": encode_lcd(pixels)})
+
+
+class ViewerServer:
+    def __init__(self, sim, io_thread, host: str = "127.0.0.1", port: int = 8080):
+        self.sim = sim
+        self.io = io_thread
+        self.host = host
+        self.port = port
+        self.hub: ViewerHub | None = None
+        self._runner: web.AppRunner | None = None
+
+    @property
+    def url(self) -> str:
+        return f"http://{self.host}:{self.port}/"
+
+    def start(self) -> None:
+        self.io.run(self._start())
+        self.sim.events.subscribe(self.hub)
+
+    async def _start(self) -> None:
+        self.hub = ViewerHub(self.sim, asyncio.get_running_loop())
+        app = web.Application()
+        app.router.add_get("/ws", self._websocket)
+        app.router.add_get("/scene/floor-texture", self._floor_texture)
+        app.router.add_get("/{path:.*}", self._static)
+        self._runner = web.AppRunner(app, access_log=None)
+        await self._runner.setup()
+        site = web.TCPSite(self._runner, self.host, self.port)
+        await site.start()
+        self.port = site._server.sockets[0].getsockname()[1]
+
+    def stop(self) -> None:
+        if self.hub is not None and self.hub in self.sim.events.listeners:
+            self.sim.events.unsubscribe(self.hub)
+        if self._runner is not None:
+            self.io.run(self._runner.cleanup())
+
+    async def _static(self, request: web.Request) -> web.StreamResponse:
+        relative = request.match_info["path"] or "index.html"
+        root = STATIC_DIR.resolve()
+        path = (root / relative).resolve()
+        if root not in path.parents and path != root:
+            raise web.HTTPNotFound()
+        if not path.is_file():
+            if relative == "index.html":
+                return web.Response(status=500, text="The viewer assets are missing from this install: "
+                                                     "run `make viewer` in the EyeSim source tree.")
+            raise web.HTTPNotFound()
+        return web.FileResponse(path)
+
+    async def _floor_texture(self, request: web.Request) -> web.StreamResponse:
+        texture = self.sim.scene.world.floor_texture
+        if not texture or not Path(texture).is_file():
+            raise web.HTTPNotFound()
+        return web.FileResponse(texture)
+
+    async def _websocket(self, request: web.Request) -> web.WebSocketResponse:
+        ws = web.WebSocketResponse(heartbeat=20)
+        await ws.prepare(request)
+        browser = Browser(ws)
+        await self.hub.attach(browser)
+        pump = asyncio.get_running_loop().create_task(browser.pump())
+        try:
+            async for message in ws:
+                if message.type != WSMsgType.TEXT:
+                    continue
+                try:
+                    data = json.loads(message.data)
+                    error = self.hub.command(data) if isinstance(data, dict) else "expected a JSON object"
+                except ValueError:
+                    error = "not valid JSON"
+                if error:
+                    browser.add_event(json.dumps({"type": "error", "message": error}))
+        finally:
+            self.hub.detach(browser)
+            pump.cancel()
+        return ws

@@ -1,0 +1,89 @@
+"""A real C program, built with `eyesim cc`, drives S4 in a real `eyesim run` process."""
+
+import math
+import os
+import signal
+import subprocess
+import time
+
+import numpy as np
+from PIL import Image
+from support.programs import build, eyesim_command, read_trajectory, run_headless
+
+from eyesim.robot.components.lcd import CELL_HEIGHT, HEIGHT, MENU_HEIGHT
+
+
+def heading(row) -> float:
+    return math.degrees(2 * math.atan2(row["qz"], row["qw"]))
+
+
+def test_drive_turn_print_and_key(tmp_path):
+    program = build("drive_square_corner", tmp_path)
+    result = run_headless("--program", f"1={program}", "--key", "1:KEY1@0.5", "--record", "path.csv",
+                          "--save-lcd", "lcd", cwd=tmp_path)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "done key=1" in result.stdout
+    assert "program drive_square_corner: exit code 0" in result.stdout
+
+    path = read_trajectory(tmp_path / "path.csv")[1]
+    start, end = path[0], path[-1]
+    start_heading = heading(start)
+    expected_x = start["x"] + math.cos(math.radians(start_heading))
+    expected_y = start["y"] + math.sin(math.radians(start_heading))
+    assert math.hypot(end["x"] - expected_x, end["y"] - expected_y) < 0.010  # within 10 mm of 1000
+    turned = (heading(end) - start_heading + 180) % 360 - 180
+    assert abs(turned - 90) < 1.0
+
+    lcd = np.asarray(Image.open(tmp_path / "lcd" / "robot1-lcd.png").convert("RGB"))
+    text_rows = [lcd[r * CELL_HEIGHT:(r + 1) * CELL_HEIGHT] for r in range(3)]
+    assert all((row > 200).all(axis=2).sum() > 20 for row in text_rows)  # three printed lines
+    assert not (lcd[3 * CELL_HEIGHT:HEIGHT - MENU_HEIGHT] > 0).any()  # nothing below them
+    assert (lcd[HEIGHT - MENU_HEIGHT:] > 0).any()  # the menu bar is drawn
+
+
+def test_deterministic_runs_are_bit_identical(tmp_path):
+    program = build("drive_square_corner", tmp_path)
+    for name in ("first", "second"):
+        result = run_headless("--program", f"1={program}", "--key", "1:KEY1@0.3", "--record", f"{name}.csv",
+                              cwd=tmp_path)
+        assert result.returncode == 0, result.stderr
+    first, second = (tmp_path / "first.csv").read_bytes(), (tmp_path / "second.csv").read_bytes()
+    assert len(first.splitlines()) > 300
+    assert first == second
+
+
+def test_a_failing_program_fails_the_run(tmp_path):
+    program = build("drive_square_corner", tmp_path)
+    result = run_headless("--program", f"1={program}", "--key", "1:KEY2@0.1", cwd=tmp_path)
+    assert result.returncode == 1
+    assert "exit code 9" in result.stdout
+
+
+def test_a_missing_program_is_reported(tmp_path):
+    result = run_headless("--program", "1=./no-such-program", cwd=tmp_path)
+    assert result.returncode == 1
+    assert "program not found" in result.stdout + result.stderr
+
+
+def test_the_program_ends_clearly_when_the_simulator_dies(tmp_path):
+    program = build("wait_forever", tmp_path)
+    simulator = subprocess.Popen(eyesim_command("run", "--headless", "--clock", "realtime", "--port", "0"),
+                                 stdout=subprocess.PIPE, text=True, cwd=tmp_path)
+    try:
+        line = simulator.stdout.readline()
+        while "programs connect to" not in line:
+            line = simulator.stdout.readline()
+            assert line, "the simulator did not start"
+        port = line.rsplit(":", 1)[1].split()[0]
+        client = subprocess.Popen([str(program)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                                  env=dict(os.environ, EYESIM_PORT=port))
+        assert client.stdout.readline().strip() == "ready"
+        time.sleep(0.2)
+        simulator.send_signal(signal.SIGKILL)
+        out, err = client.communicate(timeout=20)
+        assert client.returncode != 0
+        assert "VWWait returned" not in out
+        assert "simulator" in err.lower()
+    finally:
+        simulator.kill()
+        simulator.wait()

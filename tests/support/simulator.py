@@ -1,0 +1,40 @@
+"""An in-process simulator (engine + program server on their own threads) for tests."""
+
+from __future__ import annotations
+
+import contextlib
+import threading
+
+from eyesim.clock import Clock
+from eyesim.engine import Simulation
+from eyesim.net.io_thread import IoThread
+from eyesim.net.program_server import ProgramServer
+
+
+@contextlib.contextmanager
+def running_simulation(scene, mode: str = "realtime", speed: float = 1.0):
+    """Yield (sim, port) with the simulation loop running; stops everything afterwards."""
+    sim = Simulation(scene, Clock(mode, speed))
+    io = IoThread()
+    io.start()
+    server = ProgramServer(sim, io, "127.0.0.1", 0)
+    server.start()
+    errors = []
+
+    def loop():
+        try:
+            sim.run()
+        except BaseException as error:  # surfaced by the test below
+            errors.append(error)
+
+    thread = threading.Thread(target=loop, daemon=True)
+    thread.start()
+    try:
+        yield sim, server.port
+    finally:
+        sim.stop()
+        thread.join(timeout=10)
+        sim.shutdown_sessions()
+        server.stop()
+        io.stop()
+    assert not errors, errors

@@ -1,0 +1,121 @@
+"""The simulation loop: clock modes, costs, pending replies and determinism."""
+
+import time
+
+import pytest
+from support.client import ProgramClient
+from support.scenes import arena
+from support.simulator import running_simulation
+
+from eyesim.protocol import generated as g
+from eyesim.robot.components.keys import KEY2
+
+
+def test_deterministic_time_stands_still_while_a_program_computes():
+    with running_simulation(arena(), "deterministic") as (sim, port):
+        client = ProgramClient(port)
+        client.hello()
+        first = client.call("OS_GET_COUNT")[0]
+        time.sleep(0.3)  # the program "computes" for 0.3 s of wall time
+        second = client.call("OS_GET_COUNT")[0]
+        assert second - first == 0  # one call costs 0.1 ms: still within the same millisecond
+        assert sim.time_us < 3000
+
+
+def test_deterministic_calls_cost_their_documented_time():
+    cost = g.OPS_BY_NAME["OS_GET_COUNT"].cost_us
+    with running_simulation(arena(), "deterministic") as (sim, port):
+        client = ProgramClient(port)
+        client.hello()
+        start = client.call("OS_GET_COUNT")[0]
+        calls = 100
+        for _ in range(calls - 1):
+            client.call("OS_GET_COUNT")
+        assert client.call("OS_GET_COUNT")[0] - start == calls * cost // 1000
+
+
+def test_deterministic_os_wait_costs_exactly_its_milliseconds():
+    with running_simulation(arena(), "deterministic") as (sim, port):
+        client = ProgramClient(port)
+        client.hello()
+        for wait in (1, 7, 100, 333):
+            before = client.call("OS_GET_COUNT")[0]
+            client.call("OS_WAIT", wait)
+            assert client.call("OS_GET_COUNT")[0] - before == wait
+
+
+def test_realtime_os_wait_follows_the_wall_clock():
+    with running_simulation(arena(), "realtime") as (sim, port):
+        client = ProgramClient(port)
+        client.hello()
+        start = time.perf_counter()
+        client.call("OS_WAIT", 300)
+        elapsed = time.perf_counter() - start
+        assert 0.25 < elapsed < 1.5
+
+
+def test_key_get_waits_for_a_press_while_other_calls_go_on():
+    with running_simulation(arena(robots=((500, 500, 0), (1500, 500, 0)))) as (sim, port):
+        waiter, other = ProgramClient(port), ProgramClient(port)
+        waiter.hello("1")
+        other.hello("2")
+        request = waiter.send("KEY_GET")
+        assert other.call("PSD_GET", 1)[0] > 0  # the blocked call holds up nobody
+        sim.call(lambda s: s.press_key(1, KEY2))
+        assert waiter.reply("KEY_GET", request) == (KEY2,)
+        assert waiter.call("KEY_READ") == (0,)
+
+
+def test_vw_wait_returns_when_the_manoeuvre_is_done():
+    with running_simulation(arena(), "deterministic") as (sim, port):
+        client = ProgramClient(port)
+        client.hello()
+        client.call("VW_STRAIGHT", 300, 300)
+        assert client.call("VW_DONE") == (0,)
+        client.call("VW_WAIT")
+        assert client.call("VW_DONE") == (1,)
+        x, y, z, phi = client.call("SIM_GET_ROBOT", 0)[1:]
+        assert abs(x - 800) <= 3 and abs(y - 500) <= 2
+
+
+def run_scripted_program(mode):
+    """Drive a fixed sequence deterministically; return the trajectory of robot 1."""
+    trajectory = []
+    with running_simulation(arena(), mode) as (sim, port):
+        sim.step_observers.append(lambda s: trajectory.append(bytes(s.world.data.qpos)))
+        client = ProgramClient(port)
+        client.hello()
+        client.call("VW_SET_SPEED", 200, 30)
+        for _ in range(50):
+            client.call("PSD_GET", 1)
+        client.call("VW_TURN", 45, 90)
+        client.call("VW_WAIT")
+        client.call("VW_STRAIGHT", 200, 250)
+        client.call("OS_WAIT", 250)
+        client.call("SIM_SET_ROBOT", 0, 1000, 1000, 0, 90)
+        client.call("VW_WAIT")
+        client.close()
+        time.sleep(0.2)
+    return trajectory
+
+
+def test_two_deterministic_runs_give_bit_identical_trajectories():
+    first = run_scripted_program("deterministic")
+    second = run_scripted_program("deterministic")
+    assert len(first) > 500
+    assert first == second
+
+
+def test_the_simulator_survives_a_handler_crash(monkeypatch):
+    from eyesim import commands
+
+    def broken(sim, robot, request):
+        raise ZeroDivisionError("boom")
+
+    monkeypatch.setitem(commands.HANDLERS, g.OP_PSD_GET, broken)
+    with running_simulation(arena()) as (sim, port):
+        client = ProgramClient(port)
+        client.hello()
+        with pytest.raises(Exception, match="internal simulator error"):
+            client.call("PSD_GET", 1)
+        assert client.call("OS_GET_COUNT")[0] >= 0
