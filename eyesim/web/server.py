@@ -83,6 +83,8 @@ class ViewerHub:
         self.menus: dict[int, str] = {}
         self.programs: dict[int, str] = {}
         self.console: dict[int, deque] = {}
+        self.latest_snapshot: str | None = None
+        self.latest_status: str | None = None
         self._rate = (time.perf_counter(), 0.0, 1.0)  # wall, sim time, real-time factor
 
     # -- Listener interface, called on the simulation thread --------------------------------
@@ -127,6 +129,7 @@ class ViewerHub:
         status["real_time_factor"] = round(rate, 3) if math.isfinite(rate) else None
         text = json.dumps(message)
         status_text = json.dumps(status)
+        self.latest_snapshot, self.latest_status = text, status_text
         for browser in self.browsers:
             browser.set_snapshot(text)
             browser.add_event(status_text, coalesce_key=("status",))
@@ -137,6 +140,9 @@ class ViewerHub:
 
     async def attach(self, browser: Browser) -> None:
         browser.add_event(json.dumps(scene_message(self.sim, self._texture_url())))
+        if self.latest_snapshot is not None:
+            browser.set_snapshot(self.latest_snapshot)
+            browser.add_event(self.latest_status, coalesce_key=("status",))
         for robot in self.sim.robots:
             if robot.id in self.menus:
                 browser.add_event(self.menus[robot.id])
@@ -168,8 +174,10 @@ class ViewerHub:
             self.sim.call(lambda sim: sim.clock.set_paused(kind == "pause", sim.time_us))
         elif kind == "speed":
             value = message.get("value")
-            if not isinstance(value, (int, float)) or not value > 0:
-                return f"speed: {value!r} is not a positive number"
+            if value == "max":
+                value = math.inf
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or not value > 0:
+                return f"speed: {value!r} is not a positive number or 'max'"
             self.sim.call(lambda sim: sim.clock.set_speed(float(value), sim.time_us))
         elif kind == "reset":
             self.sim.call(lambda sim: sim.reset())
@@ -228,7 +236,8 @@ class ViewerServer:
                 return web.Response(status=500, text="The viewer assets are missing from this install: "
                                                      "run `make viewer` in the EyeSim source tree.")
             raise web.HTTPNotFound()
-        return web.FileResponse(path)
+        # Bundle file names are fixed: make browsers revalidate so an upgrade shows at once.
+        return web.FileResponse(path, headers={"Cache-Control": "no-cache"})
 
     async def _floor_texture(self, request: web.Request) -> web.StreamResponse:
         texture = self.sim.scene.world.floor_texture

@@ -1,0 +1,89 @@
+// A robot's LCD, drawn pixel for pixel, and its four soft keys (buttons and the LCD's menu bar).
+
+import { element } from "./dom";
+import { KEY_CODES, type KeyCode, type MenuLabels } from "./protocol";
+
+const LCD_WIDTH = 480;
+const LCD_HEIGHT = 320;
+/** RoBIOS draws the soft-key labels in a bar this many pixels high at the LCD's bottom. */
+const MENU_BAR_HEIGHT = 38;
+
+export class LcdView {
+  readonly element = element("div", "lcd");
+  private readonly image = element("img", "lcd-image");
+  private readonly keys: HTMLButtonElement[];
+  private readonly labels: HTMLElement[];
+  private updates = 0;
+  private enabled = true;
+
+  constructor(private readonly pressKey: (key: KeyCode) => void) {
+    this.image.width = LCD_WIDTH;
+    this.image.height = LCD_HEIGHT;
+    this.image.alt = "robot LCD";
+    this.image.draggable = false;
+    this.image.addEventListener("load", () => this.updates++);
+    this.image.addEventListener("error", () => {
+      console.warn("EyeSim viewer: an LCD image could not be decoded");
+    });
+    this.image.addEventListener("click", (event) => this.clickImage(event));
+    this.image.addEventListener("mousemove", (event) => {
+      this.image.classList.toggle("over-menu", this.menuKeyAt(event) !== null);
+    });
+
+    const keyRow = element("div", "soft-keys");
+    this.labels = KEY_CODES.map(() => element("span", "soft-key-label"));
+    this.keys = KEY_CODES.map((key, i) => {
+      const button = element("button", "soft-key");
+      button.type = "button";
+      button.dataset.key = String(key);
+      button.append(element("span", "soft-key-name", `KEY${i + 1}`), this.labels[i]);
+      button.addEventListener("click", () => this.pressKey(key));
+      return button;
+    });
+    keyRow.append(...this.keys);
+    const frame = element("div", "lcd-frame");
+    frame.append(this.image);
+    this.element.append(frame, keyRow);
+  }
+
+  showImage(png: string): void {
+    this.image.src = `data:image/png;base64,${png}`;
+  }
+
+  showMenu(labels: MenuLabels): void {
+    labels.forEach((label, i) => {
+      this.labels[i].textContent = label;
+      this.keys[i].title = label ? `KEY${i + 1}: ${label}` : `KEY${i + 1}`;
+    });
+  }
+
+  setEnabled(enabled: boolean): void {
+    this.enabled = enabled;
+    for (const key of this.keys) key.disabled = !enabled;
+    this.element.classList.toggle("disabled", !enabled);
+  }
+
+  menuLabels(): string[] {
+    return this.labels.map((label) => label.textContent ?? "");
+  }
+
+  /** How many LCD images have finished loading into the page. */
+  imageUpdates(): number {
+    return this.updates;
+  }
+
+  /** The soft key whose quarter of the menu bar is under the pointer, if any. */
+  private menuKeyAt(event: MouseEvent): KeyCode | null {
+    const box = this.image.getBoundingClientRect();
+    if (box.width === 0 || box.height === 0) return null;
+    const x = ((event.clientX - box.left) / box.width) * LCD_WIDTH;
+    const y = ((event.clientY - box.top) / box.height) * LCD_HEIGHT;
+    if (y < LCD_HEIGHT - MENU_BAR_HEIGHT || y >= LCD_HEIGHT || x < 0 || x >= LCD_WIDTH) return null;
+    return KEY_CODES[Math.floor((x / LCD_WIDTH) * KEY_CODES.length)];
+  }
+
+  private clickImage(event: MouseEvent): void {
+    const key = this.menuKeyAt(event);
+    if (key !== null && this.enabled) this.pressKey(key);
+  }
+}

@@ -1,0 +1,19 @@
+// Entry point: builds the viewer on the page and starts it.
+
+import "./style.css";
+import { installDebugHandle } from "./debug_handle";
+import { Viewer } from "./viewer";
+
+function byId(id: string): HTMLElement {
+  const found = document.getElementById(id);
+  if (!found) throw new Error(`EyeSim viewer: the page has no #${id}`);
+  return found;
+}
+
+const viewer = new Viewer({
+  toolbar: byId("toolbar"),
+  world: byId("world"),
+  panels: byId("robots"),
+});
+installDebugHandle(viewer);
+viewer.start();

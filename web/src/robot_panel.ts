@@ -1,0 +1,58 @@
+// One robot's panel: its name, program state, LCD with soft keys, and console.
+
+import { ConsoleView } from "./console_view";
+import { element } from "./dom";
+import { LcdView } from "./lcd_view";
+import type { ConsoleMessage, KeyCode, ProgramMessage, RobotInfo } from "./protocol";
+
+export type ProgramState = Pick<ProgramMessage, "event" | "name" | "exit_code">;
+
+function describe(program: ProgramState | null): { text: string; kind: string } {
+  if (!program) return { text: "no program", kind: "idle" };
+  if (program.event === "started") return { text: `running ${program.name}`, kind: "running" };
+  const code = program.exit_code === null ? "" : ` with code ${program.exit_code}`;
+  return { text: `${program.name} exited${code}`, kind: program.exit_code ? "failed" : "exited" };
+}
+
+export class RobotPanel {
+  readonly element = element("section", "robot-panel");
+  readonly lcd: LcdView;
+  readonly console = new ConsoleView();
+  private readonly name = element("h2", "robot-name");
+  private readonly type = element("span", "robot-type");
+  private readonly state = element("span", "program-state");
+  private program: ProgramState | null = null;
+
+  constructor(robot: RobotInfo, pressKey: (key: KeyCode) => void) {
+    this.element.dataset.robot = String(robot.id);
+    this.lcd = new LcdView(pressKey);
+    const header = element("header", "robot-header");
+    const title = element("div", "robot-title");
+    title.append(this.name, this.type);
+    header.append(title, this.state);
+    this.element.append(header, this.lcd.element, this.console.element);
+    this.describeRobot(robot);
+    this.showProgram(null);
+  }
+
+  describeRobot(robot: RobotInfo): void {
+    this.name.textContent = robot.name;
+    this.type.textContent = `#${robot.id} ${robot.type}`;
+    this.element.setAttribute("aria-label", `robot ${robot.name}`);
+  }
+
+  showProgram(program: ProgramState | null): void {
+    this.program = program && { event: program.event, name: program.name, exit_code: program.exit_code };
+    const { text, kind } = describe(program);
+    this.state.textContent = text;
+    this.state.dataset.kind = kind;
+  }
+
+  appendConsole(message: ConsoleMessage): void {
+    this.console.append(message.stream, message.text);
+  }
+
+  programState(): ProgramState | null {
+    return this.program && { ...this.program };
+  }
+}

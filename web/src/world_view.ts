@@ -1,0 +1,220 @@
+// The live 3D view: renderer, camera, orbit controls, lights, and the world placed from poses.
+
+import {
+  Color,
+  DirectionalLight,
+  HemisphereLight,
+  Object3D,
+  PerspectiveCamera,
+  Scene,
+  Vector3,
+  WebGLRenderer,
+} from "three";
+import { OrbitControls } from "three/addons/controls/OrbitControls.js";
+import { CSS2DRenderer } from "three/addons/renderers/CSS2DRenderer.js";
+import type { Pose, Poses } from "./interpolation";
+import type { Floor, SceneMessage } from "./protocol";
+import { buildWorld, disposeWorld, type BuiltWorld } from "./world_builder";
+import { createWorldRoot, worldToThree } from "./world_frame";
+
+export interface WorldCounts {
+  robots: number;
+  walls: number;
+  objects: number;
+  markers: number;
+}
+
+/** What the renderer needs; absent when the browser cannot give us WebGL. */
+interface Display {
+  renderer: WebGLRenderer;
+  labels: CSS2DRenderer;
+  controls: OrbitControls;
+}
+
+const FIELD_OF_VIEW = 45;
+const CAMERA_ELEVATION = (55 * Math.PI) / 180;
+
+function createDisplay(container: HTMLElement, camera: PerspectiveCamera): Display | null {
+  let renderer: WebGLRenderer;
+  try {
+    renderer = new WebGLRenderer({ antialias: true });
+  } catch (error) {
+    console.warn("EyeSim viewer: WebGL is not available, the 3D view is off.", error);
+    return null;
+  }
+  renderer.setPixelRatio(window.devicePixelRatio);
+  renderer.domElement.classList.add("world-canvas");
+  const labels = new CSS2DRenderer();
+  labels.domElement.classList.add("world-labels");
+  container.append(renderer.domElement, labels.domElement);
+  const controls = new OrbitControls(camera, renderer.domElement);
+  controls.enableDamping = true;
+  // Keep the camera above the floor.
+  controls.maxPolarAngle = Math.PI / 2 - 0.02;
+  return { renderer, labels, controls };
+}
+
+function showNotice(container: HTMLElement, message: string): HTMLElement {
+  const notice = document.createElement("div");
+  notice.className = "world-notice";
+  notice.textContent = message;
+  container.append(notice);
+  return notice;
+}
+
+function poseOf(thing: Object3D): Pose {
+  const { position: p, quaternion: q } = thing;
+  return { pos: [p.x, p.y, p.z], quat: [q.w, q.x, q.y, q.z] };
+}
+
+/** Moves a robot or object to `pose`; says whether anything changed. */
+function place(thing: Object3D, pose: Pose): boolean {
+  const [x, y, z] = pose.pos;
+  const [qw, qx, qy, qz] = pose.quat;
+  const p = thing.position;
+  const q = thing.quaternion;
+  const unchanged =
+    p.x === x && p.y === y && p.z === z && q.w === qw && q.x === qx && q.y === qy && q.z === qz;
+  if (thing.visible && unchanged) return false;
+  p.set(x, y, z);
+  q.set(qx, qy, qz, qw);
+  thing.visible = true;
+  return true;
+}
+
+/**
+ * The scene graph is built and posed whether or not WebGL works (it needs no GPU), so what the
+ * view would show can always be queried; only drawing needs a renderer.
+ */
+export class WorldView {
+  private readonly scene = new Scene();
+  private readonly root = createWorldRoot();
+  private readonly camera = new PerspectiveCamera(FIELD_OF_VIEW, 1, 0.01, 1000);
+  private readonly display: Display | null;
+  private world: BuiltWorld | null = null;
+  private floor: Floor | null = null;
+  private needsRender = true;
+
+  constructor(private readonly container: HTMLElement) {
+    this.scene.background = new Color(0xdde3ea);
+    this.scene.add(new HemisphereLight(0xffffff, 0x8a8f96, 2.2));
+    const sun = new DirectionalLight(0xffffff, 1.6);
+    sun.position.copy(worldToThree(-3, -5, 10));
+    this.scene.add(sun, this.root);
+
+    this.display = createDisplay(container, this.camera);
+    if (this.display) {
+      const notice = showNotice(container, "The 3D view lost its graphics context.");
+      notice.hidden = true;
+      const canvas = this.display.renderer.domElement;
+      canvas.addEventListener("webglcontextlost", () => (notice.hidden = false));
+      canvas.addEventListener("webglcontextrestored", () => {
+        notice.hidden = true;
+        this.needsRender = true;
+      });
+      this.display.controls.addEventListener("change", () => (this.needsRender = true));
+      new ResizeObserver(() => this.resize()).observe(container);
+      this.resize();
+    } else {
+      container.classList.add("unavailable");
+      showNotice(
+        container,
+        "3D view unavailable: this browser could not start WebGL. " +
+          "The robot panels (LCD, keys, console) still work.",
+      );
+    }
+  }
+
+  get webglActive(): boolean {
+    return this.display !== null;
+  }
+
+  /** Replaces the world; keeps the camera unless the floor changed size. */
+  showScene(scene: SceneMessage): void {
+    if (this.world) disposeWorld(this.world);
+    this.world = buildWorld(scene, () => (this.needsRender = true));
+    this.root.add(this.world.group);
+    const { width, height } = scene.floor;
+    if (this.floor?.width !== width || this.floor?.height !== height) this.frameFloor(scene.floor);
+    this.floor = scene.floor;
+    this.needsRender = true;
+  }
+
+  applyPoses(poses: Poses): void {
+    if (!this.world) return;
+    for (const [id, pose] of poses.robots) {
+      const robot = this.world.robots.get(id);
+      if (robot && place(robot, pose)) this.needsRender = true;
+    }
+    for (const [id, pose] of poses.objects) {
+      const object = this.world.objects.get(id);
+      if (object && place(object, pose)) this.needsRender = true;
+    }
+  }
+
+  /** Draws a frame if anything moved since the last one. */
+  render(): void {
+    if (!this.display) return;
+    this.display.controls.update();
+    if (!this.needsRender) return;
+    this.needsRender = false;
+    this.display.renderer.render(this.scene, this.camera);
+    this.display.labels.render(this.scene, this.camera);
+  }
+
+  counts(): WorldCounts {
+    return {
+      robots: this.world?.robots.size ?? 0,
+      walls: this.world?.wallCount ?? 0,
+      objects: this.world?.objects.size ?? 0,
+      markers: this.world?.markerCount ?? 0,
+    };
+  }
+
+  /** The robot's pose as drawn (world frame), or null if it is unknown or not yet placed. */
+  displayedRobotPose(id: number): Pose | null {
+    const robot = this.world?.robots.get(id);
+    return robot?.visible ? poseOf(robot) : null;
+  }
+
+  /** Where the robot's centre appears on the page, in CSS pixels; null without WebGL. */
+  robotScreenPosition(id: number): { x: number; y: number } | null {
+    const robot = this.world?.robots.get(id);
+    if (!this.display || !robot?.visible) return null;
+    this.camera.updateMatrixWorld();
+    const ndc = robot.getWorldPosition(new Vector3()).project(this.camera);
+    const rect = this.display.renderer.domElement.getBoundingClientRect();
+    return {
+      x: rect.left + ((ndc.x + 1) / 2) * rect.width,
+      y: rect.top + ((1 - ndc.y) / 2) * rect.height,
+    };
+  }
+
+  /** Looks at the floor's centre from the south, with its circumscribed circle in view. */
+  private frameFloor(floor: Floor): void {
+    const centre = worldToThree(floor.width / 2, floor.height / 2, 0);
+    const radius = Math.hypot(floor.width, floor.height) / 2;
+    const halfHeight = Math.tan((FIELD_OF_VIEW * Math.PI) / 360);
+    const halfView = Math.min(halfHeight, halfHeight * this.camera.aspect);
+    const distance = radius / halfView;
+    const offset = worldToThree(0, -Math.cos(CAMERA_ELEVATION), Math.sin(CAMERA_ELEVATION));
+    this.camera.position.copy(centre).addScaledVector(offset, distance);
+    this.camera.near = distance / 500;
+    this.camera.far = distance * 20;
+    this.camera.updateProjectionMatrix();
+    this.camera.lookAt(centre);
+    this.display?.controls.target.copy(centre);
+    this.display?.controls.update();
+  }
+
+  private resize(): void {
+    if (!this.display) return;
+    const width = Math.max(1, this.container.clientWidth);
+    const height = Math.max(1, this.container.clientHeight);
+    this.display.renderer.setSize(width, height);
+    this.display.labels.setSize(width, height);
+    this.camera.aspect = width / height;
+    this.camera.updateProjectionMatrix();
+    this.needsRender = true;
+  }
+}

@@ -1,0 +1,23 @@
+// Builds the viewer into the Python package's static assets, with stable names and no source maps.
+
+import { defineConfig } from "vite";
+
+export default defineConfig({
+  // Relative asset URLs: the page works wherever the simulator serves it.
+  base: "./",
+  build: {
+    outDir: "../eyesim/web/static",
+    emptyOutDir: true,
+    sourcemap: false,
+    // three.js alone is over Vite's default 500 kB warning; one file is what we want.
+    chunkSizeWarningLimit: 1024,
+    rolldownOptions: {
+      output: {
+        // Fixed names keep the committed bundle's diffs readable.
+        entryFileNames: "assets/[name].js",
+        chunkFileNames: "assets/[name].js",
+        assetFileNames: "assets/[name][extname]",
+      },
+    },
+  },
+});
