@@ -47,6 +47,7 @@ class Simulation:
         self.inbox: queue.SimpleQueue = queue.SimpleQueue()
         self.sessions: list[Session] = []
         self.expected_programs: set[int] = set()  # robot ids whose launched program has not connected
+        self.stop_when_programs_done = False  # end the run once no program is connected or expected
         self.time_us = 0
         self.steps = 0
         self._scheduled: list = []  # heap of (time_us, seq, action) run at step boundaries
@@ -326,6 +327,20 @@ class Simulation:
         if session in self.sessions:
             self.sessions.remove(session)
             log.info("%s disconnected", session.name)
+        self.check_programs_done()
+
+    def program_gone(self, robot_id: int) -> None:
+        """A launched program exited; if it never connected, stop waiting for it."""
+        self.expected_programs.discard(robot_id)
+        self.check_programs_done()
+
+    def check_programs_done(self) -> None:
+        # Decided here, on the simulation thread, when a session closes: in deterministic mode
+        # time cannot have moved since the program's last call, so the run ends at the same
+        # simulation time every time.
+        if self.stop_when_programs_done and not self.expected_programs and \
+                not any(s.robot is not None for s in self.sessions):
+            self.stop()
 
     def shutdown_sessions(self) -> None:
         for session in list(self.sessions):

@@ -67,7 +67,7 @@ class Launcher:
         except OSError as error:
             run.error = f"cannot start {run.path}: {error.strerror}"
             self._print(run, "stderr", f"eyesim: {run.error}\n")
-            self.sim.call(lambda sim: sim.expected_programs.discard(robot_id_))
+            self.sim.call(lambda sim: sim.program_gone(robot_id_))
             return run
         self.sim.call(lambda sim: sim.events.program(robot_id_, "started", run.name, None))
         for stream in ("stdout", "stderr"):
@@ -99,8 +99,8 @@ class Launcher:
         robot_id = run.robot_id
 
         def exited(sim):
-            sim.expected_programs.discard(robot_id)
             sim.events.program(robot_id, "exited", run.name, run.exit_code)
+            sim.program_gone(robot_id)
 
         self.sim.call(exited)
 
@@ -108,8 +108,17 @@ class Launcher:
     def all_exited(self) -> bool:
         return all(run.process is None or run.process.poll() is not None for run in self.runs)
 
-    def stop_all(self, grace: float = 2.0) -> None:
-        """Stop programs still running (the run is over) and wait for their output to drain."""
+    def stop_all(self, grace: float = 2.0, let_finish: float = 0.0) -> None:
+        """Stop programs still running (the run is over) and wait for their output to drain.
+
+        `let_finish`: seconds to wait first for programs that are ending by themselves (the run
+        ended because they closed their connections)."""
+        for run in self.runs:
+            if run.process is not None and let_finish > 0:
+                try:
+                    run.process.wait(timeout=let_finish)
+                except subprocess.TimeoutExpired:
+                    pass
         for run in self.runs:
             if run.process is not None and run.process.poll() is None:
                 run.stopped_by_us = True

@@ -173,18 +173,15 @@ def simulate(args) -> int:
     launcher = Launcher(sim, args.host, server.port)
     for robot_id, path in sorted(programs.items()):
         launcher.start(robot_id, path)
-    if args.headless and programs and args.until is None:
-        # Headless with programs and no time limit: the run ends when the last program exits.
-        started = sum(1 for run in launcher.runs if run.process is not None)
-        sim.events.subscribe(_StopWhenProgramsExit(sim, started))
-        if not started:
-            sim.stop()
+    # Headless with programs and no time limit: the run ends when the last program is done.
+    sim.stop_when_programs_done = bool(args.headless and programs and args.until is None)
+    sim.call(lambda s: s.check_programs_done())  # e.g. no program could start
     try:
         sim.run(until=args.until)
     except KeyboardInterrupt:
         print("\neyesim: interrupted", file=sys.stderr)
     finally:
-        launcher.stop_all()
+        launcher.stop_all(let_finish=5.0 if sim.stop_when_programs_done else 0.0)
         sim.shutdown_sessions()
         server.stop()
         if viewer is not None:
@@ -202,25 +199,6 @@ def simulate(args) -> int:
         for robot in sim.robots:
             print(status_line(robot, runs.get(robot.id)))
     return 1 if any(run.failed for run in launcher.runs) else 0
-
-
-class _StopWhenProgramsExit:
-    """Listens for program exits and stops the simulation after the last one."""
-
-    wants_lcd = False
-
-    def __init__(self, sim, count: int):
-        self.sim = sim
-        self.remaining = count
-
-    def on_event(self, message: dict) -> None:
-        if message["type"] == "program" and message["event"] == "exited":
-            self.remaining -= 1
-            if self.remaining <= 0:
-                self.sim.stop()
-
-    def on_snapshot(self, message: dict) -> None:
-        pass
 
 
 def _has_display() -> bool:

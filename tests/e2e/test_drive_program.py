@@ -87,3 +87,22 @@ def test_the_program_ends_clearly_when_the_simulator_dies(tmp_path):
     finally:
         simulator.kill()
         simulator.wait()
+
+
+def test_program_output_reaches_the_console_line_by_line(tmp_path):
+    program = build("print_then_wait", tmp_path)
+    simulator = subprocess.Popen(eyesim_command("run", "--headless", "--clock", "realtime", "--port", "0",
+                                                "--program", f"1={program}"),
+                                 stdout=subprocess.PIPE, text=True, cwd=tmp_path)
+    try:
+        start = time.perf_counter()
+        line = simulator.stdout.readline()
+        while "hello before waiting" not in line:
+            line = simulator.stdout.readline()
+            assert line, "the program's first line never arrived"
+        assert line.startswith("[robot 1] ")
+        assert time.perf_counter() - start < 2.5  # long before the program's 3 s wait ends
+        out, _ = simulator.communicate(timeout=30)
+        assert "after waiting" in out and simulator.returncode == 0
+    finally:
+        simulator.kill()

@@ -12,9 +12,13 @@ from eyesim.net.program_server import ProgramServer
 
 
 @contextlib.contextmanager
-def running_simulation(scene, mode: str = "realtime", speed: float = 1.0):
-    """Yield (sim, port) with the simulation loop running; stops everything afterwards."""
+def running_simulation(scene, mode: str = "realtime", speed: float = 1.0, expect=()):
+    """Yield (sim, port) with the simulation loop running; stops everything afterwards.
+
+    `expect`: robot ids whose program will connect; deterministic time waits for them, as it
+    does for the programs `eyesim run` launches."""
     sim = Simulation(scene, Clock(mode, speed))
+    sim.expected_programs.update(expect)
     io = IoThread()
     io.start()
     server = ProgramServer(sim, io, "127.0.0.1", 0)
