@@ -22,46 +22,46 @@ ERR_SHUTDOWN = 9
 ERROR_PAYLOAD = (('code', 'i32'), ('message', 'str'))
 
 OP_HELLO = 1
-OP_LCD_PRINTF = 16
-OP_LCD_SET_PRINTF = 17
-OP_LCD_CLEAR = 18
-OP_LCD_MENU = 19
-OP_KEY_GET = 32
-OP_KEY_READ = 33
-OP_OS_WAIT = 48
-OP_OS_GET_COUNT = 49
-OP_PSD_GET = 64
-OP_VW_SET_SPEED = 80
-OP_VW_GET_SPEED = 81
-OP_VW_SET_POSITION = 82
-OP_VW_GET_POSITION = 83
-OP_VW_STRAIGHT = 84
-OP_VW_TURN = 85
-OP_VW_DONE = 86
-OP_VW_WAIT = 87
-OP_SIM_GET_ROBOT = 128
-OP_SIM_SET_ROBOT = 129
+OP_LCD_PRINTF = 257
+OP_LCD_SET_PRINTF = 258
+OP_LCD_CLEAR = 259
+OP_LCD_MENU = 260
+OP_KEY_GET = 513
+OP_KEY_READ = 514
+OP_OS_WAIT = 1025
+OP_OS_GET_COUNT = 1026
+OP_PSD_GET = 2049
+OP_VW_SET_SPEED = 3073
+OP_VW_GET_SPEED = 3074
+OP_VW_SET_POSITION = 3075
+OP_VW_GET_POSITION = 3076
+OP_VW_STRAIGHT = 3077
+OP_VW_TURN = 3078
+OP_VW_DONE = 3079
+OP_VW_WAIT = 3080
+OP_SIM_GET_ROBOT = 4097
+OP_SIM_SET_ROBOT = 4098
 
 OPS = {
     1: OpSpec('HELLO', 1, 'session', 0, False, (('version', 'u32'), ('robot', 'str'), ('program', 'str'), ('pid', 'u32')), (('version', 'u32'), ('robot_id', 'i32'), ('robot_name', 'str'))),
-    16: OpSpec('LCD_PRINTF', 16, 'lcd', 100, False, (('text', 'str'),), (('result', 'i32'),)),
-    17: OpSpec('LCD_SET_PRINTF', 17, 'lcd', 100, False, (('row', 'i32'), ('column', 'i32'), ('text', 'str')), (('result', 'i32'),)),
-    18: OpSpec('LCD_CLEAR', 18, 'lcd', 100, False, (), (('result', 'i32'),)),
-    19: OpSpec('LCD_MENU', 19, 'lcd', 100, False, (('key1', 'str'), ('key2', 'str'), ('key3', 'str'), ('key4', 'str')), (('result', 'i32'),)),
-    32: OpSpec('KEY_GET', 32, 'key', 100, True, (), (('key', 'i32'),)),
-    33: OpSpec('KEY_READ', 33, 'key', 100, False, (), (('key', 'i32'),)),
-    48: OpSpec('OS_WAIT', 48, 'os', 0, True, (('ms', 'i32'),), (('result', 'i32'),)),
-    49: OpSpec('OS_GET_COUNT', 49, 'os', 100, False, (), (('ms', 'i32'),)),
-    64: OpSpec('PSD_GET', 64, 'psd', 100, False, (('psd', 'i32'),), (('mm', 'i32'),)),
-    80: OpSpec('VW_SET_SPEED', 80, 'vw', 100, False, (('lin_speed', 'i32'), ('ang_speed', 'i32')), (('result', 'i32'),)),
-    81: OpSpec('VW_GET_SPEED', 81, 'vw', 100, False, (), (('result', 'i32'), ('lin_speed', 'i32'), ('ang_speed', 'i32'))),
-    82: OpSpec('VW_SET_POSITION', 82, 'vw', 100, False, (('x', 'i32'), ('y', 'i32'), ('phi', 'i32')), (('result', 'i32'),)),
-    83: OpSpec('VW_GET_POSITION', 83, 'vw', 100, False, (), (('result', 'i32'), ('x', 'i32'), ('y', 'i32'), ('phi', 'i32'))),
-    84: OpSpec('VW_STRAIGHT', 84, 'vw', 100, False, (('dist', 'i32'), ('lin_speed', 'i32')), (('result', 'i32'),)),
-    85: OpSpec('VW_TURN', 85, 'vw', 100, False, (('angle', 'i32'), ('ang_speed', 'i32')), (('result', 'i32'),)),
-    86: OpSpec('VW_DONE', 86, 'vw', 100, False, (), (('done', 'i32'),)),
-    87: OpSpec('VW_WAIT', 87, 'vw', 100, True, (), (('result', 'i32'),)),
-    128: OpSpec('SIM_GET_ROBOT', 128, 'sim', 100, False, (('id', 'i32'),), (('result', 'i32'), ('x', 'i32'), ('y', 'i32'), ('z', 'i32'), ('phi', 'i32'))),
-    129: OpSpec('SIM_SET_ROBOT', 129, 'sim', 100, False, (('id', 'i32'), ('x', 'i32'), ('y', 'i32'), ('z', 'i32'), ('phi', 'i32')), (('result', 'i32'),)),
+    257: OpSpec('LCD_PRINTF', 257, 'lcd', 100, False, (('text', 'str'),), (('result', 'i32'),)),
+    258: OpSpec('LCD_SET_PRINTF', 258, 'lcd', 100, False, (('row', 'i32'), ('column', 'i32'), ('text', 'str')), (('result', 'i32'),)),
+    259: OpSpec('LCD_CLEAR', 259, 'lcd', 100, False, (), (('result', 'i32'),)),
+    260: OpSpec('LCD_MENU', 260, 'lcd', 100, False, (('key1', 'str'), ('key2', 'str'), ('key3', 'str'), ('key4', 'str')), (('result', 'i32'),)),
+    513: OpSpec('KEY_GET', 513, 'key', 100, True, (), (('key', 'i32'),)),
+    514: OpSpec('KEY_READ', 514, 'key', 100, False, (), (('key', 'i32'),)),
+    1025: OpSpec('OS_WAIT', 1025, 'os', 0, True, (('ms', 'i32'),), (('result', 'i32'),)),
+    1026: OpSpec('OS_GET_COUNT', 1026, 'os', 100, False, (), (('ms', 'i32'),)),
+    2049: OpSpec('PSD_GET', 2049, 'psd', 100, False, (('psd', 'i32'),), (('mm', 'i32'),)),
+    3073: OpSpec('VW_SET_SPEED', 3073, 'vw', 100, False, (('lin_speed', 'i32'), ('ang_speed', 'i32')), (('result', 'i32'),)),
+    3074: OpSpec('VW_GET_SPEED', 3074, 'vw', 100, False, (), (('result', 'i32'), ('lin_speed', 'i32'), ('ang_speed', 'i32'))),
+    3075: OpSpec('VW_SET_POSITION', 3075, 'vw', 100, False, (('x', 'i32'), ('y', 'i32'), ('phi', 'i32')), (('result', 'i32'),)),
+    3076: OpSpec('VW_GET_POSITION', 3076, 'vw', 100, False, (), (('result', 'i32'), ('x', 'i32'), ('y', 'i32'), ('phi', 'i32'))),
+    3077: OpSpec('VW_STRAIGHT', 3077, 'vw', 100, False, (('dist', 'i32'), ('lin_speed', 'i32')), (('result', 'i32'),)),
+    3078: OpSpec('VW_TURN', 3078, 'vw', 100, False, (('angle', 'i32'), ('ang_speed', 'i32')), (('result', 'i32'),)),
+    3079: OpSpec('VW_DONE', 3079, 'vw', 100, False, (), (('done', 'i32'),)),
+    3080: OpSpec('VW_WAIT', 3080, 'vw', 100, True, (), (('result', 'i32'),)),
+    4097: OpSpec('SIM_GET_ROBOT', 4097, 'sim', 100, False, (('id', 'i32'),), (('result', 'i32'), ('x', 'i32'), ('y', 'i32'), ('z', 'i32'), ('phi', 'i32'))),
+    4098: OpSpec('SIM_SET_ROBOT', 4098, 'sim', 100, False, (('id', 'i32'), ('x', 'i32'), ('y', 'i32'), ('z', 'i32'), ('phi', 'i32')), (('result', 'i32'),)),
 }
 OPS_BY_NAME = {op.name: op for op in OPS.values()}

@@ -25,25 +25,25 @@
 typedef enum { ES_T_END = 0, ES_T_I32 = 1, ES_T_U32 = 2, ES_T_F64 = 3, ES_T_STR = 4, ES_T_BYTES = 5, ES_T_I32S = 6 } es_type;
 
 #define ES_OP_HELLO 1
-#define ES_OP_LCD_PRINTF 16
-#define ES_OP_LCD_SET_PRINTF 17
-#define ES_OP_LCD_CLEAR 18
-#define ES_OP_LCD_MENU 19
-#define ES_OP_KEY_GET 32
-#define ES_OP_KEY_READ 33
-#define ES_OP_OS_WAIT 48
-#define ES_OP_OS_GET_COUNT 49
-#define ES_OP_PSD_GET 64
-#define ES_OP_VW_SET_SPEED 80
-#define ES_OP_VW_GET_SPEED 81
-#define ES_OP_VW_SET_POSITION 82
-#define ES_OP_VW_GET_POSITION 83
-#define ES_OP_VW_STRAIGHT 84
-#define ES_OP_VW_TURN 85
-#define ES_OP_VW_DONE 86
-#define ES_OP_VW_WAIT 87
-#define ES_OP_SIM_GET_ROBOT 128
-#define ES_OP_SIM_SET_ROBOT 129
+#define ES_OP_LCD_PRINTF 257
+#define ES_OP_LCD_SET_PRINTF 258
+#define ES_OP_LCD_CLEAR 259
+#define ES_OP_LCD_MENU 260
+#define ES_OP_KEY_GET 513
+#define ES_OP_KEY_READ 514
+#define ES_OP_OS_WAIT 1025
+#define ES_OP_OS_GET_COUNT 1026
+#define ES_OP_PSD_GET 2049
+#define ES_OP_VW_SET_SPEED 3073
+#define ES_OP_VW_GET_SPEED 3074
+#define ES_OP_VW_SET_POSITION 3075
+#define ES_OP_VW_GET_POSITION 3076
+#define ES_OP_VW_STRAIGHT 3077
+#define ES_OP_VW_TURN 3078
+#define ES_OP_VW_DONE 3079
+#define ES_OP_VW_WAIT 3080
+#define ES_OP_SIM_GET_ROBOT 4097
+#define ES_OP_SIM_SET_ROBOT 4098
 
 typedef struct {
     uint16_t code;
@@ -56,25 +56,25 @@ typedef struct {
 
 static const es_op_layout ES_OP_LAYOUTS[] = {
     {1, "HELLO", 4, {ES_T_U32, ES_T_STR, ES_T_STR, ES_T_U32}, 3, {ES_T_U32, ES_T_I32, ES_T_STR}},
-    {16, "LCD_PRINTF", 1, {ES_T_STR}, 1, {ES_T_I32}},
-    {17, "LCD_SET_PRINTF", 3, {ES_T_I32, ES_T_I32, ES_T_STR}, 1, {ES_T_I32}},
-    {18, "LCD_CLEAR", 0, {ES_T_END}, 1, {ES_T_I32}},
-    {19, "LCD_MENU", 4, {ES_T_STR, ES_T_STR, ES_T_STR, ES_T_STR}, 1, {ES_T_I32}},
-    {32, "KEY_GET", 0, {ES_T_END}, 1, {ES_T_I32}},
-    {33, "KEY_READ", 0, {ES_T_END}, 1, {ES_T_I32}},
-    {48, "OS_WAIT", 1, {ES_T_I32}, 1, {ES_T_I32}},
-    {49, "OS_GET_COUNT", 0, {ES_T_END}, 1, {ES_T_I32}},
-    {64, "PSD_GET", 1, {ES_T_I32}, 1, {ES_T_I32}},
-    {80, "VW_SET_SPEED", 2, {ES_T_I32, ES_T_I32}, 1, {ES_T_I32}},
-    {81, "VW_GET_SPEED", 0, {ES_T_END}, 3, {ES_T_I32, ES_T_I32, ES_T_I32}},
-    {82, "VW_SET_POSITION", 3, {ES_T_I32, ES_T_I32, ES_T_I32}, 1, {ES_T_I32}},
-    {83, "VW_GET_POSITION", 0, {ES_T_END}, 4, {ES_T_I32, ES_T_I32, ES_T_I32, ES_T_I32}},
-    {84, "VW_STRAIGHT", 2, {ES_T_I32, ES_T_I32}, 1, {ES_T_I32}},
-    {85, "VW_TURN", 2, {ES_T_I32, ES_T_I32}, 1, {ES_T_I32}},
-    {86, "VW_DONE", 0, {ES_T_END}, 1, {ES_T_I32}},
-    {87, "VW_WAIT", 0, {ES_T_END}, 1, {ES_T_I32}},
-    {128, "SIM_GET_ROBOT", 1, {ES_T_I32}, 5, {ES_T_I32, ES_T_I32, ES_T_I32, ES_T_I32, ES_T_I32}},
-    {129, "SIM_SET_ROBOT", 5, {ES_T_I32, ES_T_I32, ES_T_I32, ES_T_I32, ES_T_I32}, 1, {ES_T_I32}},
+    {257, "LCD_PRINTF", 1, {ES_T_STR}, 1, {ES_T_I32}},
+    {258, "LCD_SET_PRINTF", 3, {ES_T_I32, ES_T_I32, ES_T_STR}, 1, {ES_T_I32}},
+    {259, "LCD_CLEAR", 0, {ES_T_END}, 1, {ES_T_I32}},
+    {260, "LCD_MENU", 4, {ES_T_STR, ES_T_STR, ES_T_STR, ES_T_STR}, 1, {ES_T_I32}},
+    {513, "KEY_GET", 0, {ES_T_END}, 1, {ES_T_I32}},
+    {514, "KEY_READ", 0, {ES_T_END}, 1, {ES_T_I32}},
+    {1025, "OS_WAIT", 1, {ES_T_I32}, 1, {ES_T_I32}},
+    {1026, "OS_GET_COUNT", 0, {ES_T_END}, 1, {ES_T_I32}},
+    {2049, "PSD_GET", 1, {ES_T_I32}, 1, {ES_T_I32}},
+    {3073, "VW_SET_SPEED", 2, {ES_T_I32, ES_T_I32}, 1, {ES_T_I32}},
+    {3074, "VW_GET_SPEED", 0, {ES_T_END}, 3, {ES_T_I32, ES_T_I32, ES_T_I32}},
+    {3075, "VW_SET_POSITION", 3, {ES_T_I32, ES_T_I32, ES_T_I32}, 1, {ES_T_I32}},
+    {3076, "VW_GET_POSITION", 0, {ES_T_END}, 4, {ES_T_I32, ES_T_I32, ES_T_I32, ES_T_I32}},
+    {3077, "VW_STRAIGHT", 2, {ES_T_I32, ES_T_I32}, 1, {ES_T_I32}},
+    {3078, "VW_TURN", 2, {ES_T_I32, ES_T_I32}, 1, {ES_T_I32}},
+    {3079, "VW_DONE", 0, {ES_T_END}, 1, {ES_T_I32}},
+    {3080, "VW_WAIT", 0, {ES_T_END}, 1, {ES_T_I32}},
+    {4097, "SIM_GET_ROBOT", 1, {ES_T_I32}, 5, {ES_T_I32, ES_T_I32, ES_T_I32, ES_T_I32, ES_T_I32}},
+    {4098, "SIM_SET_ROBOT", 5, {ES_T_I32, ES_T_I32, ES_T_I32, ES_T_I32, ES_T_I32}, 1, {ES_T_I32}},
 };
 #define ES_OP_COUNT 20
 static const es_type ES_ERROR_LAYOUT[] = {ES_T_I32, ES_T_STR};
