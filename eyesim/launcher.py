@@ -50,16 +50,17 @@ class Launcher:
         self._threads: list[threading.Thread] = []
 
     def start(self, robot_id: int, path: str | Path) -> ProgramRun:
-        run = ProgramRun(robot_id, Path(path).resolve())
+        run = ProgramRun(robot_id, Path(path))
         self.runs.append(run)
         if not run.path.is_file():
-            run.error = f"program not found: {run.path}"
+            run.error = f"program not found: {path}"
             self._print(run, "stderr", f"eyesim: {run.error}\n")
             return run
         env = dict(os.environ, EYESIM_HOST=self.host, EYESIM_PORT=str(self.port), EYESIM_ROBOT=str(robot_id))
         env.setdefault("PYTHONUNBUFFERED", "1")
         robot_id_ = robot_id
         self.sim.call(lambda sim: sim.expected_programs.add(robot_id_))
+        run.path = run.path.resolve()
         try:
             run.process = subprocess.Popen(command_for(run.path), cwd=run.path.parent, env=env,
                                            stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
