@@ -4,7 +4,11 @@ Units are the files' own (millimetres, degrees, kilograms, 0-255 colour channels
 and JSON convert into each other without loss; `physics/` converts to SI when it builds a model.
 World frame: x east, y north, z up, origin at the floor's lower-left corner, headings in degrees
 counter-clockwise from +x. Robot frame: x forward, y left, z up, origin at the robot's centre on
-the floor.
+the floor. Object frame: the same axes, origin at the object's centre on the floor.
+
+Every position below is already converted into these frames, whatever dialect the file used
+(see docs/file-formats.md); the only exception is a robot's mesh placement (`model_offset`,
+`model_rotation`), which stays in the mesh's own axes because it only concerns drawing the mesh.
 """
 
 from __future__ import annotations
@@ -60,16 +64,34 @@ class StartPosition:
 
 @dataclass(frozen=True)
 class ObjectPlacement:
-    """An object of a named type placed in the world."""
+    """An object of a named type placed in the world.
+
+    `type_name` is always a key of `Scene.object_types`. `friction` is the EyeSim 6 per-object
+    friction value (`object x y phi friction model`), None when the file gives none.
+    """
 
     type_name: str
     pose: Pose
     location: Location | None = None
+    friction: float | None = None
+
+
+@dataclass(frozen=True)
+class Marker:
+    """A coloured marker on the floor at (x, y) mm; colour (r, g, b, a) 0-255."""
+
+    x: float
+    y: float
+    color: tuple[int, int, int, int] = (255, 0, 0, 255)
 
 
 @dataclass(frozen=True)
 class World:
-    """The environment: floor, walls and what a .wld or .maz file places in it."""
+    """The environment: floor, walls and what a .wld or .maz file places in it.
+
+    Straight after parsing, `floor_texture` is the path as written in the file; a loaded scene
+    holds the resolved absolute path (or None when the image was not found).
+    """
 
     source: str
     floor_width: float | None = None  # mm along x; None = no floor size given
@@ -78,7 +100,8 @@ class World:
     floor_texture: str | None = None  # resolved path, or None
     start_pose: Pose | None = None  # .wld `position`
     start_positions: tuple[StartPosition, ...] = ()  # .maz start letters, in reading order
-    objects: tuple[ObjectPlacement, ...] = ()  # .maz balls and crates
+    objects: tuple[ObjectPlacement, ...] = ()  # .maz balls and crates, .wld `ball`
+    markers: tuple[Marker, ...] = ()  # .maz `F` (finish cell)
 
 
 @dataclass(frozen=True)
@@ -90,6 +113,16 @@ class WheelSpec:
     max_speed: float
     ticks_per_rev: int
     track: float
+
+
+@dataclass(frozen=True)
+class SteeringSpec:
+    """The steered axle of an Ackermann robot: `offset` mm ahead (+) of the robot centre,
+    axle `height` mm above the floor (None = wheel radius) and its wheels (None = as driven)."""
+
+    offset: float
+    height: float | None = None
+    wheels: WheelSpec | None = None
 
 
 @dataclass(frozen=True)
@@ -108,7 +141,12 @@ class PsdSpec:
 
 @dataclass(frozen=True)
 class CameraSpec:
-    """A camera at a robot-frame position (mm) with default pan/tilt (deg) and field of view."""
+    """A camera at a robot-frame position (mm) with default pan/tilt (deg) and field of view.
+
+    `pan_range`/`tilt_range` are the mechanical limits in degrees (min, max). When a servo
+    drives pan or tilt (`pan_servo`/`tilt_servo`, RoBIOS servo numbers), SERVOSet 0..255 maps
+    linearly onto that range. `fisheye` marks a fisheye lens whose field of view is `fov`.
+    """
 
     x: float
     y: float
@@ -118,10 +156,16 @@ class CameraSpec:
     fov: float = 60.0
     pan_servo: int | None = None
     tilt_servo: int | None = None
+    pan_range: tuple[float, float] = (-90.0, 90.0)
+    tilt_range: tuple[float, float] = (-90.0, 90.0)
+    fisheye: bool = False
 
 
 @dataclass(frozen=True)
 class LidarSpec:
+    """A scanning lidar: `points` beams over 360 degrees, scan plane tilted by `tilt` degrees
+    against the driving plane."""
+
     points: int = 360
     tilt: float = 0.0
 
@@ -130,7 +174,8 @@ class LidarSpec:
 class Collider:
     """A collision shape in the robot/object frame (mm): kind 'box' (size = sx, sy, sz),
     'sphere' (size = (r,)), 'capsule' (size = (r, h)) or 'cylinder' (size = (r, h)), with its
-    centre and, for capsules/cylinders, the axis letter."""
+    centre and, for capsules/cylinders, the axis letter. A capsule's h is its full length
+    including the two caps (as in the VR files)."""
 
     kind: str
     size: tuple[float, ...]
@@ -139,11 +184,93 @@ class Collider:
 
 
 @dataclass(frozen=True)
+class ThrusterSpec:
+    """A thruster: RoBIOS motor number, position (mm, robot frame), thrust direction (robot
+    frame, any length), and the thrust in newtons at motor speed 100 (negative speeds reverse)."""
+
+    name: str
+    motor: int
+    x: float
+    y: float
+    z: float
+    dx: float
+    dy: float
+    dz: float
+    max_thrust: float
+
+
+@dataclass(frozen=True)
+class BuoyancySpec:
+    """Displaced volume in litres (1 litre of water lifts about 1 kg) acting at the centre of
+    buoyancy (mm, robot frame)."""
+
+    volume: float
+    x: float = 0.0
+    y: float = 0.0
+    z: float = 0.0
+
+
+@dataclass(frozen=True)
+class DragSpec:
+    """Linear drag in water: force per speed along the robot's x, y, z axes in N/(m/s), and a
+    rotational drag torque per turn rate in N*m/(rad/s)."""
+
+    x: float
+    y: float
+    z: float
+    rotation: float = 0.0
+
+
+@dataclass(frozen=True)
+class JointSpec:
+    """One arm joint by its standard Denavit-Hartenberg parameters (link i: rotate theta about
+    z, move d along z, move a along x, rotate alpha about x). A 'revolute' joint turns: theta is
+    its zero offset and the limits are degrees; a 'prismatic' joint slides: d is its zero offset
+    and the limits are mm. SERVOSet(servo, 0..255) maps linearly onto [min, max]."""
+
+    name: str
+    servo: int
+    kind: str  # 'revolute' | 'prismatic'
+    d: float
+    theta: float
+    a: float
+    alpha: float
+    min: float
+    max: float
+
+
+@dataclass(frozen=True)
+class GripperSpec:
+    """A two-finger gripper on the last joint: servo 0 = closed, 255 = open `opening` mm;
+    it squeezes with at most `force` newtons."""
+
+    servo: int
+    opening: float
+    force: float
+
+
+@dataclass(frozen=True)
+class ArmSpec:
+    """A manipulator arm mounted at (x, y, z) mm on the robot (robot frame), its base turned
+    by `heading` degrees; joints from the base outwards."""
+
+    x: float = 0.0
+    y: float = 0.0
+    z: float = 0.0
+    heading: float = 0.0
+    joints: tuple[JointSpec, ...] = ()
+    gripper: GripperSpec | None = None
+
+
+@dataclass(frozen=True)
 class RobotType:
     """A robot type: what a .robi file (or a built-in definition) says about a robot.
 
-    `drive` is one of 'differential', 'ackermann', 'omni', 'submarine', 'arm' (and combinations
-    added by later issues). Dimensions: `length`, `width`, `height` of the chassis in mm.
+    `drive` is one of 'differential', 'ackermann', 'omni', 'submarine' (thrusters, no wheels) or
+    'arm' (a manipulator on a fixed base). A wheeled robot may also carry an `arm`: drive
+    commands then move the base and servo commands the arm. Dimensions: `length`, `width`,
+    `height` of the chassis in mm. `axle_height` is the drive axle's height (None = wheel
+    radius). `drive_motors` lists the EyeSim 6 motor/encoder names of the `drive` line.
     """
 
     name: str
@@ -163,12 +290,26 @@ class RobotType:
     lidar: LidarSpec | None = None
     model: str | None = None
     colliders: tuple[Collider, ...] = ()
-    extras: tuple[tuple[str, object], ...] = ()  # keywords later drive types add
+    drive_motors: tuple[str, ...] = ()
+    center_of_mass: tuple[float, float, float] | None = None  # mm, robot frame
+    axle_height: float | None = None
+    steering: SteeringSpec | None = None  # Ackermann only
+    model_offset: tuple[float, float, float] = (0.0, 0.0, 0.0)  # mm, mesh axes (X right, Y up, Z forward)
+    model_rotation: tuple[float, float, float] = (0.0, 0.0, 0.0)  # deg about the mesh's X, Y, Z
+    thrusters: tuple[ThrusterSpec, ...] = ()
+    buoyancy: BuoyancySpec | None = None
+    drag: DragSpec | None = None
+    arm: ArmSpec | None = None
 
 
 @dataclass(frozen=True)
 class ObjectType:
-    """An object type (.esObj or built-in): model, scale, mass (kg), colliders, flags."""
+    """An object type (.esObj or built-in): model, scale, mass (kg), colliders, flags.
+
+    `scale` applies to the model mesh only; `colliders` and `center_of_mass` are already at the
+    object's real size in mm (object frame). `buoyancy` is the displaced volume in litres;
+    `fixed` objects never move.
+    """
 
     name: str
     source: str
@@ -179,23 +320,19 @@ class ObjectType:
     color: tuple[int, int, int] = (180, 180, 180)
     buoyancy: float = 0.0
     fixed: bool = False
+    center_of_mass: tuple[float, float, float] | None = None
 
 
 @dataclass(frozen=True)
 class RobotPlacement:
-    """A robot of a named type placed in the scene, optionally with the program it runs."""
+    """A robot of a named type placed in the scene, optionally with the program it runs.
+
+    `type_name` is always a key of `Scene.robot_types`."""
 
     type_name: str
     pose: Pose
     program: str | None = None  # resolved path of the program, or None
     location: Location | None = None
-
-
-@dataclass(frozen=True)
-class Marker:
-    x: float
-    y: float
-    color: tuple[int, int, int, int] = (255, 0, 0, 255)
 
 
 @dataclass(frozen=True)
@@ -206,11 +343,14 @@ class Settings:
 
 @dataclass(frozen=True)
 class Diagnostic:
-    """A warning or error found while loading: kind ('error' | 'warning'), where, and what."""
+    """A warning or error found while loading: kind ('error' | 'warning'), where, and what.
+
+    `code` names the kind of problem for programs (e.g. 'missing-file', 'unknown-keyword')."""
 
     kind: str
     location: Location
     message: str
+    code: str = ""
 
     def __str__(self) -> str:
         return f"{self.location}: {self.kind}: {self.message}"
@@ -218,7 +358,12 @@ class Diagnostic:
 
 @dataclass(frozen=True)
 class Scene:
-    """Everything a .sim file describes; the simulator builds its world from this alone."""
+    """Everything a .sim file describes; the simulator builds its world from this alone.
+
+    `objects` and `markers` are complete: they include the world's own (maze balls, crates and
+    finish cells, .wld balls) followed by the .sim file's, so the simulator needs to read only
+    these and never `world.objects`/`world.markers`.
+    """
 
     source: str
     world: World

@@ -1,0 +1,252 @@
+"""The .sim scene format (all three dialects) as a document of references, and its writer.
+
+Parsing does not open the files a scene names; the loader resolves the document into a Scene.
+A placement line (`S4 500 500 0 prog.x`, `Can 800 300 45`, `S4 S 90 maze.x`) is kept as
+written because whether a name is a robot or an object depends on the files it loads.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from eyesim.scene.description import Location, Marker, Settings
+from eyesim.scene.diagnostics import Diagnostics, quoted
+from eyesim.scene.lexer import Line, format_number, integer, number, quote_token, split_lines
+
+SETTING_FLAGS = ("vis", "trace")
+KEYWORDS = ("world", "maze", "settings", "robi", "robot", "obj", "object", "marker")
+
+
+@dataclass(frozen=True)
+class Reference:
+    """A file named in a scene, as written, and where."""
+
+    path: str
+    location: Location | None = None
+
+
+@dataclass(frozen=True)
+class Placement:
+    """One thing placed by a scene, as written. Exactly one of `type_name` (a robot or object
+    type), `robi` (EyeSim 6: define and place the robot of that file) or `model` (EyeSim 6:
+    an obstacle from that 3-D model) is set. The position is x, y (mm) and phi (deg), or a maze
+    start letter `start` with an optional heading `phi`, or nothing (EyeSim 6 `robi` lines:
+    the world's start position)."""
+
+    type_name: str | None = None
+    x: float | None = None
+    y: float | None = None
+    phi: float | None = None
+    start: str | None = None
+    program: str | None = None
+    robi: str | None = None
+    model: str | None = None
+    friction: float | None = None
+    location: Location | None = None
+
+
+@dataclass(frozen=True)
+class SimDocument:
+    """A .sim file: the world it uses, loaded robot and object definitions, placements in file
+    order, markers and settings."""
+
+    source: str
+    world: Reference | None = None
+    settings: Settings = Settings()
+    robot_files: tuple[Reference, ...] = ()
+    object_files: tuple[Reference, ...] = ()
+    placements: tuple[Placement, ...] = ()
+    markers: tuple[Marker, ...] = ()
+
+
+def parse_sim(text: str, source: str, diagnostics: Diagnostics, where: dict | None = None) -> SimDocument:
+    reader = _SceneReader(source, diagnostics)
+    for line in split_lines(text, source, diagnostics):
+        reader.statement(line)
+    return reader.document()
+
+
+class _SceneReader:
+    def __init__(self, source: str, diagnostics: Diagnostics):
+        self.source = source
+        self.diagnostics = diagnostics
+        self.world: Reference | None = None
+        self.flags: set[str] = set()
+        self.robot_files: list[Reference] = []
+        self.object_files: list[Reference] = []
+        self.placements: list[Placement] = []
+        self.markers: list[Marker] = []
+
+    def at(self, line: Line, index: int = 0) -> Location:
+        return Location(self.source, line.number, line.tokens[min(index, len(line.tokens) - 1)].column)
+
+    def error(self, line: Line, message: str, index: int = 0, code: str = "syntax") -> None:
+        self.diagnostics.error(self.at(line, index), message, code)
+
+    def document(self) -> SimDocument:
+        return SimDocument(self.source, self.world, Settings("vis" in self.flags, "trace" in self.flags),
+                           tuple(self.robot_files), tuple(self.object_files), tuple(self.placements),
+                           tuple(self.markers))
+
+    def statement(self, line: Line) -> None:
+        handler = getattr(self, "kw_" + line.keyword.lower(), None) if not line.tokens[0].quoted else None
+        if handler is None:
+            self.placement(line)
+        else:
+            handler(line)
+
+    def numbers(self, line: Line, first: int, names: tuple[str, ...]) -> list[float] | None:
+        values, ok = [], True
+        for offset, name in enumerate(names):
+            token = line.tokens[first + offset]
+            value = number(token.text)
+            if value is None:
+                self.error(line, f"{line.keyword}: expected {name} (a number), found {quoted(token.text)}",
+                           first + offset)
+                ok = False
+            values.append(value)
+        return values if ok else None
+
+    def usage(self, line: Line, form: str) -> None:
+        found = quoted(" ".join(t.text for t in line.args)) if line.args else "nothing"
+        self.error(line, f"{line.keyword}: expected {form}, found {found} (quote paths that contain spaces)")
+
+    def kw_world(self, line: Line) -> None:
+        if len(line.args) != 1:
+            self.usage(line, f"one world file ({line.keyword} <file.wld|file.maz>)")
+            return
+        if self.world is not None:
+            self.diagnostics.warning(self.at(line), f"a second world statement: {quoted(line.args[0].text)} "
+                                     f"replaces {quoted(self.world.path)}", "second-world")
+        self.world = Reference(line.args[0].text, self.at(line, 1))
+
+    kw_maze = kw_world
+
+    def kw_settings(self, line: Line) -> None:
+        for i, token in enumerate(line.args, start=1):
+            flag = token.text.lower()
+            if flag in SETTING_FLAGS:
+                self.flags.add(flag)
+            else:
+                self.diagnostics.warning(self.at(line, i), f"unknown setting {quoted(token.text)} ignored: "
+                                         "expected VIS or TRACE", "unknown-setting")
+
+    def kw_robi(self, line: Line) -> None:
+        args = line.args
+        if len(args) == 1:
+            self.robot_files.append(Reference(args[0].text, self.at(line, 1)))
+        elif len(args) in (2, 5):
+            x = y = phi = None
+            if len(args) == 5:
+                values = self.numbers(line, 3, ("x in mm", "y in mm", "phi in degrees"))
+                if values is None:
+                    return
+                x, y, phi = values
+            self.placements.append(Placement(robi=args[0].text, program=args[1].text, x=x, y=y, phi=phi,
+                                             location=self.at(line)))
+        else:
+            self.usage(line, f"{line.keyword} <file.robi>, or {line.keyword} <file.robi> <program> [<x> <y> <phi>]")
+
+    kw_robot = kw_robi
+
+    def kw_obj(self, line: Line) -> None:
+        args = line.args
+        if len(args) == 1:
+            self.object_files.append(Reference(args[0].text, self.at(line, 1)))
+        elif len(args) == 5:
+            values = self.numbers(line, 1, ("x in mm", "y in mm", "phi in degrees", "friction"))
+            if values is not None:
+                self.placements.append(Placement(x=values[0], y=values[1], phi=values[2], friction=values[3],
+                                                 model=args[4].text, location=self.at(line)))
+        else:
+            self.usage(line, f"{line.keyword} <file.esObj>, or {line.keyword} <x> <y> <phi> <friction> <model>")
+
+    kw_object = kw_obj
+
+    def kw_marker(self, line: Line) -> None:
+        args = line.args
+        if len(args) not in (2, 5, 6):
+            self.usage(line, "marker <x> <y> [<r> <g> <b> [<alpha>]]")
+            return
+        values = self.numbers(line, 1, ("x in mm", "y in mm"))
+        color = [255, 0, 0, 255]
+        for i, token in enumerate(args[2:]):
+            value = integer(token.text)
+            if value is None or not 0 <= value <= 255:
+                self.error(line, f"marker: expected a colour value 0..255, found {quoted(token.text)}", 3 + i)
+                return
+            color[i] = value
+        if values is not None:
+            self.markers.append(Marker(values[0], values[1], tuple(color)))
+
+    def placement(self, line: Line) -> None:
+        name, args = line.keyword, line.args
+        form = f"{name} <x> <y> <phi> [<program>], or {name} <maze start letter> [<phi>] [<program>]"
+        if not args:
+            self.error(line, f"unknown keyword {quoted(name)}: expected a keyword (world, maze, settings, robi, "
+                             f"robot, obj, object, marker) or a placement ({form})")
+            return
+        first = args[0].text
+        if number(first) is not None:
+            if len(args) < 2:
+                self.error(line, f"{name}: expected <x> <y> <phi> after the type name, found only {quoted(first)}")
+                return
+            values = self.numbers(line, 1, ("x in mm", "y in mm"))
+            rest = list(args[2:])
+            phi = 0.0
+            if rest and number(rest[0].text) is not None:
+                phi = number(rest.pop(0).text)
+            if len(rest) > 1:
+                self.error(line, f"{name}: expected at most <x> <y> <phi> <program>, found extra "
+                                 f"{quoted(' '.join(t.text for t in rest[1:]))}", len(line.tokens) - len(rest) + 1)
+                return
+            if values is not None:
+                self.placements.append(Placement(type_name=name, x=values[0], y=values[1], phi=phi,
+                                                 program=rest[0].text if rest else None, location=self.at(line)))
+        elif len(first) == 1 and first.isalpha() and not args[0].quoted:
+            rest = list(args[1:])
+            phi = number(rest.pop(0).text) if rest and number(rest[0].text) is not None else None
+            if len(rest) > 1:
+                self.error(line, f"{name}: expected at most <letter> <phi> <program>, found extra "
+                                 f"{quoted(' '.join(t.text for t in rest[1:]))}", len(line.tokens) - len(rest) + 1)
+                return
+            self.placements.append(Placement(type_name=name, start=first, phi=phi,
+                                             program=rest[0].text if rest else None, location=self.at(line)))
+        else:
+            self.error(line, f"{name}: expected a position (<x> <y> <phi>) or a maze start letter, found "
+                             f"{quoted(first)} ({form})", 1)
+
+
+def write_sim(document: SimDocument) -> str:
+    """SimDocument as .sim text: definitions first, then placements in order, then markers."""
+    f = format_number
+    out = ["# EyeSim scene (written by eyesim convert)"]
+    if document.world is not None:
+        out.append(f"world {quote_token(document.world.path)}")
+    flags = [name.upper() for name, on in (("vis", document.settings.vis), ("trace", document.settings.trace)) if on]
+    if flags:
+        out.append("settings " + " ".join(flags))
+    out += [f"robot {quote_token(r.path)}" for r in document.robot_files]
+    out += [f"object {quote_token(r.path)}" for r in document.object_files]
+    for p in document.placements:
+        program = f" {quote_token(p.program)}" if p.program is not None else ""
+        if p.robi is not None:
+            pose = f" {f(p.x)} {f(p.y)} {f(p.phi)}" if p.x is not None else ""
+            out.append(f"robi {quote_token(p.robi)} {quote_token(p.program or '')}{pose}")
+        elif p.model is not None:
+            out.append(f"object {f(p.x)} {f(p.y)} {f(p.phi)} {f(p.friction or 0.0)} {quote_token(p.model)}")
+        elif p.start is not None:
+            phi = f" {f(p.phi)}" if p.phi is not None else ""
+            out.append(f"{_type_token(p.type_name)} {p.start}{phi}{program}")
+        else:
+            out.append(f"{_type_token(p.type_name)} {f(p.x)} {f(p.y)} {f(p.phi or 0.0)}{program}")
+    for m in document.markers:
+        color = " ".join(str(c) for c in (m.color if m.color[3] != 255 else m.color[:3]))
+        out.append(f"marker {f(m.x)} {f(m.y)} {color}")
+    return "\n".join(out) + "\n"
+
+
+def _type_token(name: str) -> str:
+    """A type name for the start of a placement line: quoted when it would read as a keyword."""
+    token = quote_token(name)
+    return f'"{name}"' if token == name and name.lower() in KEYWORDS else token
