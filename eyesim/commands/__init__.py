@@ -5,11 +5,23 @@ requests it cannot serve. The network layer never knows what an operation means.
 
 from __future__ import annotations
 
-from eyesim.commands import key, lcd, os, psd, sim, vw
+from eyesim.commands import key  # one import and one GROUP_MODULES line per group module
+from eyesim.commands import lcd
+from eyesim.commands import os
+from eyesim.commands import psd
+from eyesim.commands import sim
+from eyesim.commands import vw
 from eyesim.commands.errors import CommandError
 from eyesim.protocol import generated
 
-GROUP_MODULES = (lcd, key, os, psd, vw, sim)
+GROUP_MODULES = (
+    lcd,
+    key,
+    os,
+    psd,
+    vw,
+    sim,
+)
 
 
 def _build_registry() -> dict:
