@@ -4,6 +4,7 @@
 #include "eyebot.h"
 
 #define CLEARANCE 300 /* mm: turn away when a wall is closer than this ahead */
+#define SIDE_CLEARANCE 150 /* mm: steer away from a wall this close at the side */
 #define CRUISE 250    /* mm/s */
 
 static void show_sensors(void)
@@ -55,7 +56,10 @@ int main(void)
             VWTurn(PSDGet(PSD_LEFT) > PSDGet(PSD_RIGHT) ? 90 : -90, 120);
             VWWait();
         } else {
-            VWSetSpeed(CRUISE, 0);
+            /* Steer gently away from a wall that comes close on either side. */
+            int left = PSDGet(PSD_LEFT), right = PSDGet(PSD_RIGHT);
+            int steer = left < SIDE_CLEARANCE ? -30 : right < SIDE_CLEARANCE ? 30 : 0;
+            VWSetSpeed(CRUISE, steer);
         }
         show_sensors();
         OSWait(50);
