@@ -5,6 +5,7 @@ import os
 import signal
 import subprocess
 import time
+from pathlib import Path
 
 import numpy as np
 from PIL import Image
@@ -106,3 +107,17 @@ def test_program_output_reaches_the_console_line_by_line(tmp_path):
         assert "after waiting" in out and simulator.returncode == 0
     finally:
         simulator.kill()
+
+
+def test_the_bundled_demo_explores_and_ends_on_key4(tmp_path):
+    demo = Path(__file__).resolve().parents[2] / "examples" / "programs" / "demo.c"
+    output = tmp_path / "demo"
+    built = subprocess.run(eyesim_command("cc", "-Wall", "-Wextra", "-Werror", str(demo), "-o", str(output)),
+                           capture_output=True, text=True)
+    assert built.returncode == 0, built.stderr
+    result = run_headless("--program", f"1={output}", "--key", "1:KEY4@6", "--record", "path.csv", cwd=tmp_path)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "demo: ended by KEY4" in result.stdout
+    path = read_trajectory(tmp_path / "path.csv")[1]
+    travelled = sum(math.hypot(b["x"] - a["x"], b["y"] - a["y"]) for a, b in zip(path, path[1:]))
+    assert travelled > 0.8  # it explored: about 250 mm/s for most of 6 s
