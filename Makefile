@@ -1,12 +1,12 @@
 # EyeSim: `make demo` runs the simulator on the bundled scene; `make test` runs every test.
 # Both set up everything they need on first use: a virtual environment in .venv with EyeSim
 # installed into it (which builds the C library), and for the tests the Debian packages of the
-# headless browser when run as root.
+# headless browser and of software OpenGL (for cameras) when run as root.
 
 PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
-SOURCES := $(shell find eyesim robios protocol -type f -not -path '*/__pycache__/*' 2>/dev/null) pyproject.toml
+SOURCES := $(shell find eyesim eye robios protocol -type f -not -path '*/__pycache__/*' 2>/dev/null) pyproject.toml
 INSTALLED := $(VENV)/.installed
 
 .PHONY: demo test install viewer protocol bench clean
@@ -14,7 +14,7 @@ INSTALLED := $(VENV)/.installed
 demo: $(INSTALLED) build/demo
 	$(BIN)/eyesim run --program 1=build/demo --open
 
-test: $(INSTALLED) browser-packages
+test: $(INSTALLED) system-packages
 	$(BIN)/pytest -q
 
 install: $(INSTALLED)
@@ -33,15 +33,20 @@ build/demo: examples/programs/demo.c $(INSTALLED)
 	mkdir -p build
 	$(BIN)/eyesim cc -O2 -Wall -Wextra examples/programs/demo.c -o $@
 
-# Headless Chromium for the browser tests, from Debian's packages (needs root; skipped otherwise
-# when already present).
-.PHONY: browser-packages
-browser-packages:
-	@if ! command -v chromium >/dev/null 2>&1; then \
+# Debian packages the tests need, installed when missing (needs root): headless Chromium for the
+# browser tests, and software OpenGL (EGL and OSMesa) for the cameras' OpenGL renderer.
+SYSTEM_PACKAGES := chromium libegl1 libgl1-mesa-dri libosmesa6
+
+.PHONY: system-packages
+system-packages:
+	@command -v dpkg-query >/dev/null 2>&1 || exit 0; \
+	missing=$$(for p in $(SYSTEM_PACKAGES); do \
+		dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "ok installed" || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
 		if [ "$$(id -u)" = 0 ]; then \
-			apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null; \
+			apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null; \
 		else \
-			echo "make test: Chromium is missing; install the Debian package 'chromium' (as root) for the browser tests" >&2; exit 1; \
+			echo "make test: missing Debian packages:" $$missing "- install them (as root) for the browser and camera tests" >&2; exit 1; \
 		fi; \
 	fi
 
@@ -56,6 +61,8 @@ protocol:
 bench: $(INSTALLED)
 	$(BIN)/python bench/bench_roundtrip.py
 	$(BIN)/python bench/bench_stalled_client.py
+	$(BIN)/python bench/bench_sensors.py
+	$(BIN)/python bench/bench_realtime_factor.py
 
 clean:
 	rm -rf $(VENV) build

@@ -25,9 +25,10 @@ def build_c(source: Path, output: Path) -> Path:
     return output
 
 
-def start_simulator(*args: str) -> tuple[subprocess.Popen, int]:
+def start_simulator(*args: str, env: dict | None = None) -> tuple[subprocess.Popen, int]:
     """Start `eyesim run` (headless unless args say otherwise) on a free port; return it and the port."""
-    process = subprocess.Popen(eyesim("run", "--port", "0", *args), stdout=subprocess.PIPE, text=True, cwd=BENCH)
+    process = subprocess.Popen(eyesim("run", "--port", "0", *args), stdout=subprocess.PIPE, text=True, cwd=BENCH,
+                               env=env)
     deadline = time.time() + 60
     for line in process.stdout:
         match = re.search(r"programs connect to [\d.]+:(\d+)", line)

@@ -22,11 +22,13 @@ import traceback
 from eyesim import commands
 from eyesim.clock import Clock
 from eyesim.events import EventBus
-from eyesim.physics.world import PhysicsWorld, add_floor, add_wall, floor_of, new_spec
+from eyesim.physics.builder import build_world
 from eyesim.protocol import encode_error, encode_message, generated as g
-from eyesim.robot.build import add_robot
+from eyesim.robot.component import Component
+from eyesim.robot.components.battery import Battery
 from eyesim.robot.components.keys import Keys
 from eyesim.robot.components.lcd import Lcd
+from eyesim.robot.sensor_rays import camera_images, sensor_rays
 from eyesim.scene.description import Scene
 from eyesim.session import Pending, Request, Session
 
@@ -55,21 +57,21 @@ class Simulation:
         self._stopping = False
         self._last_snapshot = 0.0
         self._lcd_sent: dict[int, int] = {}
+        self._camera_sent: dict[int, int] = {}
         self.step_observers: list = []  # called as observer(sim) after every physics step
         self._build()
 
     # -- building ------------------------------------------------------------------------------
     def _build(self) -> None:
-        spec = new_spec(self.step_us / 1e6)
-        self.floor = floor_of(self.scene)
-        add_floor(spec, self.floor)
-        for index, wall in enumerate(self.scene.world.walls):
-            add_wall(spec, index, wall)
-        self.robots = [add_robot(spec, robot_id, self.scene.robot_types[p.type_name], p)
-                       for robot_id, p in enumerate(self.scene.robots, start=1)]
-        self.world = PhysicsWorld(spec)
+        built = build_world(self.scene, self.step_us / 1e6)
+        self.world, self.floor, self.water = built.world, built.floor, built.water
+        self.robots, self.objects, self.floating = built.robots, built.objects, built.floating
+        # Only components that do something around a step are called every step (100 robots
+        # have hundreds of components; most only answer queries).
+        components = [c for robot in self.robots for c in robot.components]
+        self._before_step = [c.before_step for c in components if type(c).before_step is not Component.before_step]
+        self._after_step = [c.after_step for c in components if type(c).after_step is not Component.after_step]
         for robot in self.robots:
-            robot.bind(self.world)
             for component in robot.components:
                 component.reset()
 
@@ -87,6 +89,9 @@ class Simulation:
 
     def robot_by_id(self, robot_id: int):
         return self.robots[robot_id - 1] if 1 <= robot_id <= len(self.robots) else None
+
+    def object_by_id(self, object_id: int):
+        return self.objects[object_id - 1] if 1 <= object_id <= len(self.objects) else None
 
     # -- entry points for other threads ---------------------------------------------------------
     def submit(self, request: Request) -> None:
@@ -136,21 +141,26 @@ class Simulation:
         if self.clock.paused:
             self._handle_inbox(block=IDLE_WAIT)
             return
+        if self.clock.as_fast_as_possible:  # one step per round, with the queue looked at in between
+            self._handle_inbox(block=None)
+            self.step()
+            return
         wait = self.clock.seconds_until(self.time_us + self.step_us)
-        if wait > 0 and not self.clock.as_fast_as_possible:
+        if wait > 0:
             self._handle_inbox(block=min(wait, SNAPSHOT_PERIOD))
             return
         self._handle_inbox(block=None)
-        steps = 1 if self.clock.as_fast_as_possible else MAX_CATCH_UP_STEPS
-        for _ in range(steps):
+        for _ in range(MAX_CATCH_UP_STEPS):
             self.step()
-            if self.clock.as_fast_as_possible or self.clock.seconds_until(self.time_us + self.step_us) > 0:
+            if self.clock.seconds_until(self.time_us + self.step_us) > 0:
                 break
-        if not self.clock.as_fast_as_possible and self.clock.seconds_until(self.time_us) < -0.25:
+        if self.clock.seconds_until(self.time_us) < -0.25:
             self.clock.anchor(self.time_us)  # too far behind (slow machine): don't try to catch up
 
     def _handle_inbox(self, block: float | None) -> None:
         """Handle everything queued; with `block`, first wait up to that long for something."""
+        if not block and self.inbox.empty():  # the common case at full speed: no exception raised
+            return
         try:
             item = self.inbox.get(timeout=block) if block else self.inbox.get_nowait()
         except queue.Empty:
@@ -168,6 +178,7 @@ class Simulation:
             session = payload.session
             if session.closed:
                 return
+            session.note_request(time.perf_counter())
             if self.clock.deterministic and payload.op.code != g.OP_HELLO and session.robot is not None:
                 session.queued.append(payload)
             else:
@@ -188,7 +199,8 @@ class Simulation:
     def _deterministic_round(self) -> None:
         self._handle_inbox(block=None)
         live = [s for s in self.sessions if s.robot is not None and not s.closed]
-        waiting_for = [s for s in live if not s.queued and not s.pending]
+        now = time.perf_counter()
+        waiting_for = [s for s in live if not s.queued and not s.blocked(now)]
         if waiting_for or self.expected_programs:
             self._handle_inbox(block=IDLE_WAIT)  # a program is computing: wait for its next call
             return
@@ -221,15 +233,15 @@ class Simulation:
             _, _, action = heapq.heappop(self._scheduled)
             action(self)
         dt = self.step_us / 1e6
-        for robot in self.robots:
-            for component in robot.components:
-                component.before_step(dt)
+        for before_step in self._before_step:
+            before_step(dt)
+        for forces in self.floating:
+            forces.apply()
         self.world.step()
         self.time_us += self.step_us
         self.steps += 1
-        for robot in self.robots:
-            for component in robot.components:
-                component.after_step(dt)
+        for after_step in self._after_step:
+            after_step(dt)
         self._wake_pending()
         for observer in self.step_observers:
             observer(self)
@@ -360,18 +372,33 @@ class Simulation:
                 lcd = robot.component(Lcd)
                 if lcd is not None and self._lcd_sent.get(robot.id) != lcd.version:
                     self._lcd_sent[robot.id] = lcd.version
-                    self.events.emit({"type": "lcd", "robot": robot.id, "pixels": lcd.pixels.copy()})
+                    self.events.emit({"type": "lcd", "robot": robot.id, "pixels": lcd.screen().copy()})
+            for event in camera_images(self.robots, self._camera_sent):  # the last image each program took
+                self.events.emit(event)
         self.events.snapshot(self.snapshot())
 
     def republish_lcd(self) -> None:
         """Send every robot's LCD again at the next publish tick (a browser has just connected)."""
         self._lcd_sent.clear()
+        self._camera_sent.clear()
 
     def snapshot(self) -> dict:
         data = self.world.data
         robots = [{"id": r.id, "pos": [float(v) for v in data.xpos[r.body]],
                    "quat": [float(v) for v in data.xquat[r.body]]} for r in self.robots]
-        return {"type": "snapshot", "time": self.time, "robots": robots, "objects": []}
+        for entry, robot in zip(robots, self.robots):
+            battery = robot.component(Battery)
+            if battery is not None:
+                entry["battery"] = round(battery.volts, 3)
+        objects = [{"id": o.id, "pos": data.xpos[o.body].tolist(), "quat": data.xquat[o.body].tolist()}
+                   for o in self.objects]
+        # Moving parts of robots (arm links, fingers, steered wheels), by their body number.
+        bodies = [{"id": body, "pos": data.xpos[body].tolist(), "quat": data.xquat[body].tolist()}
+                  for robot in self.robots for body in robot.shown_parts]
+        snapshot = {"type": "snapshot", "time": self.time, "robots": robots, "objects": objects, "bodies": bodies}
+        if self.scene.settings.vis:
+            snapshot["rays"] = sensor_rays(self.robots)
+        return snapshot
 
     def status(self) -> dict:
         speed = "max" if self.clock.speed == float("inf") else self.clock.speed

@@ -43,10 +43,29 @@ class EventBus:
         from eyesim.robot.components.lcd import Lcd
 
         lcd = robot.component(Lcd)
-        self.emit({"type": "menu", "robot": robot.id, "labels": list(lcd.menu or ["", "", "", ""])})
+        self.emit({"type": "menu", "robot": robot.id, "labels": list(lcd.menu or ["", "", "", ""]),
+                   "visible": lcd.menu_visible, "rotated": lcd.rotated})
 
     def console(self, robot_id: int, stream: str, text: str) -> None:
         self.emit({"type": "console", "robot": robot_id, "stream": stream, "text": text})
 
     def program(self, robot_id: int, event: str, name: str, exit_code: int | None) -> None:
         self.emit({"type": "program", "robot": robot_id, "event": event, "name": name, "exit_code": exit_code})
+
+    def serial(self, robot_id: int, interface: int, data: bytes) -> None:
+        # Bytes as text one to one (Latin-1), so any byte survives JSON.
+        self.emit({"type": "serial", "robot": robot_id, "interface": interface, "text": data.decode("latin-1")})
+
+    def sound(self, robot_id: int, sound: dict) -> None:
+        self.emit({"type": "audio", "robot": robot_id, **sound})
+
+    def io(self, robot) -> None:
+        from eyesim.robot.components.analog_io import AnalogInputs
+        from eyesim.robot.components.digital_io import LINES, DigitalLines
+
+        digital, analog = robot.component(DigitalLines), robot.component(AnalogInputs)
+        if digital is None or analog is None:
+            return
+        lines = [{"direction": digital.directions[k], "level": digital.read(k + 1), "driven": digital.driven[k]}
+                 for k in range(LINES)]
+        self.emit({"type": "io", "robot": robot.id, "digital": lines, "analog": list(analog.values)})

@@ -42,6 +42,6 @@ def save_lcd_images(sim, directory: str | Path) -> list[Path]:
         lcd = robot.component(Lcd)
         if lcd is not None:
             path = directory / f"robot{robot.id}-lcd.png"
-            Image.fromarray(lcd.pixels).save(path)
+            Image.fromarray(lcd.screen().copy()).save(path)  # what the LCD shows
             paths.append(path)
     return paths

@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import os
 import re
 import sys
 import webbrowser
 
+from eyesim import scripted_input
 from eyesim.clock import DETERMINISTIC, MAX_SPEED, REALTIME, Clock
 from eyesim.engine import Simulation
 from eyesim.launcher import Launcher
@@ -15,6 +17,7 @@ from eyesim.net.io_thread import IoThread
 from eyesim.net.program_server import ProgramServer
 from eyesim.protocol import generated as g
 from eyesim.robot.components.keys import KEY_NAMES
+from eyesim.robot_log import RobotLog
 
 DEFAULT_VIEWER_PORT = 8080
 
@@ -37,6 +40,10 @@ def register(subparsers) -> None:
                         help="run PATH for ROBOT (id or name); repeatable; overrides the scene's program")
     parser.add_argument("--key", action="append", default=[], metavar="ROBOT:KEY@SECONDS",
                         help="press a soft key at a simulation time, e.g. 1:KEY1@2.5; repeatable")
+    scripted_input.add_arguments(parser)  # --touch, --irtv, --serial, --digital, ...
+    parser.add_argument("--psd-noise", type=float, metavar="MM",
+                        help="standard deviation of Gaussian noise on PSD readings (default: the scene's PSDNOISE, else 0)")
+    parser.add_argument("--seed", type=int, help="seed of the simulator's random numbers (default: the scene's SEED, else 0)")
     parser.add_argument("--record", metavar="CSV", help="write every robot's true pose every 10 ms to CSV")
     parser.add_argument("--save-lcd", metavar="DIR", help="at the end, save each robot's LCD as DIR/robot<id>-lcd.png")
     parser.add_argument("--open", action="store_true", help="open the viewer in a web browser")
@@ -101,6 +108,18 @@ def load(path: str | None):
     return scene
 
 
+def with_settings(scene, args):
+    """The scene with the settings given on the command line in place of its own."""
+    changes = {}
+    if args.psd_noise is not None:
+        if not args.psd_noise >= 0:
+            raise UsageError(f"--psd-noise {args.psd_noise}: must be 0 or more (mm)")
+        changes["psd_noise"] = args.psd_noise
+    if args.seed is not None:
+        changes["seed"] = args.seed
+    return dataclasses.replace(scene, settings=dataclasses.replace(scene.settings, **changes)) if changes else scene
+
+
 def status_line(robot, run) -> str:
     x, y, _, phi = robot.pose_mm()
     line = f"robot {robot.id} {robot.name}: x={x:.0f} mm y={y:.0f} mm phi={phi:.1f} deg"
@@ -125,7 +144,7 @@ def main(args) -> int:
 def simulate(args) -> int:
     speed = parse_speed(args.speed)
     mode = args.clock or (DETERMINISTIC if args.headless else REALTIME)
-    scene = load(args.scene)
+    scene = with_settings(load(args.scene), args)
     sim = Simulation(scene, Clock(mode, speed))
     programs: dict[int, str] = {}
     for robot, placement in zip(sim.robots, scene.robots):
@@ -137,6 +156,13 @@ def simulate(args) -> int:
     for text in args.key:
         robot_id, key, seconds = parse_key(sim, text)
         sim.schedule(round(seconds * 1e6), lambda s, r=robot_id, k=key: s.press_key(r, k))
+    try:
+        scripted_input.schedule_inputs(sim, args, lambda selector: find_robot(sim, selector))
+    except ValueError as error:
+        raise UsageError(str(error)) from None
+    robot_log = RobotLog() if args.headless else None  # the viewer shows serial output and plays sounds
+    if robot_log is not None:
+        sim.events.subscribe(robot_log)
 
     io = IoThread()
     io.start()
@@ -187,6 +213,8 @@ def simulate(args) -> int:
         io.stop()
         if recorder is not None:
             recorder.close()
+        if robot_log is not None:
+            robot_log.flush()
     if args.save_lcd:
         from eyesim.record import save_lcd_images
 

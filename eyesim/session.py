@@ -2,11 +2,15 @@
 
 from __future__ import annotations
 
+import logging
 from collections import deque
 from dataclasses import dataclass, field
 from typing import Callable, Protocol
 
 from eyesim.protocol.ops import OpSpec
+
+log = logging.getLogger("eyesim")
+BUSY_WAIT_GRACE = 0.5  # s of wall time; see Session.blocked
 
 
 class Connection(Protocol):
@@ -33,7 +37,11 @@ class Pending:
 
     `poll(at_us)` returns the reply values once the condition holds at simulation time `at_us`,
     else None. `wake_us` is set for purely time-based waits (OSWait), so deterministic mode can
-    resume them between physics steps, at exactly the time asked for."""
+    resume them between physics steps, at exactly the time asked for. A `background` wait is made
+    by a helper thread of the library (the timer thread), not by the program's own logic (see
+    Session.blocked)."""
+
+    background = False
 
     def __init__(self, poll: Callable[[int], tuple | None], wake_us: int | None = None):
         self.poll = poll
@@ -55,6 +63,33 @@ class Session:
     queued: deque = field(default_factory=deque)  # requests waiting for their turn (deterministic)
     pending: list = field(default_factory=list)  # (Request, Pending) answered later
     closed: bool = False
+    helper_threads: int = 0  # library threads that make calls too: 1 once the program uses timers
+    last_request_wall: float = 0.0  # wall-clock time (perf_counter) of the latest request
+    free_running: bool = False  # time goes on while its main thread busy-waits (see blocked)
+
+    def note_request(self, now_wall: float) -> None:
+        self.last_request_wall = now_wall
+        if any(p.background for _, p in self.pending):
+            self.free_running = False  # the timer thread waits, so the main thread made this call
+
+    def blocked(self, now_wall: float) -> bool:
+        """Deterministic mode: may simulation time go on before this program's next request?
+
+        Only while every thread of the program that makes calls waits in one (OSWait, KEYGet, ...):
+        the main thread and, once it uses timers, the library's timer thread. Time stands still
+        while the main thread computes and while timer callbacks run. One exception keeps a main
+        thread that busy-waits for a timer callback from hanging: after BUSY_WAIT_GRACE seconds of
+        wall time without a request, time goes on without it (no longer bit-identical) until the
+        main thread makes a call again."""
+        if len(self.pending) > self.helper_threads:
+            return True
+        if not self.helper_threads:
+            return False
+        if not self.free_running and now_wall - self.last_request_wall > BUSY_WAIT_GRACE:
+            self.free_running = True
+            log.warning("%s makes no RoBIOS call while its timers wait; simulation time goes on without it "
+                        "(the run is no longer deterministic)", self.name)
+        return self.free_running
 
     @property
     def name(self) -> str:

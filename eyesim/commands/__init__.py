@@ -5,11 +5,21 @@ requests it cannot serve. The network layer never knows what an operation means.
 
 from __future__ import annotations
 
+from eyesim.commands import audio
+from eyesim.commands import io
+from eyesim.commands import irtv
+from eyesim.commands import cam
 from eyesim.commands import key  # one import and one GROUP_MODULES line per group module
 from eyesim.commands import lcd
+from eyesim.commands import lidar
+from eyesim.commands import motor
 from eyesim.commands import os
 from eyesim.commands import psd
+from eyesim.commands import radio
+from eyesim.commands import ser
+from eyesim.commands import servo
 from eyesim.commands import sim
+from eyesim.commands import timer
 from eyesim.commands import vw
 from eyesim.commands.errors import CommandError
 from eyesim.protocol import generated
@@ -18,8 +28,18 @@ GROUP_MODULES = (
     lcd,
     key,
     os,
+    timer,
+    ser,
+    audio,
     psd,
+    lidar,
+    servo,
+    motor,
+    cam,
+    radio,
     vw,
+    io,
+    irtv,
     sim,
 )
 

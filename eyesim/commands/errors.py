@@ -1,5 +1,7 @@
 """The error a handler raises for a request it cannot serve; it becomes an error reply."""
 
+from contextlib import contextmanager
+
 from eyesim.protocol import generated
 
 
@@ -14,3 +16,12 @@ def require(component, robot, what: str):
     if component is None:
         raise CommandError(f"robot {robot.id} ({robot.name}) has no {what}", generated.ERR_NOT_SUPPORTED)
     return component
+
+
+@contextmanager
+def checked_arguments():
+    """Turns a component's ValueError about a bad argument into an error reply with its message."""
+    try:
+        yield
+    except ValueError as error:
+        raise CommandError(str(error)) from None

@@ -1,4 +1,4 @@
-"""The MuJoCo world of one scene: model building from the scene description, stepping, poses, rays."""
+"""The MuJoCo world of one scene: the static parts (floor, walls, markers, shapes), stepping, poses, rays."""
 
 from __future__ import annotations
 
@@ -9,10 +9,13 @@ import mujoco
 import numpy as np
 
 from eyesim.physics.units import mm, quat_yaw, yaw_quat
-from eyesim.scene.description import Scene, Wall
+from eyesim.scene.description import Collider, Marker, Scene, Wall
 
 FLOOR_MARGIN = 0.5  # m of floor beyond the walls' extent when a world gives no floor size
 DEFAULT_FLOOR = 2.0  # m, floor side for a world with neither a size nor walls
+FLOOR_FRICTION = 1.0
+MARKER_RADIUS = 0.025  # m, as the viewer draws them
+MARKER_THICKNESS = 0.0005  # m: flat on the floor, only there to be seen (by cameras)
 
 
 @dataclass(frozen=True)
@@ -49,12 +52,36 @@ def new_spec(timestep: float) -> mujoco.MjSpec:
     return spec
 
 
-def add_floor(spec: mujoco.MjSpec, floor: Floor) -> None:
+def add_floor(spec: mujoco.MjSpec, floor: Floor, texture: str | None = None) -> None:
+    """The floor plane; with `texture` (an image file) stretched once over it, its top edge north."""
+    material = _floor_material(spec, texture) if texture else ""
     spec.worldbody.add_geom(
         name="floor", type=mujoco.mjtGeom.mjGEOM_PLANE,
         size=[floor.width / 2, floor.height / 2, 0.05],
         pos=[floor.width / 2, floor.height / 2, 0.0],
-        rgba=[0.82, 0.82, 0.78, 1.0], friction=[1.0, 0.005, 0.0001])
+        rgba=[1.0, 1.0, 1.0, 1.0] if material else [0.82, 0.82, 0.78, 1.0],
+        friction=[FLOOR_FRICTION, 0.005, 0.0001], material=material)
+
+
+def _floor_material(spec: mujoco.MjSpec, path: str) -> str:
+    """A material with the image as its texture; "" when the image cannot be read (the floor
+    then keeps its plain colour, as the loader already warned about a missing file)."""
+    from PIL import Image, UnidentifiedImageError
+
+    try:
+        with Image.open(path) as image:
+            pixels = np.asarray(image.convert("RGB"))
+    except (OSError, UnidentifiedImageError):
+        return ""
+    height, width = pixels.shape[:2]
+    # MuJoCo maps the first texture row to the plane's +y edge, so the image's top row lies north
+    # as it is (tests/sensors/test_camera.py looks at it through a camera).
+    texture = spec.add_texture(name="floor", type=mujoco.mjtTexture.mjTEXTURE_2D, width=width, height=height,
+                               nchannel=3)
+    texture.data = np.ascontiguousarray(pixels).tobytes()
+    material = spec.add_material(name="floor", texuniform=False, texrepeat=[1, 1])
+    material.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = "floor"
+    return "floor"
 
 
 def add_wall(spec: mujoco.MjSpec, index: int, wall: Wall) -> None:
@@ -71,12 +98,56 @@ def add_wall(spec: mujoco.MjSpec, index: int, wall: Wall) -> None:
         rgba=rgba(wall.color), friction=[0.6, 0.005, 0.0001])
 
 
-class PhysicsWorld:
-    """Compiled model + state. Bodies are addressed by name; poses in SI units."""
+def add_marker(spec: mujoco.MjSpec, index: int, marker: Marker) -> None:
+    """A coloured disc on the floor; it has no collision bits (nothing bumps into a marker)."""
+    r, g, b, a = marker.color
+    spec.worldbody.add_geom(
+        name=f"marker{index}", type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[MARKER_RADIUS, MARKER_THICKNESS / 2, 0],
+        pos=[mm(marker.x), mm(marker.y), MARKER_THICKNESS / 2], rgba=[r / 255, g / 255, b / 255, a / 255],
+        contype=0, conaffinity=0)
 
-    def __init__(self, spec: mujoco.MjSpec):
+
+def collider_volume(collider: Collider) -> float:
+    """Volume in m^3 of a collider (sizes in mm)."""
+    size = [mm(v) for v in collider.size]
+    if collider.kind == "box":
+        return size[0] * size[1] * size[2]
+    if collider.kind == "sphere":
+        return 4 / 3 * math.pi * size[0] ** 3
+    radius, length = size[0], size[1]
+    if collider.kind == "capsule":  # length includes both caps
+        return math.pi * radius ** 2 * max(length - 2 * radius, 0.0) + 4 / 3 * math.pi * radius ** 3
+    return math.pi * radius ** 2 * length
+
+
+AXIS_QUATS = {"z": [1.0, 0.0, 0.0, 0.0],
+              "x": [math.cos(math.pi / 4), 0.0, math.sin(math.pi / 4), 0.0],  # turns +z onto +x
+              "y": [math.cos(math.pi / 4), -math.sin(math.pi / 4), 0.0, 0.0]}  # turns +z onto +y
+
+
+def add_collider(body: mujoco.MjsBody, name: str, collider: Collider, **attributes) -> mujoco.MjsGeom:
+    """A geom of the collider's shape, size and place (mm in the body's frame)."""
+    size = [mm(v) for v in collider.size]
+    if collider.kind == "box":
+        geom_type, geom_size = mujoco.mjtGeom.mjGEOM_BOX, [size[0] / 2, size[1] / 2, size[2] / 2]
+    elif collider.kind == "sphere":
+        geom_type, geom_size = mujoco.mjtGeom.mjGEOM_SPHERE, [size[0], 0.0, 0.0]
+    elif collider.kind == "capsule":  # MuJoCo counts the half length without the caps
+        geom_type, geom_size = mujoco.mjtGeom.mjGEOM_CAPSULE, [size[0], max(size[1] / 2 - size[0], 1e-4), 0.0]
+    else:
+        geom_type, geom_size = mujoco.mjtGeom.mjGEOM_CYLINDER, [size[0], size[1] / 2, 0.0]
+    return body.add_geom(name=name, type=geom_type, size=geom_size, pos=[mm(v) for v in collider.center],
+                         quat=AXIS_QUATS[collider.axis], **attributes)
+
+
+class PhysicsWorld:
+    """Compiled model + state. Bodies are addressed by name; poses in SI units. `water` is the
+    scene's water volume (physics/water.py) or None."""
+
+    def __init__(self, spec: mujoco.MjSpec, water=None):
         self.model = spec.compile()
         self.data = mujoco.MjData(self.model)
+        self.water = water
         mujoco.mj_forward(self.model, self.data)
 
     def step(self) -> None:
@@ -98,6 +169,9 @@ class PhysicsWorld:
 
     def actuator_id(self, name: str) -> int:
         return mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_ACTUATOR, name)
+
+    def site_id(self, name: str) -> int:
+        return mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_SITE, name)
 
     def pose(self, body: int) -> tuple[float, float, float, float]:
         """(x, y, z, yaw) of a body in metres and radians."""

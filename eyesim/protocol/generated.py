@@ -26,11 +26,63 @@ OP_LCD_PRINTF = 257
 OP_LCD_SET_PRINTF = 258
 OP_LCD_CLEAR = 259
 OP_LCD_MENU = 260
+OP_LCD_SET_POS = 261
+OP_LCD_GET_POS = 262
+OP_LCD_SET_COLOR = 263
+OP_LCD_SET_FONT = 264
+OP_LCD_SET_FONT_SIZE = 265
+OP_LCD_SET_MODE = 266
+OP_LCD_MENU_I = 267
+OP_LCD_GET_SIZE = 268
+OP_LCD_PIXEL = 269
+OP_LCD_GET_PIXEL = 270
+OP_LCD_LINE = 271
+OP_LCD_AREA = 272
+OP_LCD_CIRCLE = 273
+OP_LCD_IMAGE = 274
+OP_LCD_REFRESH = 275
 OP_KEY_GET = 513
 OP_KEY_READ = 514
+OP_KEY_WAIT = 515
+OP_KEY_GET_XY = 516
+OP_KEY_READ_XY = 517
+OP_CAM_INIT = 769
+OP_CAM_RELEASE = 770
+OP_CAM_GET = 771
+OP_CAM_GET_GRAY = 772
 OP_OS_WAIT = 1025
 OP_OS_GET_COUNT = 1026
+OP_OS_MACHINE_NAME = 1027
+OP_OS_MACHINE_ID = 1028
+OP_OS_MACHINE_TYPE = 1029
+OP_TIMER_ATTACH = 1281
+OP_TIMER_DETACH = 1282
+OP_TIMER_WAIT = 1283
+OP_SER_INIT = 1537
+OP_SER_SEND = 1538
+OP_SER_RECEIVE_CHAR = 1539
+OP_SER_RECEIVE = 1540
+OP_SER_CHECK = 1541
+OP_SER_FLUSH = 1542
+OP_SER_CLOSE = 1543
+OP_AU_BEEP = 1793
+OP_AU_PLAY = 1794
+OP_AU_DONE = 1795
+OP_AU_MICROPHONE = 1796
 OP_PSD_GET = 2049
+OP_PSD_GET_RAW = 2050
+OP_LIDAR_SET = 2305
+OP_LIDAR_GET = 2306
+OP_SERVO_SET = 2561
+OP_SERVO_SET_RAW = 2562
+OP_SERVO_RANGE = 2563
+OP_MOTOR_DRIVE = 2817
+OP_MOTOR_DRIVE_RAW = 2818
+OP_MOTOR_PID = 2819
+OP_MOTOR_PID_OFF = 2820
+OP_MOTOR_SPEED = 2821
+OP_ENCODER_READ = 2822
+OP_ENCODER_RESET = 2823
 OP_VW_SET_SPEED = 3073
 OP_VW_GET_SPEED = 3074
 OP_VW_SET_POSITION = 3075
@@ -39,8 +91,35 @@ OP_VW_STRAIGHT = 3077
 OP_VW_TURN = 3078
 OP_VW_DONE = 3079
 OP_VW_WAIT = 3080
+OP_VW_CURVE = 3081
+OP_VW_DRIVE = 3082
+OP_VW_REMAIN = 3083
+OP_VW_STALLED = 3084
+OP_DIGITAL_SETUP = 3329
+OP_DIGITAL_READ = 3330
+OP_DIGITAL_READ_ALL = 3331
+OP_DIGITAL_WRITE = 3332
+OP_ANALOG_READ = 3333
+OP_ANALOG_VOLTAGE = 3334
+OP_ANALOG_RECORD = 3335
+OP_ANALOG_TRANSFER = 3336
+OP_IRTV_GET = 3585
+OP_IRTV_READ = 3586
+OP_IRTV_FLUSH = 3587
+OP_IRTV_GET_STATUS = 3588
+OP_RADIO_INIT = 3841
+OP_RADIO_GET_ID = 3842
+OP_RADIO_SEND = 3843
+OP_RADIO_RECEIVE = 3844
+OP_RADIO_CHECK = 3845
+OP_RADIO_STATUS = 3846
+OP_RADIO_RELEASE = 3847
 OP_SIM_GET_ROBOT = 4097
 OP_SIM_SET_ROBOT = 4098
+OP_SIM_GET_OBJECT = 4099
+OP_SIM_SET_OBJECT = 4100
+OP_SIM_GET_ROBOT_COUNT = 4101
+OP_SIM_GET_OBJECT_COUNT = 4102
 
 OPS = {
     1: OpSpec('HELLO', 1, 'session', 0, False, (('version', 'u32'), ('robot', 'str'), ('program', 'str'), ('pid', 'u32')), (('version', 'u32'), ('robot_id', 'i32'), ('robot_name', 'str'))),
@@ -48,11 +127,63 @@ OPS = {
     258: OpSpec('LCD_SET_PRINTF', 258, 'lcd', 100, False, (('row', 'i32'), ('column', 'i32'), ('text', 'str')), (('result', 'i32'),)),
     259: OpSpec('LCD_CLEAR', 259, 'lcd', 100, False, (), (('result', 'i32'),)),
     260: OpSpec('LCD_MENU', 260, 'lcd', 100, False, (('key1', 'str'), ('key2', 'str'), ('key3', 'str'), ('key4', 'str')), (('result', 'i32'),)),
+    261: OpSpec('LCD_SET_POS', 261, 'lcd', 100, False, (('row', 'i32'), ('column', 'i32')), (('result', 'i32'),)),
+    262: OpSpec('LCD_GET_POS', 262, 'lcd', 100, False, (), (('result', 'i32'), ('row', 'i32'), ('column', 'i32'))),
+    263: OpSpec('LCD_SET_COLOR', 263, 'lcd', 100, False, (('fg', 'i32'), ('bg', 'i32')), (('result', 'i32'),)),
+    264: OpSpec('LCD_SET_FONT', 264, 'lcd', 100, False, (('font', 'i32'), ('variation', 'i32')), (('result', 'i32'),)),
+    265: OpSpec('LCD_SET_FONT_SIZE', 265, 'lcd', 100, False, (('size', 'i32'),), (('result', 'i32'),)),
+    266: OpSpec('LCD_SET_MODE', 266, 'lcd', 100, False, (('mode', 'i32'),), (('result', 'i32'),)),
+    267: OpSpec('LCD_MENU_I', 267, 'lcd', 100, False, (('pos', 'i32'), ('label', 'str'), ('fg', 'i32'), ('bg', 'i32')), (('result', 'i32'),)),
+    268: OpSpec('LCD_GET_SIZE', 268, 'lcd', 100, False, (), (('result', 'i32'), ('width', 'i32'), ('height', 'i32'))),
+    269: OpSpec('LCD_PIXEL', 269, 'lcd', 100, False, (('x', 'i32'), ('y', 'i32'), ('color', 'i32')), (('result', 'i32'),)),
+    270: OpSpec('LCD_GET_PIXEL', 270, 'lcd', 100, False, (('x', 'i32'), ('y', 'i32')), (('color', 'i32'),)),
+    271: OpSpec('LCD_LINE', 271, 'lcd', 100, False, (('x1', 'i32'), ('y1', 'i32'), ('x2', 'i32'), ('y2', 'i32'), ('color', 'i32')), (('result', 'i32'),)),
+    272: OpSpec('LCD_AREA', 272, 'lcd', 100, False, (('x1', 'i32'), ('y1', 'i32'), ('x2', 'i32'), ('y2', 'i32'), ('color', 'i32'), ('fill', 'i32')), (('result', 'i32'),)),
+    273: OpSpec('LCD_CIRCLE', 273, 'lcd', 100, False, (('x', 'i32'), ('y', 'i32'), ('radius', 'i32'), ('color', 'i32'), ('fill', 'i32')), (('result', 'i32'),)),
+    274: OpSpec('LCD_IMAGE', 274, 'lcd', 500, False, (('x', 'i32'), ('y', 'i32'), ('width', 'i32'), ('height', 'i32'), ('display_width', 'i32'), ('display_height', 'i32'), ('format', 'i32'), ('pixels', 'bytes')), (('result', 'i32'),)),
+    275: OpSpec('LCD_REFRESH', 275, 'lcd', 100, False, (), (('result', 'i32'),)),
     513: OpSpec('KEY_GET', 513, 'key', 100, True, (), (('key', 'i32'),)),
     514: OpSpec('KEY_READ', 514, 'key', 100, False, (), (('key', 'i32'),)),
+    515: OpSpec('KEY_WAIT', 515, 'key', 100, True, (('mask', 'i32'),), (('key', 'i32'),)),
+    516: OpSpec('KEY_GET_XY', 516, 'key', 100, True, (), (('result', 'i32'), ('x', 'i32'), ('y', 'i32'))),
+    517: OpSpec('KEY_READ_XY', 517, 'key', 100, False, (), (('result', 'i32'), ('x', 'i32'), ('y', 'i32'))),
+    769: OpSpec('CAM_INIT', 769, 'cam', 100, False, (('resolution', 'i32'),), (('result', 'i32'), ('width', 'i32'), ('height', 'i32'))),
+    770: OpSpec('CAM_RELEASE', 770, 'cam', 100, False, (), (('result', 'i32'),)),
+    771: OpSpec('CAM_GET', 771, 'cam', 10000, False, (), (('result', 'i32'), ('width', 'i32'), ('height', 'i32'), ('pixels', 'bytes'))),
+    772: OpSpec('CAM_GET_GRAY', 772, 'cam', 10000, False, (), (('result', 'i32'), ('width', 'i32'), ('height', 'i32'), ('pixels', 'bytes'))),
     1025: OpSpec('OS_WAIT', 1025, 'os', 0, True, (('ms', 'i32'),), (('result', 'i32'),)),
     1026: OpSpec('OS_GET_COUNT', 1026, 'os', 100, False, (), (('ms', 'i32'),)),
+    1027: OpSpec('OS_MACHINE_NAME', 1027, 'os', 100, False, (), (('name', 'str'),)),
+    1028: OpSpec('OS_MACHINE_ID', 1028, 'os', 100, False, (), (('id', 'i32'),)),
+    1029: OpSpec('OS_MACHINE_TYPE', 1029, 'os', 100, False, (), (('type', 'i32'),)),
+    1281: OpSpec('TIMER_ATTACH', 1281, 'timer', 100, False, (('period_ms', 'i32'),), (('handle', 'i32'),)),
+    1282: OpSpec('TIMER_DETACH', 1282, 'timer', 100, False, (('handle', 'i32'),), (('result', 'i32'),)),
+    1283: OpSpec('TIMER_WAIT', 1283, 'timer', 0, True, (), (('handles', 'i32s'),)),
+    1537: OpSpec('SER_INIT', 1537, 'ser', 100, False, (('interface', 'i32'), ('baud', 'i32'), ('handshake', 'i32')), (('result', 'i32'),)),
+    1538: OpSpec('SER_SEND', 1538, 'ser', 100, False, (('interface', 'i32'), ('data', 'bytes')), (('result', 'i32'),)),
+    1539: OpSpec('SER_RECEIVE_CHAR', 1539, 'ser', 100, True, (('interface', 'i32'),), (('byte', 'i32'),)),
+    1540: OpSpec('SER_RECEIVE', 1540, 'ser', 100, False, (('interface', 'i32'), ('size', 'i32')), (('data', 'bytes'),)),
+    1541: OpSpec('SER_CHECK', 1541, 'ser', 100, False, (('interface', 'i32'),), (('waiting', 'i32'),)),
+    1542: OpSpec('SER_FLUSH', 1542, 'ser', 100, False, (('interface', 'i32'),), (('result', 'i32'),)),
+    1543: OpSpec('SER_CLOSE', 1543, 'ser', 100, False, (('interface', 'i32'),), (('result', 'i32'),)),
+    1793: OpSpec('AU_BEEP', 1793, 'audio', 100, False, (), (('result', 'i32'),)),
+    1794: OpSpec('AU_PLAY', 1794, 'audio', 100, False, (('name', 'str'), ('sound', 'bytes')), (('result', 'i32'),)),
+    1795: OpSpec('AU_DONE', 1795, 'audio', 100, False, (), (('done', 'i32'),)),
+    1796: OpSpec('AU_MICROPHONE', 1796, 'audio', 100, False, (), (('sample', 'i32'),)),
     2049: OpSpec('PSD_GET', 2049, 'psd', 100, False, (('psd', 'i32'),), (('mm', 'i32'),)),
+    2050: OpSpec('PSD_GET_RAW', 2050, 'psd', 100, False, (('psd', 'i32'),), (('raw', 'i32'),)),
+    2305: OpSpec('LIDAR_SET', 2305, 'lidar', 100, False, (('range', 'i32'), ('tilt', 'i32'), ('points', 'i32')), (('result', 'i32'),)),
+    2306: OpSpec('LIDAR_GET', 2306, 'lidar', 100, False, (), (('result', 'i32'), ('distances', 'i32s'))),
+    2561: OpSpec('SERVO_SET', 2561, 'servo', 100, False, (('servo', 'i32'), ('angle', 'i32')), (('result', 'i32'),)),
+    2562: OpSpec('SERVO_SET_RAW', 2562, 'servo', 100, False, (('servo', 'i32'), ('angle', 'i32')), (('result', 'i32'),)),
+    2563: OpSpec('SERVO_RANGE', 2563, 'servo', 100, False, (('servo', 'i32'), ('low', 'i32'), ('high', 'i32')), (('result', 'i32'),)),
+    2817: OpSpec('MOTOR_DRIVE', 2817, 'motor', 100, False, (('motor', 'i32'), ('speed', 'i32')), (('result', 'i32'),)),
+    2818: OpSpec('MOTOR_DRIVE_RAW', 2818, 'motor', 100, False, (('motor', 'i32'), ('speed', 'i32')), (('result', 'i32'),)),
+    2819: OpSpec('MOTOR_PID', 2819, 'motor', 100, False, (('motor', 'i32'), ('p', 'i32'), ('i', 'i32'), ('d', 'i32')), (('result', 'i32'),)),
+    2820: OpSpec('MOTOR_PID_OFF', 2820, 'motor', 100, False, (('motor', 'i32'),), (('result', 'i32'),)),
+    2821: OpSpec('MOTOR_SPEED', 2821, 'motor', 100, False, (('motor', 'i32'), ('ticks', 'i32')), (('result', 'i32'),)),
+    2822: OpSpec('ENCODER_READ', 2822, 'motor', 100, False, (('quad', 'i32'),), (('ticks', 'i32'),)),
+    2823: OpSpec('ENCODER_RESET', 2823, 'motor', 100, False, (('quad', 'i32'),), (('result', 'i32'),)),
     3073: OpSpec('VW_SET_SPEED', 3073, 'vw', 100, False, (('lin_speed', 'i32'), ('ang_speed', 'i32')), (('result', 'i32'),)),
     3074: OpSpec('VW_GET_SPEED', 3074, 'vw', 100, False, (), (('result', 'i32'), ('lin_speed', 'i32'), ('ang_speed', 'i32'))),
     3075: OpSpec('VW_SET_POSITION', 3075, 'vw', 100, False, (('x', 'i32'), ('y', 'i32'), ('phi', 'i32')), (('result', 'i32'),)),
@@ -61,7 +192,34 @@ OPS = {
     3078: OpSpec('VW_TURN', 3078, 'vw', 100, False, (('angle', 'i32'), ('ang_speed', 'i32')), (('result', 'i32'),)),
     3079: OpSpec('VW_DONE', 3079, 'vw', 100, False, (), (('done', 'i32'),)),
     3080: OpSpec('VW_WAIT', 3080, 'vw', 100, True, (), (('result', 'i32'),)),
+    3081: OpSpec('VW_CURVE', 3081, 'vw', 100, False, (('dist', 'i32'), ('angle', 'i32'), ('lin_speed', 'i32')), (('result', 'i32'),)),
+    3082: OpSpec('VW_DRIVE', 3082, 'vw', 100, False, (('dx', 'i32'), ('dy', 'i32'), ('lin_speed', 'i32')), (('result', 'i32'),)),
+    3083: OpSpec('VW_REMAIN', 3083, 'vw', 100, False, (), (('mm', 'i32'),)),
+    3084: OpSpec('VW_STALLED', 3084, 'vw', 100, False, (), (('stalled', 'i32'),)),
+    3329: OpSpec('DIGITAL_SETUP', 3329, 'io', 100, False, (('line', 'i32'), ('direction', 'i32')), (('result', 'i32'),)),
+    3330: OpSpec('DIGITAL_READ', 3330, 'io', 100, False, (('line', 'i32'),), (('level', 'i32'),)),
+    3331: OpSpec('DIGITAL_READ_ALL', 3331, 'io', 100, False, (), (('levels', 'i32'),)),
+    3332: OpSpec('DIGITAL_WRITE', 3332, 'io', 100, False, (('line', 'i32'), ('level', 'i32')), (('result', 'i32'),)),
+    3333: OpSpec('ANALOG_READ', 3333, 'io', 100, False, (('channel', 'i32'),), (('value', 'i32'),)),
+    3334: OpSpec('ANALOG_VOLTAGE', 3334, 'io', 100, False, (), (('centivolts', 'i32'),)),
+    3335: OpSpec('ANALOG_RECORD', 3335, 'io', 100, False, (('channel', 'i32'), ('iterations', 'i32')), (('result', 'i32'),)),
+    3336: OpSpec('ANALOG_TRANSFER', 3336, 'io', 100, True, (), (('samples', 'bytes'),)),
+    3585: OpSpec('IRTV_GET', 3585, 'irtv', 100, True, (), (('code', 'i32'),)),
+    3586: OpSpec('IRTV_READ', 3586, 'irtv', 100, False, (), (('code', 'i32'),)),
+    3587: OpSpec('IRTV_FLUSH', 3587, 'irtv', 100, False, (), (('result', 'i32'),)),
+    3588: OpSpec('IRTV_GET_STATUS', 3588, 'irtv', 100, False, (), (('status', 'i32'),)),
+    3841: OpSpec('RADIO_INIT', 3841, 'radio', 100, False, (), (('result', 'i32'),)),
+    3842: OpSpec('RADIO_GET_ID', 3842, 'radio', 100, False, (), (('id', 'i32'),)),
+    3843: OpSpec('RADIO_SEND', 3843, 'radio', 100, False, (('id', 'i32'), ('message', 'bytes')), (('result', 'i32'),)),
+    3844: OpSpec('RADIO_RECEIVE', 3844, 'radio', 100, True, (), (('sender', 'i32'), ('message', 'bytes'))),
+    3845: OpSpec('RADIO_CHECK', 3845, 'radio', 100, False, (), (('waiting', 'i32'),)),
+    3846: OpSpec('RADIO_STATUS', 3846, 'radio', 100, False, (), (('ids', 'i32s'),)),
+    3847: OpSpec('RADIO_RELEASE', 3847, 'radio', 100, False, (), (('result', 'i32'),)),
     4097: OpSpec('SIM_GET_ROBOT', 4097, 'sim', 100, False, (('id', 'i32'),), (('result', 'i32'), ('x', 'i32'), ('y', 'i32'), ('z', 'i32'), ('phi', 'i32'))),
     4098: OpSpec('SIM_SET_ROBOT', 4098, 'sim', 100, False, (('id', 'i32'), ('x', 'i32'), ('y', 'i32'), ('z', 'i32'), ('phi', 'i32')), (('result', 'i32'),)),
+    4099: OpSpec('SIM_GET_OBJECT', 4099, 'sim', 100, False, (('id', 'i32'),), (('result', 'i32'), ('x', 'i32'), ('y', 'i32'), ('z', 'i32'), ('phi', 'i32'))),
+    4100: OpSpec('SIM_SET_OBJECT', 4100, 'sim', 100, False, (('id', 'i32'), ('x', 'i32'), ('y', 'i32'), ('z', 'i32'), ('phi', 'i32')), (('result', 'i32'),)),
+    4101: OpSpec('SIM_GET_ROBOT_COUNT', 4101, 'sim', 100, False, (), (('count', 'i32'),)),
+    4102: OpSpec('SIM_GET_OBJECT_COUNT', 4102, 'sim', 100, False, (), (('count', 'i32'),)),
 }
 OPS_BY_NAME = {op.name: op for op in OPS.values()}

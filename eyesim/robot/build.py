@@ -7,14 +7,14 @@ from dataclasses import dataclass, field
 import mujoco
 
 from eyesim.physics.units import mm, rad, yaw_quat
-from eyesim.physics.world import rgba
+from eyesim.physics.world import add_collider, rgba
 from eyesim.robot.component import Component
 from eyesim.robot.robot import Robot
-from eyesim.scene.description import RobotPlacement, RobotType
+from eyesim.scene.description import Collider, RobotPlacement, RobotType, Settings
 
-CHASSIS_CLEARANCE = 0.012  # m between the floor and the chassis bottom
-CASTER_RADIUS = 0.012  # m
-SKID_LIFT = 0.002  # m the front skid sits above the floor: it only touches when the robot tips
+CHASSIS_CLEARANCE = 0.012  # m between the floor and the chassis bottom of a wheeled robot
+MIN_HULL_MASS_FRACTION = 0.2  # the parts may not weigh more than 80 % of the robot
+HULL_FRICTION = [0.4, 0.005, 0.0001]
 
 
 @dataclass
@@ -22,11 +22,13 @@ class BuildContext:
     """What a component factory gets while the model is being built."""
 
     spec: mujoco.MjSpec
-    body: mujoco.MjsBody  # the robot's chassis body (on a free joint)
+    body: mujoco.MjsBody  # the robot's chassis body (on a free joint unless the robot is mounted)
     prefix: str  # unique name prefix for this robot's bodies, joints, actuators
     robot_type: RobotType
     robot: Robot
     components: list[Component] = field(default_factory=list)  # created so far
+    parts_mass: float = 0.0  # kg of the bodies components added; the hull gets the rest
+    settings: Settings = Settings()  # the scene's settings (sensor noise, seed)
 
     def find(self, cls):
         for component in self.components:
@@ -34,36 +36,79 @@ class BuildContext:
                 return component
         return None
 
+    def add_part(self, parent: mujoco.MjsBody, name: str, mass: float, shown: bool = False,
+                 **attributes) -> mujoco.MjsBody:
+        """A body of the robot below `parent` (wheels, links, fingers): its mass counts towards the
+        robot's mass, and it never collides with the robot's other parts. A `shown` part is drawn
+        by the viewer from its geoms and moves there on its own (docs/viewer-channel.md)."""
+        body = parent.add_body(name=name, **attributes)
+        self.parts_mass += mass
+        self.robot.part_names.append(name)
+        if shown:
+            self.robot.shown_part_names.append(name)
+        return body
 
-def add_chassis(spec: mujoco.MjSpec, name: str, robot_type: RobotType, placement: RobotPlacement):
-    """The robot's free body with a box hull, a rear caster and a front skid."""
+
+def mounted(robot_type: RobotType) -> bool:
+    """A manipulator on a fixed base is bolted to the floor; every other robot moves freely."""
+    return robot_type.drive == "arm"
+
+
+def hull_colliders(robot_type: RobotType) -> tuple[Collider, ...]:
+    """The chassis shape: the type's colliders, else a box of its size (above the wheels' clearance
+    when it has wheels)."""
+    if robot_type.colliders:
+        return robot_type.colliders
+    clearance = CHASSIS_CLEARANCE * 1000 if robot_type.wheels is not None else 0.0
+    height = max(robot_type.height - clearance, 10.0)
+    # The hull sits slightly behind the axle so a two-wheeler leans on its rear caster, not its nose.
+    return (Collider("box", (robot_type.length, robot_type.width, height), (-10.0, 0.0, clearance + height / 2)),)
+
+
+def add_chassis(spec: mujoco.MjSpec, name: str, robot_type: RobotType, placement: RobotPlacement) -> mujoco.MjsBody:
     pose = placement.pose
-    body = spec.worldbody.add_body(name=name, pos=[mm(pose.x), mm(pose.y), 0.0],
-                                   quat=yaw_quat(rad(pose.phi)))
-    body.add_freejoint(name=f"{name}/free")
-    length, width, height = mm(robot_type.length), mm(robot_type.width), mm(robot_type.height)
-    hull_height = max(height - CHASSIS_CLEARANCE, 0.01)
-    # The hull sits slightly behind the axle so the robot leans on its rear caster, not its nose.
-    body.add_geom(name=f"{name}/hull", type=mujoco.mjtGeom.mjGEOM_BOX,
-                  size=[length / 2, width / 2, hull_height / 2],
-                  pos=[-0.01, 0.0, CHASSIS_CLEARANCE + hull_height / 2],
-                  mass=robot_type.mass * 0.9, rgba=rgba(robot_type.color), friction=[0.4, 0.005, 0.0001])
-    caster_x = length / 2 - CASTER_RADIUS - 0.008
-    for part, x, lift in (("caster", -caster_x, 0.0), ("skid", caster_x, SKID_LIFT)):
-        body.add_geom(name=f"{name}/{part}", type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[CASTER_RADIUS, 0, 0],
-                      pos=[x, 0.0, CASTER_RADIUS + lift], mass=0.005, condim=1, friction=[0.0, 0.0, 0.0],
-                      rgba=[0.2, 0.2, 0.2, 1.0])
+    body = spec.worldbody.add_body(name=name, pos=[mm(pose.x), mm(pose.y), 0.0], quat=yaw_quat(rad(pose.phi)))
+    if not mounted(robot_type):
+        body.add_freejoint(name=f"{name}/free")
+    for index, collider in enumerate(hull_colliders(robot_type)):
+        add_collider(body, f"{name}/hull{index}", collider, rgba=rgba(robot_type.color), friction=HULL_FRICTION)
     return body
 
 
-def add_robot(spec: mujoco.MjSpec, robot_id: int, robot_type: RobotType, placement: RobotPlacement) -> Robot:
+def _finish_mass(spec: mujoco.MjSpec, body: mujoco.MjsBody, robot_type: RobotType, parts_mass: float) -> None:
+    """Give the hull the mass the parts leave over, so the robot weighs what its type says; a
+    declared centre of mass is where the hull's mass sits."""
+    hull_mass = max(robot_type.mass - parts_mass, robot_type.mass * MIN_HULL_MASS_FRACTION)
+    geoms = [g for g in body.geoms if g.name.startswith(f"{body.name}/hull")]
+    if robot_type.center_of_mass is None:
+        for geom in geoms:
+            geom.mass = hull_mass / len(geoms)
+        return
+    for geom in body.geoms:
+        geom.mass = 0.0
+    length, width, height = mm(robot_type.length), mm(robot_type.width), mm(robot_type.height)
+    body.explicitinertial = True
+    body.mass = hull_mass
+    body.ipos = [mm(v) for v in robot_type.center_of_mass]
+    body.inertia = [hull_mass * (width ** 2 + height ** 2) / 12, hull_mass * (length ** 2 + height ** 2) / 12,
+                    hull_mass * (length ** 2 + width ** 2) / 12]
+
+
+def add_robot(spec: mujoco.MjSpec, robot_id: int, robot_type: RobotType, placement: RobotPlacement,
+              settings: Settings = Settings()) -> Robot:
     from eyesim.robot.components import FACTORIES
 
     name = f"robot{robot_id}"
-    robot = Robot(robot_id, robot_type, placement, body_name=name)
+    robot = Robot(robot_id, robot_type, placement, body_name=name, mounted=mounted(robot_type))
     body = add_chassis(spec, name, robot_type, placement)
-    context = BuildContext(spec, body, name, robot_type, robot)
+    context = BuildContext(spec, body, name, robot_type, robot, settings=settings)
     for factory in FACTORIES:
         context.components.extend(factory(context))
     robot.components = context.components
+    _finish_mass(spec, body, robot_type, context.parts_mass)
+    # A robot's parts never collide with each other (a wheel rubbing its own hull, an arm link its base).
+    bodies = [name, *robot.part_names]
+    for i, first in enumerate(bodies):
+        for second in bodies[i + 1:]:
+            spec.add_exclude(bodyname1=first, bodyname2=second)
     return robot

@@ -1,4 +1,4 @@
-"""The robot entity: identity, its chassis body and its components."""
+"""The robot entity: identity, its chassis body, its components and the actuators they own."""
 
 from __future__ import annotations
 
@@ -13,24 +13,43 @@ from eyesim.scene.description import RobotPlacement, RobotType
 C = TypeVar("C", bound=Component)
 
 
-class Robot:
-    """A robot in the simulation. `id` is its 1-based position in the scene's robot list."""
+class MountedRobotError(Exception):
+    """Raised when something tries to move a robot bolted to the floor."""
 
-    def __init__(self, robot_id: int, robot_type: RobotType, placement: RobotPlacement, body_name: str):
+
+class Robot:
+    """A robot in the simulation. `id` is its 1-based position in the scene's robot list.
+
+    `part_names` are the bodies components added below the chassis (wheels, arm links, fingers),
+    `shown_part_names` those the viewer draws on their own; `motors`, `encoders` and `servos` map
+    RoBIOS numbers to the actuators of all components."""
+
+    def __init__(self, robot_id: int, robot_type: RobotType, placement: RobotPlacement, body_name: str,
+                 mounted: bool = False):
         self.id = robot_id
         self.type = robot_type
         self.name = robot_type.name
         self.placement = placement
         self.body_name = body_name
+        self.mounted = mounted
         self.components: list[Component] = []
+        self.part_names: list[str] = []
+        self.shown_part_names: list[str] = []
+        self.motors: dict = {}
+        self.encoders: dict = {}
+        self.servos: dict = {}
         self.world: PhysicsWorld | None = None
         self.body = -1
 
     def bind(self, world: PhysicsWorld) -> None:
         self.world = world
         self.body = world.body_id(self.body_name)
+        self.shown_parts = [world.body_id(name) for name in self.shown_part_names]
         for component in self.components:
             component.bind(world)
+            for numbered, table in ((self.motors, "motors"), (self.encoders, "encoders"), (self.servos, "servos")):
+                for number, actuator in getattr(component, table, {}).items():
+                    numbered.setdefault(number, actuator)
 
     def component(self, cls: type[C]) -> C | None:
         """The robot's first component of a class, or None when it has none."""
@@ -53,4 +72,6 @@ class Robot:
 
     def set_pose(self, x: float, y: float, z: float, yaw: float) -> None:
         """Teleport the robot (like picking it up): its encoders and odometry don't notice."""
+        if self.mounted:
+            raise MountedRobotError(f"robot {self.id} ({self.name}) is mounted on the floor and cannot be moved")
         self.world.set_free_pose(self.body, x, y, z, yaw)

@@ -339,6 +339,8 @@ class RobotPlacement:
 class Settings:
     vis: bool = False  # draw sensor rays
     trace: bool = False  # draw robot paths
+    psd_noise: float = 0.0  # standard deviation (mm) of the Gaussian noise on PSD readings; 0 = exact
+    seed: int = 0  # seeds the simulator's random numbers (PSD noise), so runs repeat exactly
 
 
 @dataclass(frozen=True)

@@ -78,7 +78,8 @@ def _scene_json(doc: SimDocument) -> dict:
     if doc.world is not None:
         data["world"] = doc.world.path
     if doc.settings != Settings():
-        data["settings"] = {"vis": doc.settings.vis, "trace": doc.settings.trace}
+        data["settings"] = {name: value for name, value in vars(doc.settings).items()
+                            if value != getattr(Settings(), name)}
     if doc.robot_files:
         data["robot_files"] = [r.path for r in doc.robot_files]
     if doc.object_files:

@@ -14,6 +14,8 @@ from eyesim.scene.diagnostics import Diagnostics, quoted
 from eyesim.scene.lexer import Line, format_number, integer, number, quote_token, split_lines
 
 SETTING_FLAGS = ("vis", "trace")
+SETTING_VALUES = {"psdnoise": ("psd_noise", "a standard deviation in mm >= 0"),  # NAME=value settings
+                  "seed": ("seed", "a whole number")}
 KEYWORDS = ("world", "maze", "settings", "robi", "robot", "obj", "object", "marker")
 
 
@@ -72,6 +74,7 @@ class _SceneReader:
         self.diagnostics = diagnostics
         self.world: Reference | None = None
         self.flags: set[str] = set()
+        self.values: dict[str, float | int] = {}
         self.robot_files: list[Reference] = []
         self.object_files: list[Reference] = []
         self.placements: list[Placement] = []
@@ -84,7 +87,7 @@ class _SceneReader:
         self.diagnostics.error(self.at(line, index), message, code)
 
     def document(self) -> SimDocument:
-        return SimDocument(self.source, self.world, Settings("vis" in self.flags, "trace" in self.flags),
+        return SimDocument(self.source, self.world, Settings("vis" in self.flags, "trace" in self.flags, **self.values),
                            tuple(self.robot_files), tuple(self.object_files), tuple(self.placements),
                            tuple(self.markers))
 
@@ -124,12 +127,25 @@ class _SceneReader:
 
     def kw_settings(self, line: Line) -> None:
         for i, token in enumerate(line.args, start=1):
-            flag = token.text.lower()
-            if flag in SETTING_FLAGS:
+            flag, _, value = token.text.lower().partition("=")
+            if flag in SETTING_FLAGS and not value:
                 self.flags.add(flag)
+            elif flag in SETTING_VALUES:
+                self.setting_value(line, i, flag, value)
             else:
                 self.diagnostics.warning(self.at(line, i), f"unknown setting {quoted(token.text)} ignored: "
-                                         "expected VIS or TRACE", "unknown-setting")
+                                         "expected VIS, TRACE, PSDNOISE=<mm> or SEED=<n>", "unknown-setting")
+
+    def setting_value(self, line: Line, index: int, flag: str, text: str) -> None:
+        field, expected = SETTING_VALUES[flag]
+        value = integer(text) if field == "seed" else number(text)
+        if not text:
+            self.error(line, f"settings: {flag.upper()} needs a value: {flag.upper()}=<{expected}>", index, "bad-value")
+            return
+        if value is None or (field == "psd_noise" and value < 0):
+            self.error(line, f"settings: {flag.upper()} expects {expected}, found {quoted(text)}", index, "bad-value")
+            return
+        self.values[field] = value
 
     def kw_robi(self, line: Line) -> None:
         args = line.args
@@ -224,6 +240,11 @@ def write_sim(document: SimDocument) -> str:
     if document.world is not None:
         out.append(f"world {quote_token(document.world.path)}")
     flags = [name.upper() for name, on in (("vis", document.settings.vis), ("trace", document.settings.trace)) if on]
+    settings = document.settings
+    if settings.psd_noise:
+        flags.append(f"PSDNOISE={f(settings.psd_noise)}")
+    if settings.seed:
+        flags.append(f"SEED={settings.seed}")
     if flags:
         out.append("settings " + " ".join(flags))
     out += [f"robot {quote_token(r.path)}" for r in document.robot_files]

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from eyesim.physics.objects import shape_of
 from eyesim.physics.units import mm
 
 
@@ -14,9 +15,39 @@ def scene_message(sim, texture_url: str | None) -> dict:
         t = robot.type
         robots.append({"id": robot.id, "name": robot.name, "type": t.name,
                        "size": [mm(t.length), mm(t.width), mm(t.height)], "color": list(t.color),
-                       "wheel_diameter": mm(t.wheels.diameter) if t.wheels else 0.0,
-                       "track": mm(t.wheels.track) if t.wheels else 0.0})
+                       # Other drives' wheels come as robot bodies of their own (below).
+                       "wheel_diameter": mm(t.wheels.diameter) if t.wheels and t.drive == "differential" else 0.0,
+                       "track": mm(t.wheels.track) if t.wheels and t.drive == "differential" else 0.0})
     markers = [{"x": mm(m.x), "y": mm(m.y), "color": list(m.color)} for m in scene.markers]
+    model = sim.world.model
+    objects = []
+    for thing in sim.objects:
+        parts = _shapes(model, thing.geoms)
+        if parts:  # `shape` and `size` say what it mainly is; `parts` draw it
+            objects.append({"id": thing.id, "type": thing.type.name, "color": list(thing.type.color),
+                            "shape": parts[0]["shape"], "size": parts[0]["size"], "parts": parts})
+    bodies = [{"id": body, "robot": robot.id, "parts": _shapes(model, _geoms(model, body), colored=True)}
+              for robot in sim.robots for body in robot.shown_parts]
+    water = {"surface": sim.water.surface} if sim.water is not None else None
     return {"type": "scene", "floor": {"width": sim.floor.width, "height": sim.floor.height, "texture": texture_url},
-            "walls": walls, "robots": robots, "objects": [], "markers": markers,
+            "walls": walls, "robots": robots, "objects": objects, "markers": markers, "bodies": bodies,
+            "water": water,
             "settings": {"vis": scene.settings.vis, "trace": scene.settings.trace}}
+
+
+def _geoms(model, body: int) -> range:
+    start = model.body_geomadr[body]
+    return range(start, start + model.body_geomnum[body])
+
+
+def _shapes(model, geoms, colored: bool = False) -> list[dict]:
+    """The visible geoms as viewer shapes in their body's frame (invisible ones, alpha 0, skipped)."""
+    shapes = []
+    for geom in geoms:
+        rgba = model.geom_rgba[geom]
+        shape = shape_of(model, geom) if rgba[3] > 0 else None
+        if shape is not None:
+            if colored:
+                shape["color"] = [round(float(c) * 255) for c in rgba[:3]]
+            shapes.append(shape)
+    return shapes

@@ -23,10 +23,12 @@ from PIL import Image
 
 from eyesim.paths import STATIC_DIR
 from eyesim.robot.components.keys import KEYS
+from eyesim.web import robot_io_commands
 from eyesim.web.scene_message import scene_message
 
 log = logging.getLogger("eyesim.web")
 CONSOLE_BACKLOG = 500  # console chunks per robot replayed to a browser that connects late
+CAMERA_VIEW_WIDTH = 320  # pixels: larger camera images are sent to the viewer scaled down by a whole factor
 
 
 def encode_lcd(pixels) -> str:
@@ -80,9 +82,12 @@ class ViewerHub:
         self.browsers: set[Browser] = set()
         self.encoder = ThreadPoolExecutor(max_workers=1, thread_name_prefix="eyesim-png")
         self.lcd: dict[int, asyncio.Future] = {}
+        self.cameras: dict[int, asyncio.Future] = {}  # each robot's last camera image
         self.menus: dict[int, str] = {}
         self.programs: dict[int, str] = {}
         self.console: dict[int, deque] = {}
+        self.io: dict[int, str] = {}  # each robot's latest I/O state
+        self.serial: dict[int, deque] = {}  # recent serial output per robot
         self.latest_snapshot: str | None = None
         self.latest_status: str | None = None
         self._rate = (time.perf_counter(), 0.0, 1.0)  # wall, sim time, real-time factor
@@ -108,8 +113,16 @@ class ViewerHub:
             for browser in self.browsers:
                 browser.add_event(future, coalesce_key=("lcd", robot))
             return
+        if kind == "camera":  # like the LCD: encoded off both threads, only the latest counts
+            robot, pixels = message["robot"], message["pixels"]
+            future = self.loop.run_in_executor(self.encoder, _camera_message, robot, pixels)
+            self.cameras[robot] = future
+            for browser in self.browsers:
+                browser.add_event(future, coalesce_key=("camera", robot))
+            return
         if kind == "reset":
             message = scene_message(self.sim, self._texture_url())
+            self.sim.call(_publish_io)
         text = json.dumps(message)
         if kind == "menu":
             self.menus[message["robot"]] = text
@@ -117,6 +130,13 @@ class ViewerHub:
             self.programs[message["robot"]] = text
         elif kind == "console":
             self.console.setdefault(message["robot"], deque(maxlen=CONSOLE_BACKLOG)).append(text)
+        elif kind == "serial":
+            self.serial.setdefault(message["robot"], deque(maxlen=CONSOLE_BACKLOG)).append(text)
+        elif kind == "io":  # only the latest state matters
+            self.io[message["robot"]] = text
+            for browser in self.browsers:
+                browser.add_event(text, coalesce_key=("io", message["robot"]))
+            return
         for browser in self.browsers:
             browser.add_event(text)
 
@@ -150,11 +170,18 @@ class ViewerHub:
                 browser.add_event(self.programs[robot.id])
             for chunk in self.console.get(robot.id, ()):
                 browser.add_event(chunk)
+            for chunk in self.serial.get(robot.id, ()):
+                browser.add_event(chunk)
+            if robot.id in self.io:
+                browser.add_event(self.io[robot.id], coalesce_key=("io", robot.id))
             if robot.id in self.lcd:
                 browser.add_event(self.lcd[robot.id], coalesce_key=("lcd", robot.id))
+            if robot.id in self.cameras:
+                browser.add_event(self.cameras[robot.id], coalesce_key=("camera", robot.id))
         self.browsers.add(browser)
         # A browser that connects now needs the current LCD images even if nothing changes.
         self.sim.call(lambda sim: sim.republish_lcd())
+        self.sim.call(_publish_io)  # and the I/O panels their state
 
     def detach(self, browser: Browser) -> None:
         self.browsers.discard(browser)
@@ -181,13 +208,29 @@ class ViewerHub:
             self.sim.call(lambda sim: sim.clock.set_speed(float(value), sim.time_us))
         elif kind == "reset":
             self.sim.call(lambda sim: sim.reset())
+        elif kind in robot_io_commands.COMMANDS:
+            return robot_io_commands.command(self.sim, message)
         else:
             return f"unknown message type {kind!r}"
         return None
 
 
+def _publish_io(sim) -> None:
+    for robot in sim.robots:
+        sim.events.io(robot)
+
+
 def _lcd_message(robot: int, pixels) -> str:
     return json.dumps({"type": "lcd", "robot": robot, "png": encode_lcd(pixels)})
+
+
+def _camera_message(robot: int, pixels) -> str:
+    height, width = pixels.shape[:2]
+    step = max(1, width // CAMERA_VIEW_WIDTH)  # a panel shows no more: skip the rest early
+    buffer = io.BytesIO()
+    Image.fromarray(pixels[::step, ::step]).save(buffer, format="JPEG", quality=85)
+    return json.dumps({"type": "camera", "robot": robot, "width": width, "height": height,
+                       "jpeg": base64.b64encode(buffer.getvalue()).decode("ascii")})
 
 
 class ViewerServer:

@@ -307,19 +307,25 @@ static void *read_replies(void *unused)
     }
 }
 
-static void start_reader(void)
+int es_start_library_thread(void *(*run)(void *))
 {
-    /* The reader must never run the program's signal handlers: block everything in it. */
+    /* The library's threads must never run the program's signal handlers: block everything. */
     sigset_t all, old;
     sigfillset(&all);
     pthread_sigmask(SIG_SETMASK, &all, &old);
     pthread_attr_t attr;
     pthread_attr_init(&attr);
     pthread_attr_setdetachstate(&attr, PTHREAD_CREATE_DETACHED);
-    pthread_t reader;
-    int rc = pthread_create(&reader, &attr, read_replies, NULL);
+    pthread_t thread;
+    int rc = pthread_create(&thread, &attr, run, NULL);
     pthread_attr_destroy(&attr);
     pthread_sigmask(SIG_SETMASK, &old, NULL);
+    return rc;
+}
+
+static void start_reader(void)
+{
+    int rc = es_start_library_thread(read_replies);
     if (rc)
         es_fatal(ES_EXIT_PROTOCOL, "cannot start the thread that reads replies (%s)", strerror(rc));
 }

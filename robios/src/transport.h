@@ -30,6 +30,10 @@ __attribute__((format(printf, 2, 3)))
 #endif
 _Noreturn void es_fatal(int status, const char *format, ...);
 
+/* Starts a detached library thread with every signal blocked (signals stay with the program's
+ * own threads); returns pthread_create's result. */
+int es_start_library_thread(void *(*run)(void *));
+
 static inline es_value es_int(int64_t value)
 {
     es_value v = {0};

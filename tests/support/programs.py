@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import contextlib
 import csv
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -23,9 +25,9 @@ def build(name: str, out_dir: Path, *flags: str) -> Path:
     return output
 
 
-def run_headless(*args: str, cwd: Path, timeout: float = 120) -> subprocess.CompletedProcess:
+def run_headless(*args: str, cwd: Path, timeout: float = 120, env: dict | None = None) -> subprocess.CompletedProcess:
     return subprocess.run(eyesim_command("run", "--headless", "--port", "0", *args), capture_output=True,
-                          text=True, cwd=cwd, timeout=timeout)
+                          text=True, cwd=cwd, timeout=timeout, env=env)
 
 
 def read_trajectory(path: Path) -> dict[int, list[dict]]:
@@ -35,3 +37,39 @@ def read_trajectory(path: Path) -> dict[int, list[dict]]:
         for row in csv.DictReader(file):
             robots.setdefault(int(row["robot"]), []).append({k: float(v) for k, v in row.items()})
     return robots
+
+
+def program_builder(source_dir: Path, out_dir: Path):
+    """build(name) -> <source_dir>/<name>.c compiled once with `eyesim cc -O2 -Wall -Wextra -Werror`."""
+    built: dict[str, Path] = {}
+
+    def build_once(name: str) -> Path:
+        if name not in built:
+            output = out_dir / name
+            result = subprocess.run(eyesim_command("cc", "-O2", "-Wall", "-Wextra", "-Werror",
+                                                   str(source_dir / f"{name}.c"), "-o", str(output)),
+                                    capture_output=True, text=True)
+            assert result.returncode == 0, result.stderr
+            built[name] = output
+        return built[name]
+
+    return build_once
+
+
+@contextlib.contextmanager
+def simulator_with_viewer(*args: str, cwd: Path):
+    """`eyesim run ARGS` with its viewer on a free port; yields (process, viewer URL)."""
+    process = subprocess.Popen(eyesim_command("run", "--port", "0", "--viewer-port", "0", *args),
+                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=cwd)
+    try:
+        url = None
+        for line in process.stdout:
+            match = re.search(r"viewer: (http://\S+)", line)
+            if match:
+                url = match.group(1)
+                break
+        assert url, "the simulator printed no viewer URL"
+        yield process, url
+    finally:
+        process.terminate()
+        process.wait(timeout=10)

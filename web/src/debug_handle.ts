@@ -2,7 +2,7 @@
 
 import type { ConnectionState } from "./connection";
 import type { Pose } from "./interpolation";
-import type { Quat, StatusMessage, Vec3 } from "./protocol";
+import type { IoMessage, Quat, StatusMessage, Vec3 } from "./protocol";
 import type { ProgramState } from "./robot_panel";
 import type { Viewer } from "./viewer";
 import type { WorldCounts } from "./world_view";
@@ -26,6 +26,10 @@ export interface EyesimViewerDebug {
   robotPose(robot: number): ReceivedPose | null;
   /** the robot's pose as drawn now (interpolated, a little behind the newest snapshot) */
   displayedRobotPose(robot: number): Pose | null;
+  /** the object's pose in the newest snapshot, exactly as received */
+  objectPose(object: number): ReceivedPose | null;
+  /** how many robot bodies (arm links, fingers, wheels) are drawn, and the water's surface height */
+  robotBodiesAndWater(): { bodies: number; water: number | null };
   /** where the robot's centre is on the page (CSS pixels); null without WebGL */
   robotScreenPosition(robot: number): { x: number; y: number } | null;
   menuLabels(robot: number): string[] | null;
@@ -33,6 +37,18 @@ export interface EyesimViewerDebug {
   programState(robot: number): ProgramState | null;
   /** how many LCD images have loaded into the robot's panel */
   lcdUpdates(robot: number): number | null;
+  /** what the robot sent on a serial interface */
+  serialText(robot: number, interfaceNumber: number): string | null;
+  /** the robot's digital lines and analog channels as last received */
+  ioState(robot: number): IoMessage | null;
+  /** beeps and files the robot has played since the page opened */
+  soundsPlayed(robot: number): number;
+  /** sensor ray segments drawn now (scene setting VIS) */
+  raySegments(): number;
+  /** points of the robot's drawn path (scene setting TRACE) */
+  tracePoints(robot: number): number;
+  /** how many camera images have loaded into the robot's panel */
+  cameraImages(robot: number): number | null;
   status(): StatusMessage | null;
   /** messages dropped as malformed or of an unknown type */
   ignoredMessages(): number;
@@ -60,11 +76,23 @@ export function installDebugHandle(viewer: Viewer): void {
       return snapshot && body ? { time: snapshot.time, pos: [...body.pos], quat: [...body.quat] } : null;
     },
     displayedRobotPose: (robot) => viewer.world.displayedRobotPose(robot),
+    objectPose: (object) => {
+      const snapshot = viewer.snapshots.latest();
+      const body = snapshot?.objects.find((o) => o.id === object);
+      return snapshot && body ? { time: snapshot.time, pos: [...body.pos], quat: [...body.quat] } : null;
+    },
+    robotBodiesAndWater: () => viewer.world.robotBodiesAndWater(),
     robotScreenPosition: (robot) => viewer.world.robotScreenPosition(robot),
     menuLabels: (robot) => viewer.panels.find(robot)?.lcd.menuLabels() ?? null,
     consoleText: (robot) => viewer.panels.find(robot)?.console.text() ?? null,
     programState: (robot) => viewer.panels.find(robot)?.programState() ?? null,
     lcdUpdates: (robot) => viewer.panels.find(robot)?.lcd.imageUpdates() ?? null,
+    serialText: (robot, interfaceNumber) => viewer.panels.find(robot)?.io.serialText(interfaceNumber) ?? null,
+    ioState: (robot) => viewer.panels.find(robot)?.io.state() ?? null,
+    soundsPlayed: (robot) => viewer.audio.soundsPlayed(robot),
+    raySegments: () => viewer.overlays.raySegments(),
+    tracePoints: (robot) => viewer.overlays.tracePoints(robot),
+    cameraImages: (robot) => viewer.panels.find(robot)?.camera.imagesShown ?? null,
     status: () => (viewer.status ? structuredClone(viewer.status) : null),
     ignoredMessages: () => viewer.ignoredMessages,
   };

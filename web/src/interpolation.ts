@@ -11,6 +11,8 @@ export interface Pose {
 export interface Poses {
   robots: Map<number, Pose>;
   objects: Map<number, Pose>;
+  /** robots' moving parts, by body id */
+  bodies: Map<number, Pose>;
 }
 
 interface Arrival {
@@ -82,7 +84,9 @@ export class SnapshotBuffer {
     const next = this.arrivals.findIndex((a) => a.at > renderAt);
     if (next === -1) {
       const last = this.arrivals.at(-1);
-      return last ? { robots: byId(last.snapshot.robots), objects: byId(last.snapshot.objects) } : null;
+      if (!last) return null;
+      const { robots, objects, bodies } = last.snapshot;
+      return { robots: byId(robots), objects: byId(objects), bodies: byId(bodies) };
     }
     const b = this.arrivals[next];
     const a = next > 0 ? this.arrivals[next - 1] : b;
@@ -90,6 +94,7 @@ export class SnapshotBuffer {
     return {
       robots: blendAll(byId(a.snapshot.robots), byId(b.snapshot.robots), t),
       objects: blendAll(byId(a.snapshot.objects), byId(b.snapshot.objects), t),
+      bodies: blendAll(byId(a.snapshot.bodies), byId(b.snapshot.bodies), t),
     };
   }
 }

@@ -1,7 +1,8 @@
-// A robot's LCD, drawn pixel for pixel, and its four soft keys (buttons and the LCD's menu bar).
+// A robot's LCD, drawn pixel for pixel, and its four soft keys (buttons and the LCD's menu bar);
+// a click elsewhere on the LCD is a touch (KEYGetXY).
 
 import { element } from "./dom";
-import { KEY_CODES, type KeyCode, type MenuLabels } from "./protocol";
+import { KEY_CODES, type KeyCode, type MenuMessage } from "./protocol";
 
 const LCD_WIDTH = 480;
 const LCD_HEIGHT = 320;
@@ -15,8 +16,13 @@ export class LcdView {
   private readonly labels: HTMLElement[];
   private updates = 0;
   private enabled = true;
+  private menuVisible = true;
+  private rotated = false;
 
-  constructor(private readonly pressKey: (key: KeyCode) => void) {
+  constructor(
+    private readonly pressKey: (key: KeyCode) => void,
+    private readonly touch: (x: number, y: number) => void,
+  ) {
     this.image.width = LCD_WIDTH;
     this.image.height = LCD_HEIGHT;
     this.image.alt = "robot LCD";
@@ -50,7 +56,10 @@ export class LcdView {
     this.image.src = `data:image/png;base64,${png}`;
   }
 
-  showMenu(labels: MenuLabels): void {
+  showMenu({ labels, visible, rotated }: Pick<MenuMessage, "labels" | "visible" | "rotated">): void {
+    this.menuVisible = visible;
+    this.rotated = rotated;
+    this.image.classList.toggle("rotated", rotated);
     labels.forEach((label, i) => {
       this.labels[i].textContent = label;
       this.keys[i].title = label ? `KEY${i + 1}: ${label}` : `KEY${i + 1}`;
@@ -72,18 +81,29 @@ export class LcdView {
     return this.updates;
   }
 
-  /** The soft key whose quarter of the menu bar is under the pointer, if any. */
-  private menuKeyAt(event: MouseEvent): KeyCode | null {
+  /** The LCD pixel under the pointer, in the program's coordinates (a rotated LCD shows turned). */
+  private pixelAt(event: MouseEvent): { x: number; y: number } | null {
     const box = this.image.getBoundingClientRect();
     if (box.width === 0 || box.height === 0) return null;
-    const x = ((event.clientX - box.left) / box.width) * LCD_WIDTH;
-    const y = ((event.clientY - box.top) / box.height) * LCD_HEIGHT;
-    if (y < LCD_HEIGHT - MENU_BAR_HEIGHT || y >= LCD_HEIGHT || x < 0 || x >= LCD_WIDTH) return null;
-    return KEY_CODES[Math.floor((x / LCD_WIDTH) * KEY_CODES.length)];
+    let x = Math.floor(((event.clientX - box.left) / box.width) * LCD_WIDTH);
+    let y = Math.floor(((event.clientY - box.top) / box.height) * LCD_HEIGHT);
+    if (x < 0 || x >= LCD_WIDTH || y < 0 || y >= LCD_HEIGHT) return null;
+    if (this.rotated) [x, y] = [LCD_WIDTH - 1 - x, LCD_HEIGHT - 1 - y];
+    return { x, y };
+  }
+
+  /** The soft key whose quarter of the shown menu bar is under the pointer, if any. */
+  private menuKeyAt(event: MouseEvent): KeyCode | null {
+    const pixel = this.pixelAt(event);
+    if (!pixel || !this.menuVisible || pixel.y < LCD_HEIGHT - MENU_BAR_HEIGHT) return null;
+    return KEY_CODES[Math.floor((pixel.x / LCD_WIDTH) * KEY_CODES.length)];
   }
 
   private clickImage(event: MouseEvent): void {
+    if (!this.enabled) return;
     const key = this.menuKeyAt(event);
-    if (key !== null && this.enabled) this.pressKey(key);
+    const pixel = this.pixelAt(event);
+    if (key !== null) this.pressKey(key);
+    else if (pixel) this.touch(pixel.x, pixel.y);
   }
 }

@@ -1,6 +1,6 @@
 // The robot panels, kept in step with the robots of the current scene.
 
-import type { KeyCode, RobotInfo } from "./protocol";
+import type { BrowserCommand, RobotInfo } from "./protocol";
 import { RobotPanel } from "./robot_panel";
 
 export class PanelList {
@@ -9,7 +9,7 @@ export class PanelList {
 
   constructor(
     private readonly container: HTMLElement,
-    private readonly pressKey: (robot: number, key: KeyCode) => void,
+    private readonly send: (command: BrowserCommand) => void,
   ) {}
 
   /**
@@ -29,7 +29,7 @@ export class PanelList {
       if (panel) {
         panel.describeRobot(robot);
       } else {
-        panel = new RobotPanel(robot, (key) => this.pressKey(robot.id, key));
+        panel = new RobotPanel(robot, this.send);
         panel.lcd.setEnabled(this.enabled);
         this.panels.set(robot.id, panel);
       }

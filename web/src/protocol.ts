@@ -34,15 +34,38 @@ export interface RobotInfo {
   track: number;
 }
 
-export type ObjectShape = "box" | "sphere" | "cylinder";
+export type ObjectShape = "box" | "sphere" | "cylinder" | "capsule";
 
 export interface ObjectInfo {
   id: number;
   type: string;
   shape: ObjectShape;
-  /** [sx, sy, sz] for a box, [r] for a sphere, [r, h] for a cylinder */
+  /** [sx, sy, sz] for a box, [r] for a sphere, [r, h] for a cylinder or capsule (h with the caps) */
   size: number[];
   color: Rgb;
+  /** the shapes it is drawn from, in its own frame; empty: just `shape` at its pose */
+  parts: Part[];
+}
+
+/** One shape of an object or robot body, placed in that thing's frame; cylinders and capsules stand along z. */
+export interface Part {
+  shape: ObjectShape;
+  size: number[];
+  pos: Vec3;
+  quat: Quat;
+  color?: Rgb;
+}
+
+/** A moving part of a robot (an arm link, a finger, a steered wheel), posed by its own snapshots. */
+export interface RobotBody {
+  id: number;
+  robot: number;
+  parts: Part[];
+}
+
+/** The water a submarine scene is filled with, from the floor up to `surface` (m). */
+export interface Water {
+  surface: number;
 }
 
 export interface Marker {
@@ -58,12 +81,23 @@ export interface SceneMessage {
   robots: RobotInfo[];
   objects: ObjectInfo[];
   markers: Marker[];
+  settings: SceneSettings;
+  bodies: RobotBody[];
+  water: Water | null;
+}
+
+/** The scene's `settings`: draw sensor rays (VIS), draw robot paths (TRACE). */
+export interface SceneSettings {
+  vis: boolean;
+  trace: boolean;
 }
 
 export interface BodyPose {
   id: number;
   pos: Vec3;
   quat: Quat;
+  /** a robot's battery voltage (V), when it has a battery */
+  battery?: number;
 }
 
 export interface SnapshotMessage {
@@ -71,6 +105,26 @@ export interface SnapshotMessage {
   time: number;
   robots: BodyPose[];
   objects: BodyPose[];
+  bodies: BodyPose[];
+  /** with settings VIS: the robots' sensor beams */
+  rays?: SensorRays[];
+}
+
+/** Beams of one robot's sensor(s) from a common origin: flat [x, y, z, x, y, z, ...] end points. */
+export interface SensorRays {
+  robot: number;
+  kind: "psd" | "lidar";
+  origin: Vec3;
+  ends: number[];
+}
+
+/** The last image a robot's program took with CAMGet (JPEG, base64); width x height as taken. */
+export interface CameraMessage {
+  type: "camera";
+  robot: number;
+  width: number;
+  height: number;
+  jpeg: string;
 }
 
 export interface LcdMessage {
@@ -85,6 +139,46 @@ export interface MenuMessage {
   type: "menu";
   robot: number;
   labels: MenuLabels;
+  /** whether the menu bar shows at the LCD's bottom (LCD_HIDEMENU hides it) */
+  visible: boolean;
+  /** LCD_FB_ROTATE: the LCD image is shown turned by 180 degrees */
+  rotated: boolean;
+}
+
+/** A beep, or a WAV/MP3 file (base64 `data`) the robot plays. */
+export interface AudioMessage {
+  type: "audio";
+  robot: number;
+  sound: "beep" | "file";
+  duration: number;
+  frequency?: number;
+  name?: string;
+  format?: "wav" | "mp3";
+  data?: string;
+}
+
+/** Bytes a robot sent on a serial interface, one character per byte (U+0000..U+00FF). */
+export interface SerialMessage {
+  type: "serial";
+  robot: number;
+  interface: number;
+  text: string;
+}
+
+export interface DigitalLine {
+  /** "i" input, "o" output, "I" input with pull-up, "J" input with pull-down */
+  direction: string;
+  level: number;
+  /** the level the viewer or a script drives an input to, or null */
+  driven: number | null;
+}
+
+/** A robot's 16 digital lines and 8 analog channels (0..1023). */
+export interface IoMessage {
+  type: "io";
+  robot: number;
+  digital: DigitalLine[];
+  analog: number[];
 }
 
 export interface ConsoleMessage {
@@ -125,7 +219,11 @@ export type ServerMessage =
   | ConsoleMessage
   | ProgramMessage
   | StatusMessage
-  | ErrorMessage;
+  | ErrorMessage
+  | AudioMessage
+  | SerialMessage
+  | IoMessage
+  | CameraMessage;
 
 /** Soft keys KEY1..KEY4 as RoBIOS numbers them. */
 export type KeyCode = 1 | 2 | 4 | 8;
@@ -136,7 +234,12 @@ export type BrowserCommand =
   | { type: "pause" }
   | { type: "resume" }
   | { type: "speed"; value: number }
-  | { type: "reset" };
+  | { type: "reset" }
+  | { type: "touch"; robot: number; x: number; y: number }
+  | { type: "irtv"; robot: number; code: string }
+  | { type: "serial"; robot: number; interface: number; text: string }
+  | { type: "digital"; robot: number; line: number; level: number | null }
+  | { type: "analog"; robot: number; channel: number; value: number };
 
 class MalformedMessage extends Error {}
 
@@ -235,24 +338,53 @@ function parseRobot(r: Fields, what: string): RobotInfo {
     type: text(r.type, `${what}.type`),
     size: size as Vec3,
     color: channels(r.color, 3, `${what}.color`) as Rgb,
-    wheel_diameter: positive(r.wheel_diameter, `${what}.wheel_diameter`),
-    track: positive(r.track, `${what}.track`),
+    // 0: the robot has no wheels of this kind (they may come as bodies)
+    wheel_diameter: Math.max(0, num(r.wheel_diameter, `${what}.wheel_diameter`)),
+    track: Math.max(0, num(r.track, `${what}.track`)),
   };
 }
 
-const SIZE_LENGTH: Record<ObjectShape, number> = { box: 3, sphere: 1, cylinder: 2 };
+const SHAPES = ["box", "sphere", "cylinder", "capsule"] as const;
+const SIZE_LENGTH: Record<ObjectShape, number> = { box: 3, sphere: 1, cylinder: 2, capsule: 2 };
 
-function parseObject(o: Fields, what: string): ObjectInfo {
-  const shape = oneOf(o.shape, ["box", "sphere", "cylinder"] as const, `${what}.shape`);
+function parseShapeSize(o: Fields, what: string): { shape: ObjectShape; size: number[] } {
+  const shape = oneOf(o.shape, SHAPES, `${what}.shape`);
   const size = numbers(o.size, SIZE_LENGTH[shape], `${what}.size`);
   size.forEach((s, i) => positive(s, `${what}.size[${i}]`));
+  return { shape, size };
+}
+
+function parsePart(p: Fields, what: string): Part {
+  const part: Part = {
+    ...parseShapeSize(p, what),
+    pos: numbers(p.pos, 3, `${what}.pos`) as Vec3,
+    quat: numbers(p.quat, 4, `${what}.quat`) as Quat,
+  };
+  if (p.color !== undefined) part.color = channels(p.color, 3, `${what}.color`) as Rgb;
+  return part;
+}
+
+function parseObject(o: Fields, what: string): ObjectInfo {
   return {
     id: num(o.id, `${what}.id`),
     type: text(o.type, `${what}.type`),
-    shape,
-    size,
+    ...parseShapeSize(o, what),
     color: channels(o.color, 3, `${what}.color`) as Rgb,
+    parts: items(o.parts ?? [], `${what}.parts`, parsePart),
   };
+}
+
+function parseRobotBody(b: Fields, what: string): RobotBody {
+  return {
+    id: num(b.id, `${what}.id`),
+    robot: num(b.robot, `${what}.robot`),
+    parts: items(b.parts, `${what}.parts`, parsePart),
+  };
+}
+
+function parseWater(value: unknown): Water | null {
+  if (value === null || value === undefined) return null;
+  return { surface: positive(record(value, "water").surface, "water.surface") };
 }
 
 function parseMarker(m: Fields, what: string): Marker {
@@ -263,11 +395,43 @@ function parseMarker(m: Fields, what: string): Marker {
   };
 }
 
-function parseBodyPose(b: Fields, what: string): BodyPose {
+function parseSettings(value: unknown): SceneSettings {
+  const s = record(value, "settings");
   return {
+    vis: s.vis === undefined ? false : flag(s.vis, "settings.vis"),
+    trace: s.trace === undefined ? false : flag(s.trace, "settings.trace"),
+  };
+}
+
+function parseSensorRays(r: Fields, what: string): SensorRays {
+  const ends = r.ends;
+  if (!Array.isArray(ends) || ends.length % 3 !== 0) {
+    throw new MalformedMessage(`${what}.ends must be a list of x, y, z triples`);
+  }
+  return {
+    robot: num(r.robot, `${what}.robot`),
+    kind: oneOf(r.kind, ["psd", "lidar"] as const, `${what}.kind`),
+    origin: numbers(r.origin, 3, `${what}.origin`) as Vec3,
+    ends: numbers(ends, ends.length, `${what}.ends`),
+  };
+}
+
+function parseBodyPose(b: Fields, what: string): BodyPose {
+  const pose: BodyPose = {
     id: num(b.id, `${what}.id`),
     pos: numbers(b.pos, 3, `${what}.pos`) as Vec3,
     quat: numbers(b.quat, 4, `${what}.quat`) as Quat,
+  };
+  if (b.battery !== undefined) pose.battery = num(b.battery, `${what}.battery`);
+  return pose;
+}
+
+function parseDigitalLine(d: Fields, what: string): DigitalLine {
+  const driven = d.driven ?? null;
+  return {
+    direction: oneOf(d.direction, ["i", "o", "I", "J"] as const, `${what}.direction`),
+    level: num(d.level, `${what}.level`),
+    driven: driven === null ? null : num(driven, `${what}.driven`),
   };
 }
 
@@ -283,14 +447,32 @@ function parseFields(m: Fields): ServerMessage | null {
         robots: items(m.robots, "robots", parseRobot),
         objects: items(m.objects ?? [], "objects", parseObject),
         markers: items(m.markers ?? [], "markers", parseMarker),
+        settings: parseSettings(m.settings ?? {}),
+        bodies: items(m.bodies ?? [], "bodies", parseRobotBody),
+        water: parseWater(m.water),
       };
-    case "snapshot":
-      return {
+    case "snapshot": {
+      const snapshot: SnapshotMessage = {
         type: "snapshot",
         time: num(m.time, "time"),
         robots: items(m.robots, "robots", parseBodyPose),
         objects: items(m.objects ?? [], "objects", parseBodyPose),
+        bodies: items(m.bodies ?? [], "bodies", parseBodyPose),
       };
+      if (m.rays !== undefined) snapshot.rays = items(m.rays, "rays", parseSensorRays);
+      return snapshot;
+    }
+    case "camera": {
+      const jpeg = text(m.jpeg, "jpeg");
+      if (!BASE64.test(jpeg)) throw new MalformedMessage("jpeg must be base64");
+      return {
+        type: "camera",
+        robot: num(m.robot, "robot"),
+        width: positive(m.width, "width"),
+        height: positive(m.height, "height"),
+        jpeg,
+      };
+    }
     case "lcd": {
       const png = text(m.png, "png");
       if (!BASE64.test(png)) throw new MalformedMessage("png must be base64");
@@ -305,6 +487,38 @@ function parseFields(m: Fields): ServerMessage | null {
         type: "menu",
         robot: num(m.robot, "robot"),
         labels: labels.map((l, i) => text(l, `labels[${i}]`)) as MenuLabels,
+        visible: m.visible === undefined ? true : flag(m.visible, "visible"),
+        rotated: m.rotated === undefined ? false : flag(m.rotated, "rotated"),
+      };
+    }
+    case "audio": {
+      const sound = oneOf(m.sound, ["beep", "file"] as const, "sound");
+      const message: AudioMessage = { type: "audio", robot: num(m.robot, "robot"), sound, duration: num(m.duration, "duration") };
+      if (m.frequency !== undefined) message.frequency = positive(m.frequency, "frequency");
+      if (m.name !== undefined) message.name = text(m.name, "name");
+      if (m.format !== undefined) message.format = oneOf(m.format, ["wav", "mp3"] as const, "format");
+      if (m.data !== undefined) {
+        const data = text(m.data, "data");
+        if (!BASE64.test(data)) throw new MalformedMessage("data must be base64");
+        message.data = data;
+      }
+      return message;
+    }
+    case "serial":
+      return {
+        type: "serial",
+        robot: num(m.robot, "robot"),
+        interface: num(m.interface, "interface"),
+        text: text(m.text, "text"),
+      };
+    case "io": {
+      const analog = m.analog;
+      if (!Array.isArray(analog)) throw new MalformedMessage("analog must be a list of numbers");
+      return {
+        type: "io",
+        robot: num(m.robot, "robot"),
+        digital: items(m.digital, "digital", parseDigitalLine),
+        analog: numbers(analog, analog.length, "analog"),
       };
     }
     case "console":

@@ -53,7 +53,8 @@ export function createRobotModel(robot: RobotInfo): Group {
   // Wheels inside the body's footprint would be hidden, so they sit at least flush with its sides.
   const wheelY = Math.max(robot.track / 2, width / 2 + wheelWidth / 2);
   const wheelMaterial = new MeshStandardMaterial({ color: 0x202326, roughness: 0.9 });
-  for (const side of [1, -1]) {
+  // Without a wheel diameter the robot has no two drive wheels to draw (its wheels, if any, are bodies).
+  for (const side of radius > 0 ? [1, -1] : []) {
     // CylinderGeometry's axis is y: the axle direction.
     const wheel = new Mesh(new CylinderGeometry(radius, radius, wheelWidth, 24), wheelMaterial);
     wheel.position.set(0, side * wheelY, radius);

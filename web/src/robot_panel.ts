@@ -1,9 +1,12 @@
-// One robot's panel: its name, program state, LCD with soft keys, and console.
+// One robot's panel: its name, program state, LCD with soft keys, camera image, console, and remote,
+// serial and I/O.
 
+import { CameraView } from "./camera_view";
 import { ConsoleView } from "./console_view";
 import { element } from "./dom";
 import { LcdView } from "./lcd_view";
-import type { ConsoleMessage, KeyCode, ProgramMessage, RobotInfo } from "./protocol";
+import type { BrowserCommand, ConsoleMessage, ProgramMessage, RobotInfo } from "./protocol";
+import { RobotIoView } from "./robot_io_view";
 
 export type ProgramState = Pick<ProgramMessage, "event" | "name" | "exit_code">;
 
@@ -18,19 +21,25 @@ export class RobotPanel {
   readonly element = element("section", "robot-panel");
   readonly lcd: LcdView;
   readonly console = new ConsoleView();
+  readonly camera = new CameraView();
+  readonly io: RobotIoView;
   private readonly name = element("h2", "robot-name");
   private readonly type = element("span", "robot-type");
   private readonly state = element("span", "program-state");
   private program: ProgramState | null = null;
 
-  constructor(robot: RobotInfo, pressKey: (key: KeyCode) => void) {
+  constructor(robot: RobotInfo, send: (command: BrowserCommand) => void) {
     this.element.dataset.robot = String(robot.id);
-    this.lcd = new LcdView(pressKey);
+    this.lcd = new LcdView(
+      (key) => send({ type: "key", robot: robot.id, key }),
+      (x, y) => send({ type: "touch", robot: robot.id, x, y }),
+    );
+    this.io = new RobotIoView((command) => send({ ...command, robot: robot.id } as BrowserCommand));
     const header = element("header", "robot-header");
     const title = element("div", "robot-title");
     title.append(this.name, this.type);
     header.append(title, this.state);
-    this.element.append(header, this.lcd.element, this.console.element);
+    this.element.append(header, this.lcd.element, this.camera.element, this.console.element, this.io.element);
     this.describeRobot(robot);
     this.showProgram(null);
   }

@@ -1,7 +1,9 @@
 // The viewer: routes the simulator's messages to the 3D view, toolbar and robot panels.
 
+import { AudioPlayer } from "./audio_player";
 import { ViewerConnection, type ConnectionState } from "./connection";
 import { SnapshotBuffer } from "./interpolation";
+import { Overlays } from "./overlays";
 import { PanelList } from "./panel_list";
 import {
   parseServerMessage,
@@ -25,6 +27,8 @@ export class Viewer {
   readonly world: WorldView;
   readonly panels: PanelList;
   readonly snapshots = new SnapshotBuffer();
+  readonly overlays = new Overlays();
+  readonly audio = new AudioPlayer();
   private readonly toolbar: Toolbar;
   private lastScene: SceneMessage | null = null;
   private lastStatus: StatusMessage | null = null;
@@ -33,8 +37,9 @@ export class Viewer {
   constructor(elements: ViewerElements) {
     const send = (command: BrowserCommand) => this.connection.send(command);
     this.toolbar = new Toolbar(elements.toolbar, send);
-    this.panels = new PanelList(elements.panels, (robot, key) => send({ type: "key", robot, key }));
+    this.panels = new PanelList(elements.panels, send);
     this.world = new WorldView(elements.world);
+    this.world.addOverlay(this.overlays.group);
     this.connection = new ViewerConnection({
       onMessage: (frame) => this.receive(frame),
       onState: (state) => this.showConnection(state),
@@ -86,9 +91,14 @@ export class Viewer {
         this.snapshots.clear();
         this.panels.showRobots(message.robots);
         this.world.showScene(message);
+        this.overlays.reset(message.settings);
         break;
       case "snapshot":
         this.snapshots.push(message, performance.now());
+        if (this.overlays.update(message.robots, message.rays)) this.world.requestRender();
+        for (const robot of message.robots) {
+          if (robot.battery !== undefined) this.panels.find(robot.id)?.io.showBattery(robot.battery);
+        }
         break;
       case "status":
         this.lastStatus = message;
@@ -98,7 +108,19 @@ export class Viewer {
         this.panelOf(message.robot)?.lcd.showImage(message.png);
         break;
       case "menu":
-        this.panelOf(message.robot)?.lcd.showMenu(message.labels);
+        this.panelOf(message.robot)?.lcd.showMenu(message);
+        break;
+      case "audio":
+        this.audio.play(message);
+        break;
+      case "serial":
+        this.panelOf(message.robot)?.io.appendSerial(message);
+        break;
+      case "camera":
+        this.panelOf(message.robot)?.camera.show(message);
+        break;
+      case "io":
+        this.panelOf(message.robot)?.io.showIo(message);
         break;
       case "console":
         this.panelOf(message.robot)?.appendConsole(message);

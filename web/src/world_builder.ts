@@ -3,6 +3,7 @@
 import {
   BoxGeometry,
   BufferGeometry,
+  CapsuleGeometry,
   CircleGeometry,
   CylinderGeometry,
   Float32BufferAttribute,
@@ -19,7 +20,17 @@ import {
   TextureLoader,
 } from "three";
 import { CSS2DObject } from "three/addons/renderers/CSS2DRenderer.js";
-import type { Floor, Marker, ObjectInfo, SceneMessage, Wall } from "./protocol";
+import type {
+  Floor,
+  Marker,
+  ObjectInfo,
+  ObjectShape,
+  Part,
+  RobotBody,
+  SceneMessage,
+  Wall,
+  Water,
+} from "./protocol";
 import { colorOf, createRobotModel } from "./robot_model";
 
 export interface BuiltWorld {
@@ -27,6 +38,10 @@ export interface BuiltWorld {
   group: Group;
   robots: Map<number, Object3D>;
   objects: Map<number, Object3D>;
+  /** robots' moving parts, by body id */
+  bodies: Map<number, Object3D>;
+  /** height of the water's surface, null without water */
+  waterSurface: number | null;
   wallCount: number;
   markerCount: number;
 }
@@ -89,26 +104,64 @@ function createWall(wall: Wall): Mesh {
   return mesh;
 }
 
-function objectGeometry(object: ObjectInfo): BufferGeometry {
-  switch (object.shape) {
+function shapeGeometry(shape: ObjectShape, size: number[]): BufferGeometry {
+  switch (shape) {
     case "box":
-      return new BoxGeometry(object.size[0], object.size[1], object.size[2]);
+      return new BoxGeometry(size[0], size[1], size[2]);
     case "sphere":
-      return new SphereGeometry(object.size[0], 24, 16);
+      return new SphereGeometry(size[0], 24, 16);
+    // CylinderGeometry and CapsuleGeometry stand along y; the world's stand along z.
     case "cylinder":
-      // CylinderGeometry stands along y; the world's cylinders stand along z.
-      return new CylinderGeometry(object.size[0], object.size[0], object.size[1], 24).rotateX(
+      return new CylinderGeometry(size[0], size[0], size[1], 24).rotateX(Math.PI / 2);
+    case "capsule":
+      return new CapsuleGeometry(size[0], Math.max(size[1] - 2 * size[0], 0), 8, 16).rotateX(
         Math.PI / 2,
       );
   }
 }
 
-function createObject(object: ObjectInfo): Mesh {
+/** The parts of an object or robot body in its own frame, each in its own colour or `color`. */
+function createParts(parts: Part[], color: Part["color"]): Group {
+  const group = new Group();
+  for (const part of parts) {
+    const mesh = new Mesh(
+      shapeGeometry(part.shape, part.size),
+      new MeshStandardMaterial({ color: colorOf(part.color ?? color ?? [180, 180, 180]), roughness: 0.6 }),
+    );
+    const [w, x, y, z] = part.quat;
+    mesh.position.set(...part.pos);
+    mesh.quaternion.set(x, y, z, w);
+    group.add(mesh);
+  }
+  return group;
+}
+
+function createObject(object: ObjectInfo): Object3D {
+  const thing: Object3D =
+    object.parts.length > 0
+      ? createParts(object.parts, object.color)
+      : new Mesh(
+          shapeGeometry(object.shape, object.size),
+          new MeshStandardMaterial({ color: colorOf(object.color), roughness: 0.6 }),
+        );
+  thing.name = `object ${object.id}`;
+  return thing;
+}
+
+function createBody(body: RobotBody): Object3D {
+  const group = createParts(body.parts, undefined);
+  group.name = `robot ${body.robot} body ${body.id}`;
+  return group;
+}
+
+/** Translucent water from the floor up to its surface, over the whole floor. */
+function createWater(water: Water, floor: Floor): Mesh {
   const mesh = new Mesh(
-    objectGeometry(object),
-    new MeshStandardMaterial({ color: colorOf(object.color), roughness: 0.6 }),
+    new BoxGeometry(floor.width, floor.height, water.surface),
+    new MeshStandardMaterial({ color: 0x2a7fc9, transparent: true, opacity: 0.25, depthWrite: false }),
   );
-  mesh.name = `object ${object.id}`;
+  mesh.position.set(floor.width / 2, floor.height / 2, water.surface / 2);
+  mesh.name = "water";
   return mesh;
 }
 
@@ -149,10 +202,19 @@ export function buildWorld(scene: SceneMessage, onTextureLoaded: () => void): Bu
     objects.set(object.id, mesh);
     group.add(mesh);
   }
+  const bodies = new Map<number, Object3D>();
+  for (const body of scene.bodies) {
+    const model = hiddenUntilPlaced(createBody(body));
+    bodies.set(body.id, model);
+    group.add(model);
+  }
+  if (scene.water) group.add(createWater(scene.water, scene.floor));
   return {
     group,
     robots,
     objects,
+    bodies,
+    waterSurface: scene.water?.surface ?? null,
     wallCount: scene.walls.length,
     markerCount: scene.markers.length,
   };

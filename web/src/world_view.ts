@@ -140,6 +140,17 @@ export class WorldView {
     this.needsRender = true;
   }
 
+  /** Adds drawings in world coordinates (sensor rays, paths) that stay across scenes. */
+  addOverlay(overlay: Object3D): void {
+    this.root.add(overlay);
+    this.needsRender = true;
+  }
+
+  /** Something drawn changed outside applyPoses: draw the next frame. */
+  requestRender(): void {
+    this.needsRender = true;
+  }
+
   applyPoses(poses: Poses): void {
     if (!this.world) return;
     for (const [id, pose] of poses.robots) {
@@ -149,6 +160,10 @@ export class WorldView {
     for (const [id, pose] of poses.objects) {
       const object = this.world.objects.get(id);
       if (object && place(object, pose)) this.needsRender = true;
+    }
+    for (const [id, pose] of poses.bodies) {
+      const body = this.world.bodies.get(id);
+      if (body && place(body, pose)) this.needsRender = true;
     }
   }
 
@@ -169,6 +184,10 @@ export class WorldView {
       objects: this.world?.objects.size ?? 0,
       markers: this.world?.markerCount ?? 0,
     };
+  }
+
+  robotBodiesAndWater(): { bodies: number; water: number | null } {
+    return { bodies: this.world?.bodies.size ?? 0, water: this.world?.waterSurface ?? null };
   }
 
   /** The robot's pose as drawn (world frame), or null if it is unknown or not yet placed. */

@@ -1,0 +1,34 @@
+"""The in-process simulator with its viewer server, and running asyncio code from sync tests."""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+from concurrent.futures import ThreadPoolExecutor
+
+from support.simulator import running_simulation
+
+from eyesim.net.io_thread import IoThread
+from eyesim.web.server import ViewerServer
+
+
+@contextlib.contextmanager
+def viewer_simulation(scene, mode: str = "realtime"):
+    """Yield (sim, program port, viewer server) with everything running."""
+    with running_simulation(scene, mode) as (sim, port):
+        io = IoThread()
+        io.start()
+        server = ViewerServer(sim, io, "127.0.0.1", 0)
+        server.start()
+        try:
+            yield sim, port, server
+        finally:
+            server.stop()
+            io.stop()
+
+
+def run_async(coroutine):
+    """Run a coroutine on a thread of its own: pytest may already run an event loop in this
+    thread (Playwright's), and asyncio.run refuses to nest."""
+    with ThreadPoolExecutor(1) as thread:
+        return thread.submit(asyncio.run, coroutine).result()

@@ -1,0 +1,108 @@
+// Drawn over the world when the scene asks: sensor rays (settings VIS) and robot paths (TRACE).
+
+import { BufferGeometry, Float32BufferAttribute, Group, Line, LineBasicMaterial, LineSegments } from "three";
+import type { BodyPose, SceneSettings, SensorRays } from "./protocol";
+
+/** Colours of the rays: PSD beams red, lidar beams green. */
+const RAY_COLORS = { psd: 0xe53935, lidar: 0x2e9e44 } as const;
+const TRACE_COLOR = 0x1e63c8;
+/** A path gets a new point once the robot moved this far (m); the oldest points go beyond MAX. */
+const TRACE_STEP = 0.005;
+const MAX_TRACE_POINTS = 20000;
+/** Lifts paths above the floor so they do not flicker against it. */
+const TRACE_HEIGHT = 0.002;
+
+interface Trace {
+  points: number[];
+  line: Line;
+}
+
+export class Overlays {
+  /** Add to the world root: everything here is in world coordinates. */
+  readonly group = new Group();
+  private readonly rays = new Group();
+  private readonly traces = new Map<number, Trace>();
+  private settings: SceneSettings = { vis: false, trace: false };
+
+  constructor() {
+    this.group.name = "overlays";
+    this.group.add(this.rays);
+  }
+
+  /** A new or reset scene: paths start again. */
+  reset(settings: SceneSettings): void {
+    this.settings = settings;
+    this.showRays([]);
+    for (const trace of this.traces.values()) {
+      this.group.remove(trace.line);
+      trace.line.geometry.dispose();
+    }
+    this.traces.clear();
+  }
+
+  /** Applies a snapshot; says whether anything drawn changed. */
+  update(robots: BodyPose[], rays: SensorRays[] | undefined): boolean {
+    let changed = false;
+    if (this.settings.vis) {
+      this.showRays(rays ?? []);
+      changed = true;
+    }
+    if (this.settings.trace) {
+      for (const robot of robots) changed = this.extendTrace(robot) || changed;
+    }
+    return changed;
+  }
+
+  /** Number of points in a robot's path (for tests). */
+  tracePoints(robot: number): number {
+    return (this.traces.get(robot)?.points.length ?? 0) / 3;
+  }
+
+  /** Number of ray segments drawn (for tests). */
+  raySegments(): number {
+    let count = 0;
+    for (const child of this.rays.children) {
+      count += (child as LineSegments).geometry.getAttribute("position").count / 2;
+    }
+    return count;
+  }
+
+  private showRays(rays: SensorRays[]): void {
+    for (const child of [...this.rays.children]) {
+      this.rays.remove(child);
+      (child as LineSegments).geometry.dispose();
+    }
+    for (const kind of ["psd", "lidar"] as const) {
+      const points: number[] = [];
+      for (const ray of rays) {
+        if (ray.kind !== kind) continue;
+        for (let i = 0; i + 2 < ray.ends.length; i += 3) {
+          points.push(...ray.origin, ray.ends[i], ray.ends[i + 1], ray.ends[i + 2]);
+        }
+      }
+      if (points.length === 0) continue;
+      const geometry = new BufferGeometry();
+      geometry.setAttribute("position", new Float32BufferAttribute(points, 3));
+      const material = new LineBasicMaterial({ color: RAY_COLORS[kind], transparent: true, opacity: 0.8 });
+      this.rays.add(new LineSegments(geometry, material));
+    }
+  }
+
+  private extendTrace(robot: BodyPose): boolean {
+    let trace = this.traces.get(robot.id);
+    if (!trace) {
+      trace = { points: [], line: new Line(new BufferGeometry(), new LineBasicMaterial({ color: TRACE_COLOR })) };
+      this.traces.set(robot.id, trace);
+      this.group.add(trace.line);
+    }
+    const [x, y] = robot.pos;
+    const n = trace.points.length;
+    if (n >= 3 && Math.hypot(x - trace.points[n - 3], y - trace.points[n - 2]) < TRACE_STEP) return false;
+    trace.points.push(x, y, TRACE_HEIGHT);
+    if (trace.points.length > MAX_TRACE_POINTS * 3) trace.points.splice(0, 3);
+    trace.line.geometry.dispose();
+    trace.line.geometry = new BufferGeometry();
+    trace.line.geometry.setAttribute("position", new Float32BufferAttribute(trace.points, 3));
+    return true;
+  }
+}
