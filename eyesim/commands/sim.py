@@ -1,34 +1,79 @@
-"""RoBIOS simulation group: true poses. Robot id 0 = the calling robot, 1..n = scene order."""
+"""RoBIOS simulation group: true poses of robots and objects, and how many there are.
+
+Robot id 0 = the calling robot, 1..n = the scene's robots in scene order; object ids 1..m = the
+scene's objects in scene order (maze balls and crates first, then the .sim file's objects)."""
 
 import math
 
+from eyesim.commands.errors import CommandError
+from eyesim.physics.objects import FixedObjectError
 from eyesim.physics.units import mm, wrap_degrees
+from eyesim.robot.robot import MountedRobotError
 
 
-def _robot(sim, caller, robot_id):
+def _robot(sim, caller, robot_id: int, function: str):
     if robot_id == 0:
         return caller
-    if 1 <= robot_id <= len(sim.robots):
-        return sim.robots[robot_id - 1]
-    return None
-
-
-def sim_get_robot(sim, robot, request):
-    (robot_id,) = request.args
-    target = _robot(sim, robot, robot_id)
+    target = sim.robot_by_id(robot_id)
     if target is None:
-        return (1, 0, 0, 0, 0)
+        raise CommandError(f"{function}: no robot {robot_id} (0 = this robot, 1..{len(sim.robots)} = the scene's)")
+    return target
+
+
+def _object(sim, object_id: int, function: str):
+    target = sim.object_by_id(object_id)
+    if target is None:
+        known = f"1..{len(sim.objects)}" if sim.objects else "the scene has none"
+        raise CommandError(f"{function}: no object {object_id} ({known})")
+    return target
+
+
+def _pose(target) -> tuple:
     x, y, z, phi = target.pose_mm()
     return (0, round(x), round(y), round(z), round(wrap_degrees(phi)))
 
 
-def sim_set_robot(sim, robot, request):
-    robot_id, x, y, z, phi = request.args
-    target = _robot(sim, robot, robot_id)
-    if target is None:
-        return (1,)
-    target.set_pose(mm(x), mm(y), mm(z), math.radians(phi))
+def _place(target, x: int, y: int, z: int, phi: int, function: str) -> tuple:
+    try:
+        target.set_pose(mm(x), mm(y), mm(z), math.radians(phi))
+    except (FixedObjectError, MountedRobotError) as error:
+        raise CommandError(f"{function}: {error}") from None
     return (0,)
 
 
-HANDLERS = {"SIM_GET_ROBOT": sim_get_robot, "SIM_SET_ROBOT": sim_set_robot}
+def sim_get_robot(sim, robot, request):
+    (robot_id,) = request.args
+    return _pose(_robot(sim, robot, robot_id, "SIMGetRobot"))
+
+
+def sim_set_robot(sim, robot, request):
+    robot_id, x, y, z, phi = request.args
+    return _place(_robot(sim, robot, robot_id, "SIMSetRobot"), x, y, z, phi, "SIMSetRobot")
+
+
+def sim_get_object(sim, robot, request):
+    (object_id,) = request.args
+    return _pose(_object(sim, object_id, "SIMGetObject"))
+
+
+def sim_set_object(sim, robot, request):
+    object_id, x, y, z, phi = request.args
+    return _place(_object(sim, object_id, "SIMSetObject"), x, y, z, phi, "SIMSetObject")
+
+
+def sim_get_robot_count(sim, robot, request):
+    return (len(sim.robots),)
+
+
+def sim_get_object_count(sim, robot, request):
+    return (len(sim.objects),)
+
+
+HANDLERS = {
+    "SIM_GET_ROBOT": sim_get_robot,
+    "SIM_SET_ROBOT": sim_set_robot,
+    "SIM_GET_OBJECT": sim_get_object,
+    "SIM_SET_OBJECT": sim_set_object,
+    "SIM_GET_ROBOT_COUNT": sim_get_robot_count,
+    "SIM_GET_OBJECT_COUNT": sim_get_object_count,
+}

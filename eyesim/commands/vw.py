@@ -2,7 +2,7 @@
 
 import math
 
-from eyesim.commands.errors import require
+from eyesim.commands.errors import CommandError, require
 from eyesim.physics.units import mm, to_mm, wrap_degrees
 from eyesim.robot.components.vw import VwController
 from eyesim.session import Pending
@@ -46,6 +46,29 @@ def vw_turn(sim, robot, request):
     return (0,)
 
 
+def vw_curve(sim, robot, request):
+    dist, angle, speed = request.args
+    _vw(robot).curve(mm(dist), math.radians(angle), mm(speed))
+    return (0,)
+
+
+def vw_drive(sim, robot, request):
+    dx, dy, speed = request.args
+    vw = _vw(robot)
+    if dx <= abs(dy):
+        raise CommandError(f"VWDrive: the point ({dx}, {dy}) cannot be reached on an arc: dx must be greater than |dy|")
+    vw.drive_to(mm(dx), mm(dy), mm(speed))
+    return (0,)
+
+
+def vw_remain(sim, robot, request):
+    return (round(to_mm(_vw(robot).remaining())),)
+
+
+def vw_stalled(sim, robot, request):
+    return (_vw(robot).stalled,)
+
+
 def vw_done(sim, robot, request):
     return (1 if _vw(robot).done else 0,)
 
@@ -66,4 +89,8 @@ HANDLERS = {
     "VW_TURN": vw_turn,
     "VW_DONE": vw_done,
     "VW_WAIT": vw_wait,
+    "VW_CURVE": vw_curve,
+    "VW_DRIVE": vw_drive,
+    "VW_REMAIN": vw_remain,
+    "VW_STALLED": vw_stalled,
 }

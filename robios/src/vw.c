@@ -47,6 +47,40 @@ int VWTurn(int angle, int ang_speed)
     return es_call("VWTurn", ES_OP_VW_TURN, args, result) ? VW_ERROR : (int)result[0].i;
 }
 
+int VWCurve(int dist, int angle, int lin_speed)
+{
+    es_value args[3] = {es_int(dist), es_int(angle), es_int(lin_speed)}, result[1];
+    return es_call("VWCurve", ES_OP_VW_CURVE, args, result) ? VW_ERROR : (int)result[0].i;
+}
+
+int VWDrive(int dx, int dy, int lin_speed)
+{
+    es_value args[3] = {es_int(dx), es_int(dy), es_int(lin_speed)}, result[1];
+    return es_call("VWDrive", ES_OP_VW_DRIVE, args, result) ? VW_ERROR : (int)result[0].i;
+}
+
+static int vw_remain(const char *function)
+{
+    es_value result[1];
+    return es_call(function, ES_OP_VW_REMAIN, NULL, result) ? -1 : (int)result[0].i;
+}
+
+int VWRemain(void)
+{
+    return vw_remain("VWRemain");
+}
+
+int VWDriveRemain(void)
+{
+    return vw_remain("VWDriveRemain");
+}
+
+int VWStalled(void)
+{
+    es_value result[1];
+    return es_call("VWStalled", ES_OP_VW_STALLED, NULL, result) ? -1 : (int)result[0].i;
+}
+
 static int vw_done(const char *function)
 {
     es_value result[1];

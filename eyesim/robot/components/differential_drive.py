@@ -1,4 +1,4 @@
-"""Differential drive: two driven wheels on hinge joints with velocity-controlled motors and encoders."""
+"""Differential drive: two driven wheels with encoders (motors/encoders 1 = left, 2 = right) and casters."""
 
 from __future__ import annotations
 
@@ -7,12 +7,35 @@ import math
 import mujoco
 
 from eyesim.physics.units import mm
+from eyesim.robot.actuators import WheelMotor
 from eyesim.robot.component import Component
 
 WHEEL_WIDTH = 0.014  # m
 WHEEL_MASS = 0.03  # kg
-MOTOR_GAIN = 0.05  # N*m per rad/s of speed error (velocity servo)
-MOTOR_TORQUE = 0.12  # N*m a motor can deliver at most: robots stall against walls
+WHEEL_FRICTION = [1.0, 0.005, 0.0001]
+# The geared motor's rotor inertia as the wheel feels it. It also keeps the stiff speed controller
+# (integrated implicitly) in step with the contact solver, which would otherwise let the wheels creep.
+WHEEL_ARMATURE = 1e-4  # kg*m^2
+WHEEL_DAMPING = 5e-5  # N*m per rad/s: the bearings' friction
+STALL_TORQUE = 0.06  # N*m per motor: less than the wheel's grip, so a blocked robot stalls, not spins
+CASTER_RADIUS = 0.012  # m
+CASTER_LIFT = 0.001  # m casters sit above the floor: the wheels carry the robot, casters catch its tilt
+
+
+def add_wheel(context, name: str, pos, radius: float, parent=None, shown: bool = False):
+    """A wheel body at `pos` (in `parent`, default the chassis) on a hinge about its y axis. It
+    touches the floor through a sphere: one contact point straight below the axle, so the effective
+    track is exactly the track (a cylinder would touch at its rims). The tyre cylinder is only for
+    looks."""
+    wheel = context.add_part(parent or context.body, name, WHEEL_MASS, shown=shown, pos=pos)
+    wheel.add_joint(name=name, type=mujoco.mjtJoint.mjJNT_HINGE, axis=[0, 1, 0], damping=WHEEL_DAMPING,
+                    armature=WHEEL_ARMATURE)
+    wheel.add_geom(name=name, type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[radius, 0, 0], mass=WHEEL_MASS,
+                   friction=WHEEL_FRICTION, solref=[0.004, 1.0], rgba=[0, 0, 0, 0])
+    wheel.add_geom(name=f"{name}/tyre", type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[radius, WHEEL_WIDTH / 2, 0],
+                   quat=[math.cos(math.pi / 4), math.sin(math.pi / 4), 0, 0], contype=0, conaffinity=0, mass=0,
+                   rgba=[0.1, 0.1, 0.1, 1.0])
+    return wheel
 
 
 class DifferentialDrive(Component):
@@ -21,71 +44,45 @@ class DifferentialDrive(Component):
     kind = "differential_drive"
 
     def __init__(self, context):
-        wheels = context.robot_type.wheels
+        robot_type = context.robot_type
+        wheels = robot_type.wheels
         self.radius = mm(wheels.diameter) / 2
         self.track = mm(wheels.track)
         self.ticks_per_rev = wheels.ticks_per_rev
         self.max_wheel_speed = math.radians(wheels.max_speed)  # rad/s
-        axle_x = mm(context.robot_type.axis_offset)
-        self.names = []
+        axle_x = mm(robot_type.axis_offset)
+        self.wheels = []
         for side, sign in (("left", 1.0), ("right", -1.0)):
             name = f"{context.prefix}/wheel_{side}"
-            wheel = context.body.add_body(name=name, pos=[axle_x, sign * self.track / 2, self.radius])
-            wheel.add_joint(name=name, type=mujoco.mjtJoint.mjJNT_HINGE, axis=[0, 1, 0], damping=0.0005)
-            # The wheel touches the floor through a sphere: one contact point straight below the
-            # axle, so the effective track is exactly the track (a cylinder touches at its rims).
-            # The cylinder is only for looks (and for other robots' sensors).
-            wheel.add_geom(name=name, type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[self.radius, 0, 0], mass=WHEEL_MASS,
-                           friction=[1.0, 0.005, 0.0001], solref=[0.004, 1.0], rgba=[0, 0, 0, 0])
-            wheel.add_geom(name=f"{name}/tyre", type=mujoco.mjtGeom.mjGEOM_CYLINDER,
-                           size=[self.radius, WHEEL_WIDTH / 2, 0], quat=[math.cos(math.pi / 4), math.sin(math.pi / 4), 0, 0],
-                           contype=0, conaffinity=0, mass=0, rgba=[0.1, 0.1, 0.1, 1.0])
-            actuator = context.spec.add_actuator(name=name, target=name, trntype=mujoco.mjtTrn.mjTRN_JOINT)
-            actuator.gainprm[0] = MOTOR_GAIN
-            actuator.biastype = mujoco.mjtBias.mjBIAS_AFFINE
-            actuator.biasprm[2] = -MOTOR_GAIN
-            actuator.forcelimited = True
-            actuator.forcerange = [-MOTOR_TORQUE, MOTOR_TORQUE]
-            self.names.append(name)
-        self.target = [0.0, 0.0]  # wheel speed set points, rad/s
-        self.encoder_offset = [0, 0]
+            add_wheel(context, name, [axle_x, sign * self.track / 2, self.radius], self.radius)
+            self.wheels.append(WheelMotor(context.spec, name, name, mujoco.mjtTrn.mjTRN_JOINT, self.ticks_per_rev,
+                                          self.max_wheel_speed, STALL_TORQUE))
+        self.motors = {1: self.wheels[0], 2: self.wheels[1]}
+        self.encoders = self.motors
+        # A caster behind and a skid in front keep the robot level. They glide without friction:
+        # their priority makes their frictionless contact win over the floor's grip.
+        caster_x = mm(robot_type.length) / 2 - CASTER_RADIUS - 0.008
+        for part, x in (("caster", -caster_x), ("skid", caster_x)):
+            context.body.add_geom(name=f"{context.prefix}/{part}", type=mujoco.mjtGeom.mjGEOM_SPHERE,
+                                  size=[CASTER_RADIUS, 0, 0], pos=[x, 0.0, CASTER_RADIUS + CASTER_LIFT], mass=0.0,
+                                  condim=1, priority=2, friction=[0.0, 0.0, 0.0], rgba=[0.2, 0.2, 0.2, 1.0])
 
     def bind(self, world) -> None:
         super().bind(world)
-        self.joints = [world.joint_id(n) for n in self.names]
-        self.qpos_adr = [world.model.jnt_qposadr[j] for j in self.joints]
-        self.dof_adr = [world.model.jnt_dofadr[j] for j in self.joints]
-        self.actuators = [world.actuator_id(n) for n in self.names]
+        for wheel in self.wheels:
+            wheel.bind(world)
 
     def reset(self) -> None:
-        self.target = [0.0, 0.0]
-        self.encoder_offset = [0, 0]
-
-    def set_wheel_speeds(self, left: float, right: float) -> None:
-        """Wheel angular speeds in rad/s (positive drives forward), clipped to the motors' maximum."""
-        limit = self.max_wheel_speed
-        self.target = [max(-limit, min(limit, left)), max(-limit, min(limit, right))]
+        for wheel in self.wheels:
+            wheel.reset()
 
     def before_step(self, dt: float) -> None:
-        ctrl = self.world.data.ctrl
-        ctrl[self.actuators[0]] = self.target[0]
-        ctrl[self.actuators[1]] = self.target[1]
-
-    def wheel_angle(self, index: int) -> float:
-        return float(self.world.data.qpos[self.qpos_adr[index]])
+        for wheel in self.wheels:
+            if wheel.needs_update:
+                wheel.update(dt)
 
     def wheel_speed(self, index: int) -> float:
-        return float(self.world.data.qvel[self.dof_adr[index]])
-
-    def raw_ticks(self, index: int) -> int:
-        return math.floor(self.wheel_angle(index) / (2 * math.pi) * self.ticks_per_rev)
-
-    def encoder(self, index: int) -> int:
-        """Encoder count of wheel `index` (0 left, 1 right) since its last reset."""
-        return self.raw_ticks(index) - self.encoder_offset[index]
-
-    def reset_encoder(self, index: int) -> None:
-        self.encoder_offset[index] = self.raw_ticks(index)
+        return self.wheels[index].speed
 
 
 def create(context) -> list[Component]:

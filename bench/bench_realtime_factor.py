@@ -1,0 +1,170 @@
+"""Benchmark: real-time factor of the simulation loop with 1, 10, 50 and 100 S4 robots driving
+under VW control, beside MuJoCo's bare mj_step on the same model in the same run.
+
+Run:  PYTHONPATH=. python3 bench/bench_realtime_factor.py [--robots 1 10 50 100] [--seconds 2]
+Prints a table and writes bench/results/realtime_factor.json.
+
+The simulation runs as `eyesim run --speed max` does (realtime clock, as fast as possible) for
+`--seconds` of wall time per measurement, best of three. Instead of one program process per robot,
+a driver in the same process gives each robot its next manoeuvre (300 mm straight, 90 degree turn:
+squares, each robot in its own 600 mm cell) through the VW controller the handlers use, so what is
+measured is the simulator, not the scheduling of 100 processes on a small machine. The baseline is
+mj_step alone on a copy of the same state, for as many steps, measured between the runs.
+Targets (issue 4): >= 50x real time for one robot, >= 1x for 100, and our per-step overhead per
+robot <= 3x MuJoCo's own step cost per robot.
+"""
+
+from __future__ import annotations
+
+import argparse
+import copy
+import math
+import sys
+import time
+from collections import defaultdict
+from pathlib import Path
+
+import mujoco
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from common import print_table, write_results  # noqa: E402
+
+from eyesim.clock import MAX_SPEED, Clock  # noqa: E402
+from eyesim.engine import Simulation  # noqa: E402
+from eyesim.robot.component import Component  # noqa: E402
+from eyesim.robot.components.vw import VwController  # noqa: E402
+from eyesim.scene import load_robot_type  # noqa: E402
+from eyesim.scene.description import Pose, RobotPlacement, Scene, Wall, World  # noqa: E402
+
+CELL = 600  # mm of floor per robot
+SIDE = 0.3  # m of each square's side
+REPEATS = 3  # best of: the machine is shared
+
+
+def square_drivers_scene(count: int) -> Scene:
+    columns = math.ceil(math.sqrt(count))
+    size = columns * CELL
+    walls = (Wall(0, 0, size, 0), Wall(size, 0, size, size), Wall(size, size, 0, size), Wall(0, size, 0, 0))
+    s4 = load_robot_type("S4")
+    placements = tuple(RobotPlacement(s4.name, Pose(CELL * (i % columns) + 150, CELL * (i // columns) + 150, 0))
+                       for i in range(count))
+    return Scene("bench", World("bench", size, size, walls), robot_types={s4.name: s4}, robots=placements)
+
+
+class SquareDriver:
+    """After every step, hands each robot whose manoeuvre is done the next one of its square."""
+
+    def __init__(self, sim: Simulation):
+        self.controllers = [robot.component(VwController) for robot in sim.robots]
+        self.legs = [0] * len(self.controllers)
+
+    def __call__(self, sim: Simulation) -> None:
+        for index, vw in enumerate(self.controllers):
+            if vw.done:
+                if self.legs[index] % 2 == 0:
+                    vw.straight(SIDE, 0.3)
+                else:
+                    vw.turn(math.pi / 2, math.radians(120))
+                self.legs[index] += 1
+
+
+def run_for_wall_time(sim: Simulation, wall_seconds: float) -> tuple[float, int, float]:
+    """The simulation loop, in growing slices of simulated time until `wall_seconds` have passed;
+    returns (wall s, steps, simulated s)."""
+    wall, steps, simulated = 0.0, 0, 0.0
+    slice_seconds = 0.02
+    while wall < wall_seconds:
+        start_steps, start_us = sim.steps, sim.time_us
+        start = time.perf_counter()
+        sim.run(until=sim.time + slice_seconds)
+        elapsed = time.perf_counter() - start
+        wall += elapsed
+        steps += sim.steps - start_steps
+        simulated += (sim.time_us - start_us) / 1e6
+        if elapsed < 0.2:
+            slice_seconds *= 2
+    return wall, steps, simulated
+
+
+def bare_steps(sim: Simulation, steps: int) -> float:
+    """Wall seconds of `steps` bare mj_step calls from a copy of the current state."""
+    data = copy.copy(sim.world.data)
+    model = sim.world.model
+    start = time.perf_counter()
+    for _ in range(steps):
+        mujoco.mj_step(model, data)
+    return time.perf_counter() - start
+
+
+def component_costs(sim: Simulation, calls: int = 200) -> dict[str, float]:
+    """Microseconds per robot per step of each component kind's step hooks, called on their own
+    (the state barely changes over a few hundred calls)."""
+    hooks = defaultdict(list)
+    for robot in sim.robots:
+        for component in robot.components:
+            for name in ("before_step", "after_step"):
+                if getattr(type(component), name) is not getattr(Component, name):
+                    hooks[type(component).__name__].append(getattr(component, name))
+    dt = sim.step_us / 1e6
+    costs = {}
+    for kind, functions in sorted(hooks.items()):
+        start = time.perf_counter()
+        for _ in range(calls):
+            for function in functions:
+                function(dt)
+        costs[kind] = (time.perf_counter() - start) / calls / len(sim.robots) * 1e6
+    return costs
+
+
+def measure(count: int, wall_seconds: float) -> dict:
+    sim = Simulation(square_drivers_scene(count), Clock("realtime", MAX_SPEED))
+    sim.step_observers.append(SquareDriver(sim))
+    sim.run(until=0.5)  # under way
+    loop, bare = [], []  # seconds per step, measured alternately
+    for _ in range(REPEATS):
+        wall, steps, simulated = run_for_wall_time(sim, wall_seconds)
+        loop.append(wall / steps)
+        bare.append(bare_steps(sim, steps) / steps)
+    step, mj_step = min(loop), min(bare)
+    overhead = step - mj_step
+    dt = sim.step_us / 1e6
+    return {"robots": count, "real_time_factor": dt / step, "bare_real_time_factor": dt / mj_step,
+            "step_us": step * 1e6, "mj_step_us": mj_step * 1e6,
+            "overhead_per_robot_us": overhead / count * 1e6, "mj_step_per_robot_us": mj_step / count * 1e6,
+            "overhead_ratio": overhead / mj_step, "components_per_robot_us": component_costs(sim)}
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--robots", type=int, nargs="+", default=[1, 10, 50, 100])
+    parser.add_argument("--seconds", type=float, default=2.0, help="wall time per measurement")
+    args = parser.parse_args()
+    results = [measure(count, args.seconds) for count in args.robots]
+    rows = [(r["robots"], f"{r['real_time_factor']:.1f}x", f"{r['bare_real_time_factor']:.1f}x", f"{r['step_us']:.0f}",
+             f"{r['mj_step_us']:.0f}", f"{r['overhead_per_robot_us']:.1f}", f"{r['mj_step_per_robot_us']:.1f}",
+             f"{r['overhead_ratio']:.2f}") for r in results]
+    print_table("Real-time factor, S4 robots driving squares under VW control (--speed max)", rows,
+                ("robots", "real time", "bare mj_step", "step us", "mj_step us", "ours/robot us", "mujoco/robot us",
+                 "ours/mujoco"))
+    print()
+    kinds = sorted({kind for r in results for kind in r["components_per_robot_us"]})
+    print_table("Step hooks per robot and step (us), by component kind", [
+        (r["robots"], *(f"{r['components_per_robot_us'].get(kind, 0):.2f}" for kind in kinds)) for r in results],
+        ("robots", *kinds))
+    by_count = {r["robots"]: r for r in results}
+    targets = []
+    if 1 in by_count:
+        targets.append(("one robot >= 50x real time", by_count[1]["real_time_factor"] >= 50))
+    if 100 in by_count:
+        targets.append(("100 robots >= 1x real time", by_count[100]["real_time_factor"] >= 1))
+    targets += [(f"{r['robots']} robots: our overhead <= 3x mj_step per robot", r["overhead_ratio"] <= 3)
+                for r in results]
+    print()
+    for name, met in targets:
+        print(f"{'met ' if met else 'MISSED'}  {name}")
+    path = write_results("realtime_factor", {"results": results, "targets": dict(targets)})
+    print(f"\nwritten to {path}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,20 @@
+/* Car slalom: the Ackermann car (examples/robots/Car.robi) drives ahead, steering left and right
+ * in turn. Motor 1 drives the rear axle; servo 1 steers: 0 = 45 deg left, 127 = ahead, 255 = right. */
+#include <stdio.h>
+#include "eyebot.h"
+
+int main(void)
+{
+    LCDPrintf("Car slalom\n");
+    MOTORDrive(1, 30);
+    for (int turn = 0; turn < 4; turn++) {
+        SERVOSet(1, turn % 2 ? 170 : 84); /* about 15 degrees right, then left */
+        OSWait(1200);
+    }
+    SERVOSet(1, 127);
+    OSWait(500);
+    MOTORDrive(1, 0);
+    LCDPrintf("done, axle turned %d ticks\n", ENCODERRead(1));
+    printf("axle %d\n", ENCODERRead(1));
+    return 0;
+}

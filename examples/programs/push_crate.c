@@ -1,0 +1,22 @@
+/* Push a crate: the Trolley (examples/robots/Trolley.robi) drives up to the crate ahead and
+ * pushes it 600 mm further, then backs off. */
+#include <stdio.h>
+#include "eyebot.h"
+
+int main(void)
+{
+    LCDPrintf("Pushing the crate\n");
+    while (PSDGet(PSD_FRONT) > 40) {
+        VWSetSpeed(200, 0);
+        OSWait(20);
+    }
+    VWStraight(600, 150);
+    VWWait();
+    VWStraight(-200, 200);
+    VWWait();
+    int x, y, z, phi;
+    SIMGetObject(1, &x, &y, &z, &phi);
+    LCDPrintf("crate now at %d %d\n", x, y);
+    printf("crate %d %d\n", x, y);
+    return 0;
+}

@@ -1,0 +1,84 @@
+"""Omni drive: four mecanum wheels (motors/encoders 1 front left, 2 front right, 3 back left,
+4 back right), so the robot can drive in any direction and turn at the same time.
+
+A mecanum wheel's rollers sit at 45 degrees: the wheel only pushes along its bottom roller's axis
+and rolls freely across it. That is modelled exactly by a plain wheel turned by 45 degrees that
+rolls along the roller's axis and slides freely along its own axle (a capsule touching the floor,
+whose contact friction is high along the rolling direction and nearly zero along the axle). As it
+rolls cos 45 as far per turn, it is geared to its motor by 1/cos 45 (a tendon), so the motor and
+its encoder turn exactly like the real wheel."""
+
+from __future__ import annotations
+
+import math
+
+import mujoco
+
+from eyesim.physics.units import mm
+from eyesim.robot.actuators import WheelMotor
+from eyesim.robot.component import Component
+from eyesim.robot.components.differential_drive import STALL_TORQUE, WHEEL_ARMATURE, WHEEL_DAMPING, WHEEL_MASS
+
+ROLLER_FRICTION = 0.02  # along the axle: what the rollers' bearings resist
+GRIP = 1.0  # along the rolling direction
+WHEEL_WIDTH = 0.02  # m
+# (name, motor, x sign, y sign, direction its bottom roller pushes when the wheel turns forward)
+WHEELS = (("front_left", 1, 1, 1, -45.0), ("front_right", 2, 1, -1, 45.0),
+          ("back_left", 3, -1, 1, 45.0), ("back_right", 4, -1, -1, -45.0))
+
+
+class OmniDrive(Component):
+    kind = "omni_drive"
+
+    def __init__(self, context):
+        robot_type = context.robot_type
+        wheels = robot_type.wheels
+        self.radius = mm(wheels.diameter) / 2
+        self.track = mm(wheels.track)
+        # The axles sit a wheel radius inside the chassis' front and back.
+        self.wheelbase = max(mm(robot_type.length) - 2 * self.radius, self.radius)
+        self.ticks_per_rev = wheels.ticks_per_rev
+        spec, prefix = context.spec, context.prefix
+        self.motors = {}
+        for name, motor, x_sign, y_sign, heading in WHEELS:
+            body_name = f"{prefix}/wheel_{name}"
+            half = math.radians(heading) / 2
+            wheel = context.add_part(context.body, body_name, WHEEL_MASS, shown=True,
+                                     pos=[x_sign * self.wheelbase / 2, y_sign * self.track / 2, self.radius],
+                                     quat=[math.cos(half), 0.0, 0.0, math.sin(half)])
+            wheel.add_joint(name=body_name, type=mujoco.mjtJoint.mjJNT_HINGE, axis=[0, 1, 0], damping=WHEEL_DAMPING,
+                            armature=WHEEL_ARMATURE)
+            # A capsule along the axle (MuJoCo's capsule stands along z: turn it onto y).
+            wheel.add_geom(name=body_name, type=mujoco.mjtGeom.mjGEOM_CAPSULE, size=[self.radius, WHEEL_WIDTH / 2, 0],
+                           quat=[math.cos(math.pi / 4), -math.sin(math.pi / 4), 0, 0], mass=WHEEL_MASS,
+                           contype=0, conaffinity=0, rgba=[0.15, 0.15, 0.15, 1.0])
+            # The capsule-floor contact frame's first direction is the capsule's axis.
+            spec.add_pair(geomname1=body_name, geomname2="floor", condim=3,
+                          friction=[ROLLER_FRICTION, GRIP, 0.005, 0.0001, 0.0001])
+            shaft = f"{body_name}/shaft"
+            tendon = spec.add_tendon(name=shaft)
+            tendon.wrap_joint(body_name, math.sqrt(2))
+            self.motors[motor] = WheelMotor(spec, shaft, shaft, mujoco.mjtTrn.mjTRN_TENDON, wheels.ticks_per_rev,
+                                            math.radians(wheels.max_speed), STALL_TORQUE)
+        self.encoders = self.motors
+
+    def bind(self, world) -> None:
+        super().bind(world)
+        for motor in self.motors.values():
+            motor.bind(world)
+
+    def reset(self) -> None:
+        for motor in self.motors.values():
+            motor.reset()
+
+    def before_step(self, dt: float) -> None:
+        for motor in self.motors.values():
+            if motor.needs_update:
+                motor.update(dt)
+
+
+def create(context) -> list[Component]:
+    robot_type = context.robot_type
+    if robot_type.drive != "omni" or robot_type.wheels is None:
+        return []
+    return [OmniDrive(context)]

@@ -1,0 +1,48 @@
+"""The V-omega group on the robots it serves and the ones it does not."""
+
+import pytest
+from support.client import RemoteError
+from support.connected import connected_program
+from support.worlds import arena_scene, example_robot
+
+from eyesim.protocol import generated as g
+
+
+def test_remain_and_stalled_while_driving():
+    with connected_program(arena_scene([("S4", (500, 500, 0))], size=1000)) as (sim, client):
+        assert client.call("VW_REMAIN") == (0,)
+        client.call("VW_STRAIGHT", 800, 300)
+        assert client.call("VW_REMAIN") == (800,)
+        client.call("OS_WAIT", 500)
+        assert 500 < client.call("VW_REMAIN")[0] < 800
+        assert client.call("VW_STALLED") == (0,)
+        client.call("OS_WAIT", 3000)  # the wall is 400 mm ahead
+        assert client.call("VW_STALLED") == (3,)
+        assert client.call("VW_DONE") == (0,)
+        client.call("VW_SET_SPEED", 0, 0)
+        client.call("OS_WAIT", 300)
+        assert client.call("VW_STALLED") == (0,)
+        client.call("VW_TURN", 90, 90)
+        assert client.call("VW_REMAIN") == (round(3.14159265 / 2 * 45),)  # each wheel's travel on the spot
+        client.call("VW_WAIT")
+        assert client.call("VW_REMAIN") == (0,)
+
+
+@pytest.mark.parametrize("turn,stalled", [(-60, 1), (60, 2)])
+def test_one_stalled_wheel_sets_its_bit(turn, stalled):
+    # Nose at the north wall, turning on the spot: the wheel that drives the nose into the wall is
+    # blocked, the other one turns on (the robot pivots back about its corner).
+    with connected_program(arena_scene([("S4", (500, 910, 90))], size=1000)) as (sim, client):
+        client.call("VW_SET_SPEED", 0, turn)
+        client.call("OS_WAIT", 300)
+        assert client.call("VW_STALLED") == (stalled,)
+
+
+@pytest.mark.parametrize("robot", ["Car", "Mecanum", "Minnow", "Reacher"])
+def test_robots_without_a_differential_drive_have_no_vw(robot):
+    with connected_program(arena_scene([(example_robot(robot), (1500, 1500, 0))], wall_height=1500)) as (sim, client):
+        for op, args in (("VW_SET_SPEED", (100, 0)), ("VW_STRAIGHT", (100, 100)), ("VW_REMAIN", ()),
+                         ("VW_STALLED", ()), ("VW_CURVE", (100, 10, 100)), ("VW_DRIVE", (100, 10, 100))):
+            with pytest.raises(RemoteError, match="has no V-omega drive") as error:
+                client.call(op, *args)
+            assert error.value.code == g.ERR_NOT_SUPPORTED
