@@ -4,13 +4,22 @@ from eyesim.commands.errors import CommandError
 from eyesim.robot.components.psd import PsdSensor
 
 
-def psd_get(sim, robot, request):
-    (psd_id,) = request.args
+def _sensor(robot, psd_id: int, function: str) -> PsdSensor:
     for sensor in robot.components_of(PsdSensor):
         if sensor.id == psd_id:
-            return (sensor.distance_mm(),)
+            return sensor
     ids = sorted(s.id for s in robot.components_of(PsdSensor))
-    raise CommandError(f"PSDGet: robot {robot.id} has no PSD {psd_id} (it has {ids or 'none'})")
+    raise CommandError(f"{function}: robot {robot.id} has no PSD {psd_id} (it has {ids or 'none'})")
 
 
-HANDLERS = {"PSD_GET": psd_get}
+def psd_get(sim, robot, request):
+    (psd_id,) = request.args
+    return (_sensor(robot, psd_id, "PSDGet").distance_mm(),)
+
+
+def psd_get_raw(sim, robot, request):
+    (psd_id,) = request.args
+    return (_sensor(robot, psd_id, "PSDGetRaw").raw(),)
+
+
+HANDLERS = {"PSD_GET": psd_get, "PSD_GET_RAW": psd_get_raw}

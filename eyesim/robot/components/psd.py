@@ -12,6 +12,15 @@ from eyesim.robot.component import Component
 from eyesim.scene.description import PsdSpec
 
 MAX_RANGE_MM = 9999  # what PSDGet returns when nothing is within range
+# PSDGetRaw's sensor curve, a 10-bit reading falling with distance like a Sharp IR sensor's
+# output voltage: raw = RAW_SCALE / (mm + RAW_OFFSET), so 0 mm -> 1023, 100 mm -> 512, 1 m -> 93.
+RAW_SCALE = 102300
+RAW_OFFSET = 100
+
+
+def raw_value(distance_mm: int) -> int:
+    """The raw reading of a sensor that measures `distance_mm` (see RAW_SCALE)."""
+    return min(1023, round(RAW_SCALE / (max(0, distance_mm) + RAW_OFFSET)))
 
 
 class PsdSensor(Component):
@@ -26,26 +35,46 @@ class PsdSensor(Component):
         self.site_name = f"{context.prefix}/psd{spec.id}"
         context.body.add_site(name=self.site_name, pos=[mm(spec.x), mm(spec.y), mm(spec.z)],
                               quat=beam_quat(spec.heading, spec.pitch), size=[0.004, 0, 0], group=4)
+        self.noise_mm = context.settings.psd_noise
+        # One generator per sensor, seeded by the scene's seed and the sensor's identity: the
+        # noise a sensor sees does not depend on what other sensors or robots read.
+        self._seed = (context.settings.seed, context.robot.id, spec.id)
         self._hit = np.zeros(1, dtype=np.int32)
 
     def bind(self, world) -> None:
         super().bind(world)
         self.site = mujoco.mj_name2id(world.model, mujoco.mjtObj.mjOBJ_SITE, self.site_name)
 
+    def reset(self) -> None:
+        self.random = np.random.default_rng(self._seed) if self.noise_mm > 0 else None
+
     @property
     def id(self) -> int:
         return self.spec.id
 
-    def distance_mm(self) -> int:
-        """Distance to the first thing the beam hits (walls, objects, other robots; not the
-        robot's own body), rounded to mm; MAX_RANGE_MM when nothing is in range."""
+    def beam(self) -> tuple[np.ndarray, np.ndarray, float | None]:
+        """The beam's origin and unit direction (world) and the exact distance in metres to the
+        first thing it hits (walls, objects, other robots; not the robot's own body), or None."""
         data = self.world.data
         origin = data.site_xpos[self.site]
         direction = data.site_xmat[self.site][0::3].copy()  # the site's x axis
         hit = mujoco.mj_ray(self.world.model, data, origin, direction, None, 1, self.robot.body, self._hit)
-        if hit < 0:
+        return origin, direction, (hit if hit >= 0 else None)
+
+    def distance_mm(self) -> int:
+        """What PSDGet reports: the distance rounded to mm, with the scene's noise if it has any;
+        MAX_RANGE_MM when nothing is in range."""
+        _, _, hit = self.beam()
+        if hit is None:
             return MAX_RANGE_MM
-        return min(MAX_RANGE_MM, int(round(to_mm(hit))))
+        distance = to_mm(hit)
+        if self.random is not None:
+            distance += self.random.normal(0.0, self.noise_mm)
+        return max(0, min(MAX_RANGE_MM, int(round(distance))))
+
+    def raw(self) -> int:
+        """What PSDGetRaw reports: the reading's distance through the sensor curve."""
+        return raw_value(self.distance_mm())
 
 
 def beam_quat(heading: float, pitch: float) -> list[float]:

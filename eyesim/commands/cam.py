@@ -1,0 +1,58 @@
+"""RoBIOS camera group: CAMInit/CAMRelease and colour and gray frames from the robot's camera."""
+
+from eyesim.commands.errors import CommandError, require
+from eyesim.physics.render import to_gray
+from eyesim.robot.components.camera import Camera
+
+# RoBIOS resolution constants -> (width, height)
+RESOLUTIONS = {0: (160, 120), 1: (320, 240), 2: (640, 480), 3: (1296, 730), 4: (1920, 1080), 5: (2592, 1944)}
+NAMES = "QQVGA 0, QVGA 1, VGA 2, CAM1MP 3, CAMHD 4, CAM5MP 5"
+CUSTOM = 10
+
+
+def _camera(robot) -> Camera:
+    return require(robot.component(Camera), robot, "camera")
+
+
+def _started(robot, function: str) -> Camera:
+    camera = _camera(robot)
+    if camera.size is None:
+        raise CommandError(f"{function}: the camera is not initialised; call CAMInit first")
+    return camera
+
+
+def cam_init(sim, robot, request):
+    (resolution,) = request.args
+    camera = _camera(robot)
+    if resolution == CUSTOM:
+        raise CommandError("CAMInit: CUSTOM is for LCD images only; the camera takes " + NAMES)
+    if resolution not in RESOLUTIONS:
+        raise CommandError(f"CAMInit: unknown resolution {resolution}; expected one of {NAMES}")
+    width, height = RESOLUTIONS[resolution]
+    camera.start(width, height)
+    return (0, width, height)
+
+
+def cam_release(sim, robot, request):
+    _camera(robot).stop()
+    return (0,)
+
+
+def cam_get(sim, robot, request):
+    camera = _started(robot, "CAMGet")
+    image = camera.capture()
+    return (0, camera.size[0], camera.size[1], image.tobytes())
+
+
+def cam_get_gray(sim, robot, request):
+    camera = _started(robot, "CAMGetGray")
+    image = camera.capture()
+    return (0, camera.size[0], camera.size[1], to_gray(image).tobytes())
+
+
+HANDLERS = {
+    "CAM_INIT": cam_init,
+    "CAM_RELEASE": cam_release,
+    "CAM_GET": cam_get,
+    "CAM_GET_GRAY": cam_get_gray,
+}

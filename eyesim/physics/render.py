@@ -1,0 +1,158 @@
+"""Camera images of the MuJoCo world: what a view is, how it is lit, and which renderer draws it.
+
+Two renderers draw the same picture: MuJoCo's OpenGL renderer (render_gl.py) wherever an OpenGL
+context can be made, and a CPU ray caster (render_raycast.py) everywhere else. The choice is made
+once per process, on the first camera use, and announced in one line on stderr."""
+
+from __future__ import annotations
+
+import logging
+import os
+import sys
+import threading
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+log = logging.getLogger("eyesim")
+
+# Lighting shared by both renderers, so they agree: a light at the camera (ambient + diffuse
+# along the view direction) and a light from straight above, no specular highlights, no
+# shadows. A surface facing the camera head-on, or the floor, shows its own colour.
+HEADLIGHT_AMBIENT = 0.5
+HEADLIGHT_DIFFUSE = 0.5
+TOP_LIGHT_DIFFUSE = 0.5
+BACKGROUND = (0, 0, 0)  # what a ray that hits nothing shows
+NEAR = 0.005  # m: nearest distance a camera sees
+FAR = 50.0  # m
+
+# MUJOCO_GL values that switch OpenGL off (as MuJoCo reads them).
+GL_OFF = ("disable", "disabled", "off", "false", "0")
+
+
+@dataclass(frozen=True)
+class View:
+    """What a camera sees: its world position (m), unit view direction and unit up vector
+    (perpendicular to forward), image size, horizontal field of view, and lens. A fisheye lens
+    is equidistant (angle off the axis proportional to the distance from the image centre) with
+    an image circle as wide as the image; outside the circle the image is black.
+    `own_body` is the camera's robot chassis, which the ray caster looks through."""
+
+    position: tuple[float, float, float]
+    forward: tuple[float, float, float]
+    up: tuple[float, float, float]
+    width: int
+    height: int
+    fov: float  # degrees, horizontal
+    fisheye: bool = False
+    own_body: int = -1
+
+    @property
+    def right(self) -> np.ndarray:
+        return np.cross(self.forward, self.up)
+
+
+def camera_rays(width: int, height: int, fov: float, fisheye: bool) -> tuple[np.ndarray, np.ndarray]:
+    """Unit ray directions of every pixel (row-major, top row first) in the camera frame
+    (x right, y up, z forward), and a mask of the pixels inside the lens (all, unless fisheye)."""
+    return _camera_rays(width, height, float(fov), bool(fisheye))
+
+
+@lru_cache(maxsize=16)
+def _camera_rays(width: int, height: int, fov: float, fisheye: bool) -> tuple[np.ndarray, np.ndarray]:
+    half = np.radians(fov) / 2
+    u = np.arange(width) - (width - 1) / 2  # pixel centres, right positive
+    v = (height - 1) / 2 - np.arange(height)  # up positive
+    uu, vv = np.meshgrid(u, v)
+    if fisheye:
+        angle_per_pixel = half / (width / 2)
+        radius = np.hypot(uu, vv)
+        theta = radius * angle_per_pixel
+        inside = radius <= width / 2
+        scale = np.where(radius > 0, np.sin(theta) / np.maximum(radius, 1e-12), 0.0)
+        rays = np.stack([uu * scale, vv * scale, np.cos(theta)], axis=-1)
+    else:
+        focal = (width / 2) / np.tan(half)
+        rays = np.stack([uu, vv, np.full_like(uu, focal)], axis=-1)
+        rays /= np.linalg.norm(rays, axis=-1, keepdims=True)
+        inside = np.ones(uu.shape, dtype=bool)
+    rays = rays.reshape(-1, 3)
+    rays.setflags(write=False)
+    inside = inside.reshape(-1)
+    inside.setflags(write=False)
+    return rays, inside
+
+
+def camera_ray_axes(width: int, height: int, fov: float, fisheye: bool) -> tuple[np.ndarray, ...]:
+    """camera_rays as three contiguous arrays, x, y and z of every pixel's ray."""
+    return _camera_ray_axes(width, height, float(fov), bool(fisheye))
+
+
+@lru_cache(maxsize=16)
+def _camera_ray_axes(width: int, height: int, fov: float, fisheye: bool) -> tuple[np.ndarray, ...]:
+    rays, _ = camera_rays(width, height, fov, fisheye)
+    axes = tuple(np.ascontiguousarray(rays[:, axis], dtype=np.float32) for axis in range(3))
+    for axis in axes:
+        axis.setflags(write=False)
+    return axes
+
+
+def shade(base_rgb: np.ndarray, normals: np.ndarray, forward: np.ndarray) -> np.ndarray:
+    """Colours (n, 3) 0..1 lit by the shared lights, for surface normals (n, 3) facing the viewer."""
+    light = HEADLIGHT_AMBIENT + HEADLIGHT_DIFFUSE * np.maximum(-dot(normals, forward), 0.0)
+    light += TOP_LIGHT_DIFFUSE * np.maximum(normals[:, 2], 0.0)
+    return np.minimum(base_rgb * light[:, None], 1.0)
+
+
+# Products of many 3-vectors with one small matrix or vector, element by element: a BLAS call for
+# so thin a product is slower, and on a busy machine far slower (its threads wait for cores).
+def times(vectors: np.ndarray, matrix: np.ndarray) -> np.ndarray:
+    """vectors (n, 3) @ matrix (3, 3)."""
+    return vectors[:, 0, None] * matrix[0] + vectors[:, 1, None] * matrix[1] + vectors[:, 2, None] * matrix[2]
+
+
+def dot(vectors: np.ndarray, vector) -> np.ndarray:
+    """vectors (n, 3) . vector (3,)."""
+    return vectors[:, 0] * vector[0] + vectors[:, 1] * vector[1] + vectors[:, 2] * vector[2]
+
+
+def to_gray(image: np.ndarray) -> np.ndarray:
+    """CAMGetGray's conversion, the same as IPCol2Gray's: (R + G + B) / 3, rounded down."""
+    return (image.astype(np.uint16).sum(axis=2) // 3).astype(np.uint8)
+
+
+# -- choosing the renderer -----------------------------------------------------------------------
+_lock = threading.Lock()
+_renderer = None
+
+
+def camera_renderer():
+    """The process's renderer: OpenGL when a context can be made, else the ray caster."""
+    global _renderer
+    with _lock:
+        if _renderer is None:
+            _renderer = _choose()
+        return _renderer
+
+
+def _choose():
+    from eyesim.physics import render_gl
+    from eyesim.physics.render_raycast import RayCastRenderer
+
+    requested = os.environ.get("MUJOCO_GL", "").strip().lower()
+    if requested in GL_OFF:
+        _notice(f"cameras use the CPU ray caster (MUJOCO_GL={requested})")
+        return RayCastRenderer()
+    try:
+        backend = render_gl.choose_backend(requested)
+        renderer = render_gl.GlRenderer(backend)
+    except render_gl.NoOpenGL as error:
+        _notice(f"no OpenGL context ({error}); cameras use the CPU ray caster")
+        return RayCastRenderer()
+    log.info("cameras render with OpenGL (%s)", backend)
+    return renderer
+
+
+def _notice(text: str) -> None:
+    print(f"eyesim: {text}", file=sys.stderr, flush=True)
