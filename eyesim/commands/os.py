@@ -1,7 +1,9 @@
-"""RoBIOS system/timer group: waiting and counting in simulation time (milliseconds)."""
+"""RoBIOS system group: waiting and counting in simulation time (milliseconds), and the machine's identity."""
 
 from eyesim.commands.errors import CommandError
 from eyesim.session import Pending
+
+VEHICLE, PLATFORM = 1, 2  # OSMachineType values (WALKER = 3: no walking robots here)
 
 
 def os_wait(sim, robot, request):
@@ -16,4 +18,23 @@ def os_get_count(sim, robot, request):
     return (request.time_us // 1000,)
 
 
-HANDLERS = {"OS_WAIT": os_wait, "OS_GET_COUNT": os_get_count}
+def os_machine_name(sim, robot, request):
+    return (robot.name,)
+
+
+def os_machine_id(sim, robot, request):
+    return (robot.id,)
+
+
+def os_machine_type(sim, robot, request):
+    """A manipulator on a fixed base is a PLATFORM; everything that moves about is a VEHICLE."""
+    return (PLATFORM if robot.type.drive == "arm" else VEHICLE,)
+
+
+HANDLERS = {
+    "OS_WAIT": os_wait,
+    "OS_GET_COUNT": os_get_count,
+    "OS_MACHINE_NAME": os_machine_name,
+    "OS_MACHINE_ID": os_machine_id,
+    "OS_MACHINE_TYPE": os_machine_type,
+}

@@ -1,7 +1,5 @@
 """The real simulator with a real C program, watched and driven from headless Chromium."""
 
-import re
-import subprocess
 import sys
 from pathlib import Path
 
@@ -10,7 +8,7 @@ import pytest
 from browser import open_viewer, read_lcd_pixels, soft_key, wait_for_lcd
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from support.programs import build, eyesim_command  # noqa: E402
+from support.programs import build, simulator_with_viewer  # noqa: E402
 
 pytestmark = pytest.mark.browser
 
@@ -18,19 +16,8 @@ pytestmark = pytest.mark.browser
 @pytest.fixture
 def simulator(tmp_path):
     program = build("lcd_and_key", tmp_path)
-    process = subprocess.Popen(eyesim_command("run", "--port", "0", "--viewer-port", "0", "--program",
-                                              f"1={program}"),
-                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=tmp_path)
-    url = None
-    for line in process.stdout:
-        match = re.search(r"viewer: (http://\S+)", line)
-        if match:
-            url = match.group(1)
-            break
-    assert url, "the simulator printed no viewer URL"
-    yield process, url
-    process.terminate()
-    process.wait(timeout=10)
+    with simulator_with_viewer("--program", f"1={program}", cwd=tmp_path) as running:
+        yield running
 
 
 def test_the_page_shows_the_robot_driving_and_its_lcd_and_key1_reaches_the_program(browser_context, simulator):

@@ -17,22 +17,13 @@ from PIL import Image
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.client import ProgramClient  # noqa: E402
 from support.scenes import arena  # noqa: E402
-from support.simulator import running_simulation  # noqa: E402
-
-from eyesim.net.io_thread import IoThread  # noqa: E402
-from eyesim.web.server import ViewerServer  # noqa: E402
+from support.viewer import run_async, viewer_simulation  # noqa: E402
 
 
 @pytest.fixture
 def viewer_sim():
-    with running_simulation(arena()) as (sim, port):
-        io = IoThread()
-        io.start()
-        server = ViewerServer(sim, io, "127.0.0.1", 0)
-        server.start()
-        yield sim, port, server
-        server.stop()
-        io.stop()
+    with viewer_simulation(arena()) as running:
+        yield running
 
 
 async def _collect(url: str, until, send=(), timeout: float = 20.0) -> list[dict]:
@@ -57,7 +48,7 @@ def test_a_browser_gets_the_scene_then_snapshots_and_the_lcd(viewer_sim):
     program.hello()
     program.call("LCD_PRINTF", "hello viewer")
     program.call("LCD_MENU", "A", "B", "C", "D")
-    messages = asyncio.run(_collect(f"ws://127.0.0.1:{server.port}/ws",
+    messages = run_async(_collect(f"ws://127.0.0.1:{server.port}/ws",
                                     lambda ms: {"snapshot", "lcd", "menu", "status"} <= {m["type"] for m in ms}))
     assert messages[0]["type"] == "scene"
     assert len(messages[0]["walls"]) == 4 and messages[0]["robots"][0]["name"] == "S4"
@@ -73,7 +64,7 @@ def test_bad_browser_commands_get_an_error_and_change_nothing(viewer_sim):
     sim, port, server = viewer_sim
     bad = [{"type": "key", "robot": 1, "key": 3}, {"type": "key", "robot": 7, "key": 1},
            {"type": "speed", "value": -1}, {"type": "warp"}]
-    messages = asyncio.run(_collect(f"ws://127.0.0.1:{server.port}/ws",
+    messages = run_async(_collect(f"ws://127.0.0.1:{server.port}/ws",
                                     lambda ms: sum(m["type"] == "error" for m in ms) == len(bad), send=bad))
     errors = [m["message"] for m in messages if m["type"] == "error"]
     assert any("not one of 1, 2, 4, 8" in e for e in errors) and any("no robot 7" in e for e in errors)
@@ -108,7 +99,7 @@ def test_a_browser_that_never_reads_slows_down_nobody(viewer_sim):
                         snapshot_time = message["time"]
                 return lcd_images, snapshot_time
 
-    lcd_images, snapshot_time = asyncio.run(asyncio.wait_for(healthy_browser(), timeout=60))
+    lcd_images, snapshot_time = run_async(asyncio.wait_for(healthy_browser(), timeout=60))
     assert lcd_images >= 20 and snapshot_time >= start_time + 1.0
     assert program.call("PSD_GET", 1)[0] > 0
     stuck.close()

@@ -1,4 +1,4 @@
-"""The four soft keys: presses from the viewer or a script, consumed by KEYGet/KEYRead."""
+"""The four soft keys and the LCD's touch screen: presses and touches from the viewer or a script."""
 
 from __future__ import annotations
 
@@ -9,18 +9,23 @@ from eyesim.robot.component import Component
 KEY1, KEY2, KEY3, KEY4 = 0x1, 0x2, 0x4, 0x8
 KEYS = (KEY1, KEY2, KEY3, KEY4)
 KEY_NAMES = {"KEY1": KEY1, "KEY2": KEY2, "KEY3": KEY3, "KEY4": KEY4}
+MAX_WAITING = 256  # presses or touches nobody has read yet; older ones are dropped beyond this
 
 
 class Keys(Component):
-    """Each press is delivered exactly once, in order, to KEYGet or KEYRead."""
+    """Each press is delivered exactly once, in order, to KEYGet, KEYRead or KEYWait; each touch
+    (LCD pixel coordinates) once to KEYGetXY or KEYReadXY. A touch on the shown menu bar is a
+    press of that soft key instead (see eyesim.robot_input.touch)."""
 
     kind = "keys"
 
     def __init__(self):
-        self.presses: deque[int] = deque()
+        self.presses: deque[int] = deque(maxlen=MAX_WAITING)
+        self.touches: deque[tuple[int, int]] = deque(maxlen=MAX_WAITING)
 
     def reset(self) -> None:
         self.presses.clear()
+        self.touches.clear()
 
     def press(self, key: int) -> None:
         if key not in KEYS:
@@ -30,6 +35,20 @@ class Keys(Component):
     def take(self) -> int:
         """The oldest unread press, or 0 (NOKEY)."""
         return self.presses.popleft() if self.presses else 0
+
+    def take_matching(self, mask: int) -> int:
+        """The oldest press of a key in `mask`, or 0; presses of other keys are dropped (KEYWait)."""
+        while self.presses:
+            key = self.presses.popleft()
+            if key & mask:
+                return key
+        return 0
+
+    def touch(self, x: int, y: int) -> None:
+        self.touches.append((x, y))
+
+    def take_touch(self) -> tuple[int, int] | None:
+        return self.touches.popleft() if self.touches else None
 
 
 def create(context) -> list[Component]:

@@ -1,137 +1,372 @@
-"""The robot's 480x320 LCD: a framebuffer the simulator keeps, with a text terminal and a menu bar."""
+"""The robot's 480x320 LCD: a framebuffer the simulator keeps, with a text terminal, graphics and a menu bar."""
 
 from __future__ import annotations
 
-import io
+from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
-from PIL import Image, ImageDraw, ImageFont
+from PIL import Image, ImageDraw
 
+from eyesim.robot import lcd_fonts
 from eyesim.robot.component import Component
+from eyesim.robot.lcd_fonts import BOLD, FONT_NAMES, ITALICS, NORMAL, cell_size
 
 WIDTH, HEIGHT = 480, 320
 MENU_HEIGHT = 38  # pixel rows of the soft-key menu bar at the bottom
-CELL_WIDTH, CELL_HEIGHT = 8, 13  # pixels of one text cell
-COLUMNS = WIDTH // CELL_WIDTH  # 60
-ROWS = (HEIGHT - MENU_HEIGHT) // CELL_HEIGHT  # 21
+CELL_WIDTH, CELL_HEIGHT = cell_size(lcd_fonts.DEFAULT_SIZE)  # 8 x 13 pixels at the default font size
+COLUMNS = WIDTH // CELL_WIDTH  # 60 at the default font size
+ROWS = (HEIGHT - MENU_HEIGHT) // CELL_HEIGHT  # 21 at the default font size, with the menu shown
 TAB = 4
+MENU_LABEL_LENGTH = 32  # LCD_MENU_STRLENGTH
 
 WHITE, BLACK = 0xFFFFFF, 0x000000
 MENU_BACKGROUND = 0x303030
 MENU_BORDER = 0x808080
+
+# LCDSetMode flags: each "off" flag is the "on" flag shifted 8 bits up.
+AUTOREFRESH, SCROLLING, LINEFEED, SHOWMENU, LISTMENU, FB_ROTATE = 0x01, 0x02, 0x04, 0x08, 0x10, 0x80
+MODE_SETTINGS = {AUTOREFRESH: "autorefresh", SCROLLING: "scrolling", LINEFEED: "linefeed",
+                 SHOWMENU: "menu_visible", LISTMENU: "list_menu", FB_ROTATE: "rotated"}
+KNOWN_MODE_BITS = sum(MODE_SETTINGS) | (sum(MODE_SETTINGS) << 8)
+
+IMAGE_COLOR, IMAGE_GRAY, IMAGE_BINARY = 0, 1, 2
+IMAGE_CHANNELS = {IMAGE_COLOR: 3, IMAGE_GRAY: 1, IMAGE_BINARY: 1}
 
 
 def rgb(color: int) -> tuple[int, int, int]:
     return (color >> 16) & 0xFF, (color >> 8) & 0xFF, color & 0xFF
 
 
-def _glyph_masks() -> dict[str, np.ndarray]:
-    """Pixel masks (CELL_HEIGHT x CELL_WIDTH) of the printable ASCII characters."""
-    font = ImageFont.load_default_imagefont()  # fixed 6x11 bitmap font shipped with Pillow
-    masks = {}
-    for code in range(32, 127):
-        image = Image.new("1", (CELL_WIDTH, CELL_HEIGHT), 0)
-        ImageDraw.Draw(image).text((1, 1), chr(code), fill=1, font=font)
-        masks[chr(code)] = np.array(image, dtype=bool)
-    return masks
+def check_color(color: int, what: str = "colour") -> int:
+    if not 0 <= color <= 0xFFFFFF:
+        raise ValueError(f"{what} {color:#x} is not a 0xRRGGBB colour" if color >= 0 else
+                         f"{what} {color} is not a 0xRRGGBB colour")
+    return color
 
 
-GLYPHS = _glyph_masks()
+@lru_cache(maxsize=8192)
+def _cell_pixels(font: int, variation: int, size: int, char: str, fg: int, bg: int) -> np.ndarray:
+    """A character cell in colour: the glyph's coverage blends the foreground into the background."""
+    coverage = lcd_fonts.glyph(font, variation, size, char).astype(np.uint32)[:, :, None]
+    fg_rgb, bg_rgb = np.array(rgb(fg), np.uint32), np.array(rgb(bg), np.uint32)
+    return ((fg_rgb * coverage + bg_rgb * (255 - coverage) + 127) // 255).astype(np.uint8)
+
+
+@dataclass
+class MenuEntry:
+    label: str = ""
+    fg: int = WHITE
+    bg: int = MENU_BACKGROUND
 
 
 class Lcd(Component):
     """Text output works like a terminal: the cursor advances, `\\n` starts a new line, long lines
-    wrap, and printing past the last row scrolls the text area up."""
+    wrap, and printing past the last row scrolls the text area up (LCDSetMode can turn wrapping
+    and scrolling off). `pixels` is what the program drew, read back by LCDGetPixel; `screen()` is
+    what the LCD shows, which lags behind until LCDRefresh when auto-refresh is off."""
 
     kind = "lcd"
 
     def __init__(self):
         self.pixels = np.zeros((HEIGHT, WIDTH, 3), dtype=np.uint8)
+        self.version = 0  # bumped on every visible change, so publishers know when to send
         self.reset()
 
     def reset(self) -> None:
         self.pixels[:] = 0
+        self.shown: np.ndarray | None = None  # frozen screen while auto-refresh is off
         self.row = self.column = 0
         self.foreground, self.background = WHITE, BLACK
-        self.menu: list[str] | None = None
-        self.version = 0  # bumped on every change, so publishers know when to send
+        self.font, self.variation, self.font_size = lcd_fonts.DEFAULT_FONT, NORMAL, lcd_fonts.DEFAULT_SIZE
+        self.autorefresh = self.scrolling = self.linefeed = self.menu_visible = True
+        self.list_menu = self.rotated = False
+        self.menu: list[str] | None = None  # the soft-key labels, once LCDMenu set them
+        self.menu_entries = [MenuEntry() for _ in range(4)]
+        self.version += 1
 
     def _changed(self) -> None:
-        self.version += 1
+        if self.autorefresh:
+            self.version += 1
+
+    # -- geometry ---------------------------------------------------------------------------
+    @property
+    def cell(self) -> tuple[int, int]:
+        """(width, height) of a text cell at the current font size."""
+        return cell_size(self.font_size)
+
+    @property
+    def text_height(self) -> int:
+        """Pixel rows available to text: all but the menu bar while it is shown."""
+        return HEIGHT - MENU_HEIGHT if self.menu_visible else HEIGHT
+
+    @property
+    def rows(self) -> int:
+        return self.text_height // self.cell[1]
+
+    @property
+    def columns(self) -> int:
+        return WIDTH // self.cell[0]
 
     # -- text ------------------------------------------------------------------------------
     def set_position(self, row: int, column: int) -> None:
-        self.row = max(0, min(ROWS - 1, row))
-        self.column = max(0, min(COLUMNS - 1, column))
+        if not 0 <= row < self.rows:
+            raise ValueError(f"row {row} is outside the text rows 0..{self.rows - 1}")
+        if not 0 <= column < self.columns:
+            raise ValueError(f"column {column} is outside the text columns 0..{self.columns - 1}")
+        self.row, self.column = row, column
 
     def print(self, text: str) -> None:
-        fg, bg = np.array(rgb(self.foreground), np.uint8), np.array(rgb(self.background), np.uint8)
         for char in text:
             if char == "\n":
                 self._new_line()
-                continue
-            if char == "\r":
+            elif char == "\r":
                 self.column = 0
-                continue
-            if char == "\t":
-                spaces = TAB - self.column % TAB
-                self.print(" " * spaces)
-                continue
-            if self.column >= COLUMNS:
-                self._new_line()
-            mask = GLYPHS.get(char, GLYPHS["?"])
-            y, x = self.row * CELL_HEIGHT, self.column * CELL_WIDTH
-            self.pixels[y:y + CELL_HEIGHT, x:x + CELL_WIDTH] = np.where(mask[:, :, None], fg, bg)
-            self.column += 1
+            elif char == "\t":
+                for _ in range(TAB - self.column % TAB):
+                    self._put(" ")
+            else:
+                self._put(char if char.isprintable() else "?")
         self._changed()
+
+    def _put(self, char: str) -> None:
+        if self.column >= self.columns:
+            if not self.linefeed:
+                return  # without line feed, text beyond the last column is cut off
+            self._new_line()
+        width, height = self.cell
+        y, x = self.row * height, self.column * width
+        self.pixels[y:y + height, x:x + width] = _cell_pixels(self.font, self.variation, self.font_size, char,
+                                                              self.foreground, self.background)
+        self.column += 1
 
     def _new_line(self) -> None:
         self.column = 0
-        if self.row + 1 < ROWS:
+        if self.row + 1 < self.rows:
             self.row += 1
-            return
-        text_bottom = ROWS * CELL_HEIGHT
-        self.pixels[:text_bottom - CELL_HEIGHT] = self.pixels[CELL_HEIGHT:text_bottom]
-        self.pixels[text_bottom - CELL_HEIGHT:text_bottom] = rgb(self.background)
+        elif self.scrolling:
+            height = self.cell[1]
+            bottom = self.rows * height
+            self.pixels[:bottom - height] = self.pixels[height:bottom]
+            self.pixels[bottom - height:bottom] = rgb(self.background)
+        else:
+            self.row = 0
 
     def clear(self) -> None:
-        """Black screen, cursor home; the menu bar stays."""
-        self.pixels[:HEIGHT - MENU_HEIGHT] = 0
-        if self.menu is None:
-            self.pixels[HEIGHT - MENU_HEIGHT:] = 0
+        """Black screen, cursor home; a menu that is set stays."""
+        self.pixels[:] = 0
+        self._draw_menu()
         self.row = self.column = 0
         self._changed()
 
+    def set_color(self, foreground: int, background: int) -> None:
+        self.foreground = check_color(foreground, "foreground")
+        self.background = check_color(background, "background")
+
+    def set_font(self, font: int, variation: int) -> None:
+        if font not in FONT_NAMES:
+            raise ValueError(f"font {font} is not HELVETICA (0), TIMES (1) or COURIER (2)")
+        if variation not in (NORMAL, BOLD, ITALICS, BOLD | ITALICS):
+            raise ValueError(f"variation {variation} is not NORMAL (0), BOLD (1), ITALICS (2) or BOLD|ITALICS (3)")
+        lcd_fonts.truetype(font, variation, self.font_size)  # a missing font file fails here, clearly
+        self.font, self.variation = font, variation
+
+    def set_font_size(self, size: int) -> None:
+        if not lcd_fonts.MIN_SIZE <= size <= lcd_fonts.MAX_SIZE:
+            raise ValueError(f"font size {size} is outside {lcd_fonts.MIN_SIZE}..{lcd_fonts.MAX_SIZE}")
+        old_width, old_height = self.cell
+        self.font_size = size
+        self._keep_cursor(self.column * old_width, self.row * old_height)
+
+    def _keep_cursor(self, x: int, y: int) -> None:
+        """Put the cursor in the first cell of the current grid at or after pixel (x, y), so new
+        text does not cover what is already there."""
+        width, height = self.cell
+        self.row = min(-(-y // height), self.rows - 1)
+        self.column = min(-(-x // width), self.columns)
+
+    # -- modes -------------------------------------------------------------------------------
+    def set_mode(self, mode: int) -> None:
+        """LCDSetMode: each flag turns its setting on, its partner 8 bits up turns it off."""
+        unknown = mode & ~KNOWN_MODE_BITS
+        if mode < 0 or unknown:
+            raise ValueError(f"mode {mode:#x} has unknown flag bits {unknown & 0xFFFFFFFF:#x}")
+        for flag in MODE_SETTINGS:
+            if mode & flag and mode & (flag << 8):
+                raise ValueError(f"mode {mode:#x} turns one setting both on ({flag:#x}) and off ({flag << 8:#x})")
+        width, height = self.cell
+        x, y = self.column * width, self.row * height
+        for flag, setting in MODE_SETTINGS.items():
+            if mode & flag:
+                self._set(setting, True)
+            elif mode & (flag << 8):
+                self._set(setting, False)
+        self._keep_cursor(x, y)
+        self.version += 1
+
+    def _set(self, setting: str, on: bool) -> None:
+        if getattr(self, setting) == on:
+            return
+        setattr(self, setting, on)
+        if setting == "autorefresh":
+            self.shown = None if on else self.pixels.copy()
+        elif setting == "menu_visible":
+            if on:
+                self._draw_menu()
+            else:
+                self.pixels[HEIGHT - MENU_HEIGHT:] = 0
+
+    def refresh(self) -> None:
+        """LCDRefresh: redraw the menu and show everything drawn so far."""
+        self._draw_menu()
+        if self.shown is not None:
+            self.shown = self.pixels.copy()
+        self.version += 1
+
+    def screen(self) -> np.ndarray:
+        """The image the LCD shows now (a view; copy it to keep it)."""
+        image = self.pixels if self.shown is None else self.shown
+        return image[::-1, ::-1] if self.rotated else image
+
     # -- menu --------------------------------------------------------------------------------
     def set_menu(self, labels: list[str]) -> None:
-        self.menu = [label[:32] for label in labels]
+        self.menu = [label[:MENU_LABEL_LENGTH] for label in labels]
+        self.menu_entries = [MenuEntry(label) for label in self.menu]
+        self._draw_menu()
+        self._changed()
+
+    def set_menu_entry(self, position: int, label: str, foreground: int, background: int) -> None:
+        """LCDMenuI: one soft key's label (position 1..4) in its own colours."""
+        if not 1 <= position <= 4:
+            raise ValueError(f"menu position {position} is not 1..4")
+        entry = MenuEntry(label[:MENU_LABEL_LENGTH], check_color(foreground, "foreground"),
+                          check_color(background, "background"))
+        if self.menu is None:
+            self.menu = ["", "", "", ""]
+        self.menu[position - 1] = entry.label
+        self.menu_entries[position - 1] = entry
         self._draw_menu()
         self._changed()
 
     def _draw_menu(self) -> None:
+        if self.menu is None or not self.menu_visible:
+            return
         image = Image.new("RGB", (WIDTH, MENU_HEIGHT), rgb(BLACK))
         draw = ImageDraw.Draw(image)
-        font = ImageFont.load_default_imagefont()
         width = WIDTH // 4
-        for index, label in enumerate(self.menu):
+        for index, entry in enumerate(self.menu_entries):
             left = index * width
-            draw.rectangle([left + 1, 1, left + width - 2, MENU_HEIGHT - 2], fill=rgb(MENU_BACKGROUND),
-                           outline=rgb(MENU_BORDER))
-            text = label.strip()
-            if text:
-                text_width = draw.textlength(text, font=font)
-                draw.text((left + (width - text_width) / 2, (MENU_HEIGHT - 11) / 2), text, fill=rgb(WHITE), font=font)
+            draw.rectangle([left + 1, 1, left + width - 2, MENU_HEIGHT - 2], fill=rgb(entry.bg), outline=rgb(MENU_BORDER))
+            text = entry.label.strip()
+            if not text:
+                continue
+            size = 14
+            font = lcd_fonts.label_font(size)
+            while draw.textlength(text, font=font) > width - 8 and size > 8:
+                size -= 1
+                font = lcd_fonts.label_font(size)
+            while draw.textlength(text, font=font) > width - 8:
+                text = text[:-1]  # still too long at the smallest size: cut it
+            draw.text((left + width / 2, MENU_HEIGHT / 2), text, fill=rgb(entry.fg), font=font, anchor="mm")
         self.pixels[HEIGHT - MENU_HEIGHT:] = np.asarray(image)
 
-    # -- reading back ------------------------------------------------------------------------
+    def menu_key_at(self, x: int, y: int) -> int | None:
+        """The soft key (1, 2, 4, 8) whose button is at pixel (x, y) of the shown menu bar, if any."""
+        if not self.menu_visible or not HEIGHT - MENU_HEIGHT <= y < HEIGHT or not 0 <= x < WIDTH:
+            return None
+        return 1 << (x * 4 // WIDTH)
+
+    # -- graphics: drawing is clipped to the screen ------------------------------------------
     def pixel(self, x: int, y: int) -> int:
+        if not (0 <= x < WIDTH and 0 <= y < HEIGHT):
+            raise ValueError(f"pixel ({x}, {y}) is outside the {WIDTH}x{HEIGHT} screen")
         r, g, b = self.pixels[y, x]
         return (int(r) << 16) | (int(g) << 8) | int(b)
 
-    def png(self) -> bytes:
-        buffer = io.BytesIO()
-        Image.fromarray(self.pixels).save(buffer, format="PNG", compress_level=1)
-        return buffer.getvalue()
+    def set_pixel(self, x: int, y: int, color: int) -> None:
+        check_color(color)
+        if 0 <= x < WIDTH and 0 <= y < HEIGHT:
+            self.pixels[y, x] = rgb(color)
+        self._changed()
+
+    def _plot(self, xs: np.ndarray, ys: np.ndarray, color: int) -> None:
+        inside = (xs >= 0) & (xs < WIDTH) & (ys >= 0) & (ys < HEIGHT)
+        self.pixels[ys[inside], xs[inside]] = rgb(color)
+
+    def line(self, x1: int, y1: int, x2: int, y2: int, color: int) -> None:
+        """Both end points included; one pixel per step along the longer axis."""
+        check_color(color)
+        steps = max(abs(x2 - x1), abs(y2 - y1))
+        t = np.arange(steps + 1)
+        # Exact integer rounding (half up), so every platform draws the same pixels.
+        xs = x1 + ((2 * (x2 - x1) * t + steps) // (2 * steps) if steps else t)
+        ys = y1 + ((2 * (y2 - y1) * t + steps) // (2 * steps) if steps else t)
+        self._plot(np.asarray(xs), np.asarray(ys), color)
+        self._changed()
+
+    def area(self, x1: int, y1: int, x2: int, y2: int, color: int, fill: bool) -> None:
+        """The rectangle between two corners, both included; filled or a one-pixel outline."""
+        check_color(color)
+        left, right = sorted((x1, x2))
+        top, bottom = sorted((y1, y2))
+        if fill:
+            xs, ys = np.meshgrid(np.arange(left, right + 1), np.arange(top, bottom + 1))
+        else:
+            across, down = np.arange(left, right + 1), np.arange(top, bottom + 1)
+            xs = np.concatenate([across, across, np.full(down.size, left), np.full(down.size, right)])
+            ys = np.concatenate([np.full(across.size, top), np.full(across.size, bottom), down, down])
+        self._plot(xs.ravel(), ys.ravel(), color)
+        self._changed()
+
+    def circle(self, cx: int, cy: int, radius: int, color: int, fill: bool) -> None:
+        """Pixels within `radius` of the centre (filled), or the midpoint-circle outline."""
+        check_color(color)
+        if radius < 0:
+            raise ValueError(f"radius {radius} is negative")
+        if fill:
+            offsets = np.arange(-radius, radius + 1)
+            dx, dy = np.meshgrid(offsets, offsets)
+            inside = dx * dx + dy * dy <= radius * radius + radius  # the same edge as the outline
+            self._plot(cx + dx[inside], cy + dy[inside], color)
+        else:
+            points = []
+            x, y, error = radius, 0, 1 - radius
+            while x >= y:
+                points += [(x, y), (y, x), (-y, x), (-x, y), (-x, -y), (-y, -x), (y, -x), (x, -y)]
+                y += 1
+                if error < 0:
+                    error += 2 * y + 1
+                else:
+                    x -= 1
+                    error += 2 * (y - x) + 1
+            offsets = np.array(points)
+            self._plot(cx + offsets[:, 0], cy + offsets[:, 1], color)
+        self._changed()
+
+    def image(self, x: int, y: int, width: int, height: int, display_width: int, display_height: int,
+              image_format: int, data: bytes) -> None:
+        """An image of width x height pixels, scaled (nearest pixel) to the display size at (x, y)."""
+        if image_format not in IMAGE_CHANNELS:
+            raise ValueError(f"image format {image_format} is not 0 (colour), 1 (gray) or 2 (binary)")
+        if width <= 0 or height <= 0 or display_width <= 0 or display_height <= 0:
+            raise ValueError(f"image size {width}x{height} shown as {display_width}x{display_height}: "
+                             f"sizes must be positive")
+        channels = IMAGE_CHANNELS[image_format]
+        if len(data) != width * height * channels:
+            raise ValueError(f"a {width}x{height} image needs {width * height * channels} bytes, got {len(data)}")
+        pixels = np.frombuffer(data, dtype=np.uint8).reshape(height, width, channels)
+        if image_format == IMAGE_BINARY:
+            pixels = np.where(pixels != 0, 0, 255).astype(np.uint8)  # 1 = black, 0 = white
+        if channels == 1:
+            pixels = np.repeat(pixels, 3, axis=2)
+        rows = np.arange(display_height) * height // display_height
+        cols = np.arange(display_width) * width // display_width
+        shown = pixels[rows][:, cols]
+        top, left = max(0, y), max(0, x)
+        bottom, right = min(HEIGHT, y + display_height), min(WIDTH, x + display_width)
+        if top < bottom and left < right:
+            self.pixels[top:bottom, left:right] = shown[top - y:bottom - y, left - x:right - x]
+        self._changed()
 
 
 def create(context) -> list[Component]:

@@ -1,0 +1,80 @@
+"""RoBIOS I/O group: 16 digital lines, 8 analog channels with 1 kHz recording, and the battery voltage."""
+
+from eyesim.commands.errors import CommandError, checked_arguments, require
+from eyesim.robot.components.analog_io import AnalogInputs
+from eyesim.robot.components.battery import Battery
+from eyesim.robot.components.digital_io import DigitalLines
+from eyesim.session import Pending
+
+
+def _digital(robot) -> DigitalLines:
+    return require(robot.component(DigitalLines), robot, "digital I/O")
+
+
+def _analog(robot) -> AnalogInputs:
+    return require(robot.component(AnalogInputs), robot, "analog inputs")
+
+
+def digital_setup(sim, robot, request):
+    line, direction = request.args
+    with checked_arguments():
+        _digital(robot).setup(line, chr(direction) if 0 < direction < 128 else repr(direction))
+    sim.events.io(robot)
+    return (0,)
+
+
+def digital_read(sim, robot, request):
+    with checked_arguments():
+        return (_digital(robot).read(*request.args),)
+
+
+def digital_read_all(sim, robot, request):
+    return (_digital(robot).read_all(),)
+
+
+def digital_write(sim, robot, request):
+    with checked_arguments():
+        _digital(robot).write(*request.args)
+    sim.events.io(robot)
+    return (0,)
+
+
+def analog_read(sim, robot, request):
+    with checked_arguments():
+        return (_analog(robot).read(*request.args),)
+
+
+def analog_voltage(sim, robot, request):
+    return (round(require(robot.component(Battery), robot, "battery").volts * 100),)
+
+
+def analog_record(sim, robot, request):
+    channel, count = request.args
+    with checked_arguments():
+        _analog(robot).start_recording(channel, count, request.time_us)
+    return (0,)
+
+
+def analog_transfer(sim, robot, request):
+    """Blocks until the recording is complete."""
+    recording = _analog(robot).recording
+    if recording is None:
+        raise CommandError("nothing was recorded; call ANALOGRecord first")
+
+    def poll(at_us):
+        return (recording.samples(),) if at_us >= recording.end_us else None
+
+    reply = poll(request.time_us)
+    return reply if reply is not None else Pending(poll, recording.end_us)
+
+
+HANDLERS = {
+    "DIGITAL_SETUP": digital_setup,
+    "DIGITAL_READ": digital_read,
+    "DIGITAL_READ_ALL": digital_read_all,
+    "DIGITAL_WRITE": digital_write,
+    "ANALOG_READ": analog_read,
+    "ANALOG_VOLTAGE": analog_voltage,
+    "ANALOG_RECORD": analog_record,
+    "ANALOG_TRANSFER": analog_transfer,
+}

@@ -1,0 +1,75 @@
+"""RoBIOS serial group: byte streams on interface 0 (serial port) and 1..20 (USB)."""
+
+from eyesim.commands.errors import checked_arguments, require
+from eyesim.robot.components.serial_ports import SerialPorts
+from eyesim.session import Pending
+
+
+def _ports(robot) -> SerialPorts:
+    return require(robot.component(SerialPorts), robot, "serial interfaces")
+
+
+def ser_init(sim, robot, request):
+    with checked_arguments():
+        _ports(robot).init(*request.args)
+    return (0,)
+
+
+def ser_send(sim, robot, request):
+    interface, data = request.args
+    with checked_arguments():
+        leaves = _ports(robot).send(interface, data)
+    if leaves and data:
+        sim.events.serial(robot.id, interface, data)
+    return (0,)
+
+
+def ser_receive_char(sim, robot, request):
+    """Blocks until a byte arrives."""
+    (interface,) = request.args
+    ports = _ports(robot)
+    with checked_arguments():
+        port = ports.open_port(interface)
+
+    def take(at_us):
+        if not port.received:
+            return None
+        byte = port.received[0]
+        del port.received[0]
+        return (byte,)
+
+    reply = take(request.time_us)
+    return reply if reply is not None else Pending(take)
+
+
+def ser_receive(sim, robot, request):
+    with checked_arguments():
+        return (_ports(robot).receive(*request.args),)
+
+
+def ser_check(sim, robot, request):
+    with checked_arguments():
+        return (1 if _ports(robot).waiting(*request.args) else 0,)
+
+
+def ser_flush(sim, robot, request):
+    with checked_arguments():
+        _ports(robot).flush(*request.args)
+    return (0,)
+
+
+def ser_close(sim, robot, request):
+    with checked_arguments():
+        _ports(robot).close(*request.args)
+    return (0,)
+
+
+HANDLERS = {
+    "SER_INIT": ser_init,
+    "SER_SEND": ser_send,
+    "SER_RECEIVE_CHAR": ser_receive_char,
+    "SER_RECEIVE": ser_receive,
+    "SER_CHECK": ser_check,
+    "SER_FLUSH": ser_flush,
+    "SER_CLOSE": ser_close,
+}

@@ -1,0 +1,89 @@
+"""The audio group: sounds take simulation time, WAV and MP3 lengths come from the file, the viewer
+gets the sound; the microphone is analog channel 8."""
+
+import io
+import wave
+
+import pytest
+from support.client import RemoteError
+from support.connected import connected_program
+
+from eyesim import robot_input
+from eyesim.robot.sound_files import sound_length
+
+
+def wav_bytes(seconds: float, rate: int = 8000, channels: int = 1, width: int = 2) -> bytes:
+    buffer = io.BytesIO()
+    with wave.open(buffer, "wb") as file:
+        file.setnchannels(channels)
+        file.setsampwidth(width)
+        file.setframerate(rate)
+        file.writeframes(bytes(round(seconds * rate) * channels * width))
+    return buffer.getvalue()
+
+
+def mp3_bytes(frames: int, id3: bool = True) -> bytes:
+    """MPEG-1 Layer III frames at 128 kbit/s, 44.1 kHz (417 bytes + padding), silent payload."""
+    data = bytearray()
+    if id3:  # an ID3v2 tag of 20 bytes first, then a few stray bytes
+        data += b"ID3\x04\x00\x00\x00\x00\x00\x14" + bytes(20)
+    for k in range(frames):
+        padding = k % 3 == 0
+        data += bytes([0xFF, 0xFB, 0x90 | (0x02 if padding else 0), 0x64]) + bytes(417 + padding - 4)
+    return bytes(data + b"TAG" + bytes(125))  # an ID3v1 tag at the end
+
+
+class Sounds:
+    wants_lcd = True  # like a viewer: it gets the sound's bytes
+
+    def __init__(self):
+        self.events = []
+
+    def on_event(self, message):
+        if message["type"] == "audio":
+            self.events.append(message)
+
+    def on_snapshot(self, message):
+        pass
+
+
+def test_wav_and_mp3_lengths_are_read_from_their_headers():
+    assert sound_length(wav_bytes(1.5)) == ("wav", 1.5)
+    assert sound_length(wav_bytes(0.25, rate=44100, channels=2)) == ("wav", 0.25)
+    kind, seconds = sound_length(mp3_bytes(100))
+    assert kind == "mp3" and seconds == pytest.approx(100 * 1152 / 44100)
+    assert sound_length(mp3_bytes(10, id3=False))[1] == pytest.approx(10 * 1152 / 44100)
+    with pytest.raises(ValueError, match="not a WAV or MP3 file"):
+        sound_length(b"just some text, no sound at all")
+
+
+def test_a_beep_and_a_file_play_for_their_time_and_reach_the_viewer():
+    with connected_program() as (sim, client):
+        sounds = Sounds()
+        sim.events.subscribe(sounds)
+        assert client.call("AU_DONE") == (1,)
+        client.call("AU_BEEP")
+        assert client.call("AU_DONE") == (0,)
+        client.call("OS_WAIT", 200)
+        assert client.call("AU_DONE") == (1,)
+        sound = wav_bytes(0.5)
+        client.call("AU_PLAY", "hello.wav", sound)
+        client.call("OS_WAIT", 490)
+        assert client.call("AU_DONE") == (0,)
+        client.call("OS_WAIT", 10)
+        assert client.call("AU_DONE") == (1,)
+        beep, played = sounds.events
+        assert beep == {"type": "audio", "robot": 1, "sound": "beep", "duration": 0.2, "frequency": 1000}
+        assert played["name"] == "hello.wav" and played["format"] == "wav" and played["duration"] == 0.5
+        assert played["data"]  # base64 of the file, for the browser to play
+        with pytest.raises(RemoteError, match="notes.txt: not a WAV or MP3 file"):
+            client.call("AU_PLAY", "notes.txt", b"hello")
+
+
+def test_the_microphone_hears_what_analog_channel_8_is_set_to():
+    with connected_program() as (sim, client):
+        assert client.call("AU_MICROPHONE") == (512,)  # silence: the middle of the 10-bit range
+        sim.call(lambda s: robot_input.analog(s, 1, 8, 900))
+        client.call("OS_WAIT", 1)
+        assert client.call("AU_MICROPHONE") == (900,)
+        assert client.call("ANALOG_READ", 8) == (900,)
