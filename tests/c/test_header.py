@@ -1,4 +1,5 @@
-"""eyebot.h: warning-free as C11 and C++17, the spec's constant values; no RoBIOS call, no connection."""
+"""eyebot.h and eyebot++.h: warning-free as C99, C11, C++17 and C++20, the spec's constant values, what
+older programs rely on, and clear failures for names that are gone. No RoBIOS call, no connection."""
 
 from __future__ import annotations
 
@@ -44,6 +45,33 @@ void use_every_function(void)
     SIMSetRobot(0, 500, 500, 0, 180);
 }
 
+/* Never called either: the image functions with the typedef'd image types. */
+void use_image_functions(void);
+void use_image_functions(void)
+{
+    static QVGAcol col, col2;
+    static QVGAgray gray, gray2, h, s, i;
+    BYTE r, g, b;
+    const BYTE *input = gray;
+    IPSetSize(QVGA);
+    (void)IPReadFile("in.ppm", col);
+    IPWriteFile("out.ppm", col);
+    IPWriteFileGray("out.pgm", input);
+    IPLaplace(input, gray2);
+    IPSobel(gray, gray);
+    IPCol2Gray(col, gray);
+    IPGray2Col(gray, col);
+    IPRGB2Col(h, s, i, col);
+    IPCol2HSI(col, h, s, i);
+    IPOverlay(col, col2, col);
+    IPOverlayGray(gray, gray2, RED, col);
+    IPPCol2RGB(IPPRGB2Col(1, 2, 3), &r, &g, &b);
+    IPPCol2HSI(ORANGE, &r, &g, &b);
+    r = IPPRGB2Hue(r, g, b);
+    IPPRGB2HSI(r, g, b, &h[0], &s[0], &i[0]);
+    (void)(IP_WIDTH + IP_HEIGHT + IP_PIXELS + IP_SIZE);
+}
+
 int main(void)
 {
     COLOR colour = ORANGE;
@@ -83,23 +111,166 @@ int main(void)
 """
 
 
-@pytest.mark.parametrize("language,standard", [("cc", "-std=c11"), ("c++", "-std=c++17")])
+STANDARDS = [("cc", "-std=c99"), ("cc", "-std=c11"), ("c++", "-std=c++17"), ("c++", "-std=c++20")]
+CXX_STANDARDS = [s for s in STANDARDS if s[0] == "c++"]
+
+
+def run_offline(exe, env) -> subprocess.CompletedProcess:
+    # No RoBIOS call connects, so these run with no simulator anywhere.
+    return subprocess.run([str(exe)], capture_output=True, text=True, timeout=10, env=env)
+
+
+@pytest.mark.parametrize("language,standard", STANDARDS)
 def test_header_compiles_cleanly_and_has_the_spec_values(compiler, free_port_env, language, standard):
     exe = compiler.build(PROGRAM, name="header_check", language=language, flags=(standard, "-Wpedantic"))
-    # No RoBIOS call is made, so nothing connects, even with no simulator anywhere.
-    ran = subprocess.run([str(exe)], capture_output=True, text=True, timeout=10, env=free_port_env)
+    ran = run_offline(exe, free_port_env)
     assert ran.returncode == 0, ran.stdout + ran.stderr
     assert ran.stdout == "ok\n"
     assert ran.stderr == ""
 
 
-@pytest.mark.parametrize("language", ["cc", "c++"])
-def test_header_compiles_on_its_own(robios_prefix, tmp_path, language):
-    source = tmp_path / ("only.c" if language == "cc" else "only.cpp")
-    source.write_text('#include "eyebot.h"\n')
-    standard = "-std=c11" if language == "cc" else "-std=c++17"
-    command = toolchain.compiler_command(
-        language, [standard, "-Wall", "-Wextra", "-Werror", "-c", str(source), "-o", str(tmp_path / "only.o")],
-        robios_prefix)
-    done = subprocess.run(command, capture_output=True, text=True)
+def compile_only(prefix, tmp_path, language, standard, source, name="only", include_dirs=()):
+    path = tmp_path / (f"{name}.c" if language == "cc" else f"{name}.cpp")
+    path.write_text(source)
+    flags = [standard, "-Wall", "-Wextra", "-Wpedantic", "-Werror", *(f"-I{d}" for d in include_dirs)]
+    command = toolchain.compiler_command(language, [*flags, "-c", str(path), "-o", str(tmp_path / f"{name}.o")],
+                                         prefix)
+    return subprocess.run(command, capture_output=True, text=True)
+
+
+@pytest.mark.parametrize("language,standard", STANDARDS)
+def test_header_compiles_on_its_own(robios_prefix, tmp_path, language, standard):
+    done = compile_only(robios_prefix, tmp_path, language, standard, '#include "eyebot.h"\n')
     assert done.returncode == 0, done.stderr
+
+
+@pytest.mark.parametrize("language,standard", CXX_STANDARDS)
+def test_cplusplus_header_compiles_on_its_own(robios_prefix, tmp_path, language, standard):
+    done = compile_only(robios_prefix, tmp_path, language, standard, '#include "eyebot++.h"\n')
+    assert done.returncode == 0, done.stderr
+
+
+CPLUSPLUS_LAB = r"""
+#include "eyebot++.h"
+
+int distance = 5, count = 2, left = 1, right = 1; // names a `using namespace std` would make ambiguous
+
+int main()
+{
+    std::vector<int> v{3, 1, 2};
+    std::sort(v.begin(), v.end());
+    std::map<std::string, int> seen{{"a", 1}};
+    std::ostringstream out;
+    out << v[0] << v[1] << v[2] << " " << seen["a"] << " " << std::max(distance, count);
+    printf("%s %.3f %d\n", out.str().c_str(), sqrt(2.0), abs(-(left + right)));
+    QVGAcol image{};
+    std::array<BYTE, QVGA_PIXELS> gray{};
+    std::cout << sizeof image << " " << gray.size() << " " << (KEY4 | ANYKEY) << std::endl;
+    return 0;
+}
+"""
+
+
+@pytest.mark.parametrize("language,standard", CXX_STANDARDS)
+def test_cplusplus_labs_get_the_standard_headers(compiler, free_port_env, language, standard):
+    exe = compiler.build(CPLUSPLUS_LAB, name="lab", language=language, flags=(standard, "-Wpedantic"))
+    ran = run_offline(exe, free_port_env)
+    assert ran.returncode == 0, ran.stderr
+    assert ran.stdout == "123 1 5 1.414 2\n230400 76800 -1\n"
+
+
+def test_cplusplus_header_tells_c_programs_to_use_eyebot_h(robios_prefix, tmp_path):
+    done = compile_only(robios_prefix, tmp_path, "cc", "-std=c11", '#include "eyebot++.h"\n')
+    assert done.returncode != 0
+    assert "eyebot++.h is for C++ programs" in done.stderr
+
+
+OLDER_PROGRAM = r"""
+#include "eyebot.h"
+#include <pthread.h>
+#include <stdio.h>
+
+static QQVGAcol image;
+static QQVGAgray gray;
+
+static void *worker(void *arg) { (void)arg; return NULL; }
+
+int main(void)
+{
+    pthread_t thread;
+    int done = False;
+    if (XInitThreads() == 0) return 1; /* X11 convention: non-zero is success */
+    pthread_create(&thread, NULL, worker, NULL);
+    pthread_join(thread, NULL);
+    done = True;
+    printf("%d %d %d %d\n", done, LCDInit(), (int)sizeof image, (int)sizeof gray);
+    if (0) { VWDriveWait(); (void)VWDriveDone(); }
+    return 0;
+}
+"""
+
+
+@pytest.mark.parametrize("language,standard", STANDARDS)
+def test_older_programs_compile_and_run(compiler, free_port_env, language, standard):
+    exe = compiler.build(OLDER_PROGRAM, name="older", language=language, flags=(standard, "-Wpedantic"))
+    ran = run_offline(exe, free_port_env)  # LCDInit and XInitThreads need no simulator
+    assert ran.returncode == 0, ran.stderr
+    assert ran.stdout == "1 0 57600 19200\n"
+
+
+LITERALS = r"""
+#include "eyebot.h"
+
+/* Never called: every function that only reads a text takes a string literal without a warning. */
+void texts(void);
+void texts(void)
+{
+    static QQVGAcol image;
+    LCDPrintf("plain");
+    LCDSetPrintf(1, 2, "x");
+    LCDMenu("A", "B", "C", "D");
+    LCDMenuI(1, "A", RED, BLACK);
+    (void)IPReadFile("in.ppm", image);
+    IPWriteFile("out.ppm", image);
+    IPWriteFileGray("out.pgm", image);
+    (void)OSExecute("ls");
+    SERSend(0, "hello");
+    AUPlay("beep.wav");
+    RADIOSend(2, "hello");
+}
+"""
+
+
+@pytest.mark.parametrize("language,standard", STANDARDS)
+def test_text_parameters_take_string_literals(robios_prefix, tmp_path, language, standard):
+    done = compile_only(robios_prefix, tmp_path, language, standard, LITERALS)
+    assert done.returncode == 0, done.stderr
+
+
+FAKE_XLIB = """#ifndef _X11_XLIB_H_
+#define _X11_XLIB_H_
+typedef int Status;
+#define True 1
+#define False 0
+extern Status XInitThreads(void);
+#endif
+"""
+
+
+@pytest.mark.parametrize("language,standard", STANDARDS)
+@pytest.mark.parametrize("xlib_first", [True, False])
+def test_xinitthreads_gets_along_with_xlib(robios_prefix, tmp_path, language, standard, xlib_first):
+    (tmp_path / "X11").mkdir()
+    (tmp_path / "X11" / "Xlib.h").write_text(FAKE_XLIB)  # what matters of the real one, which may be missing
+    includes = ['#include <X11/Xlib.h>', '#include "eyebot.h"']
+    source = "\n".join(includes if xlib_first else includes[::-1]) + "\nint f(void);\nint f(void) { return XInitThreads() + True; }\n"
+    done = compile_only(robios_prefix, tmp_path, language, standard, source, include_dirs=(tmp_path,))
+    assert done.returncode == 0, done.stderr
+
+
+@pytest.mark.parametrize("language,standard", STANDARDS)
+def test_names_that_are_gone_fail_with_a_message(robios_prefix, tmp_path, language, standard):
+    source = '#include "eyebot.h"\nint f(void);\nint f(void) { int scan[360]; return SIMLaserScan(scan); }\n'
+    done = compile_only(robios_prefix, tmp_path, language, standard, source)
+    assert done.returncode != 0
+    assert "SIMLaserScan is gone; use LIDARSet(range, tilt, points) and LIDARGet(distances)" in done.stderr
