@@ -104,6 +104,6 @@ def test_python_m_eyesim_cc(robios_prefix, tmp_path):
     source.write_text('#include "eyebot.h"\nint main(void) { return KEY1 - 1; }\n')
     env = {**os.environ, "EYESIM_ROBIOS": str(robios_prefix)}
     done = subprocess.run([sys.executable, "-m", "eyesim", "cc", "-o", str(tmp_path / "m"), str(source)],
-                          capture_output=True, text=True, env=env)
+                          capture_output=True, text=True, env=env, cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     assert subprocess.run([str(tmp_path / "m")]).returncode == 0

@@ -13,7 +13,12 @@ PROGRAMS = Path(__file__).resolve().parents[1] / "e2e" / "programs"
 
 
 def eyesim_command(*args: str) -> list[str]:
-    return [sys.executable, "-m", "eyesim", *args]
+    """`eyesim ARGS` run by the Python running the tests, importing the same eyesim package.
+
+    Not `python -m eyesim`: that puts the working directory first on sys.path, and from a source
+    checkout it would pick the source tree instead of the installed package `make test` tests."""
+    return [sys.executable, "-c", "import runpy, sys; del sys.path[0]; runpy.run_module('eyesim', run_name='__main__')",
+            *args]
 
 
 def build(name: str, out_dir: Path, *flags: str) -> Path:
