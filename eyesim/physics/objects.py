@@ -5,7 +5,7 @@ frame sits at the object's centre of mass, so that what a ball or a tumbling can
 position does not swing round as it rolls: an object's x, y are those of its centre of mass, and
 its z is how far that centre is above where it is when the object stands on the floor (0 at rest).
 It moves freely (a free joint) unless its type is `fixed`, then it is part of the static world.
-Meshes are only for looks: collisions use the colliders."""
+An .obj model adds visual geoms only (physics/visual_mesh.py): collisions use the colliders."""
 
 from __future__ import annotations
 
@@ -13,7 +13,9 @@ import math
 
 import mujoco
 
+from eyesim.physics.meshes import model_mesh
 from eyesim.physics.units import mm, to_mm, yaw_quat
+from eyesim.physics.visual_mesh import MESH_GROUP, add_model
 from eyesim.physics.world import PhysicsWorld, add_collider, collider_volume, rgba
 from eyesim.scene.description import ObjectPlacement, ObjectType
 
@@ -37,7 +39,8 @@ class SceneObject:
         self.centre_height = centre_height  # m of the centre of mass above the object's base
         self.world: PhysicsWorld | None = None
         self.body = -1
-        self.geoms: list[int] = []
+        self.geoms: list[int] = []  # colliders
+        self.mesh_geoms: list[int] = []  # its .obj model's, when it has one
 
     @property
     def fixed(self) -> bool:
@@ -47,7 +50,9 @@ class SceneObject:
         self.world = world
         self.body = world.body_id(self.body_name)
         start = world.model.body_geomadr[self.body]
-        self.geoms = list(range(start, start + world.model.body_geomnum[self.body]))
+        geoms = range(start, start + world.model.body_geomnum[self.body])
+        self.geoms = [g for g in geoms if world.model.geom_group[g] != MESH_GROUP]
+        self.mesh_geoms = [g for g in geoms if world.model.geom_group[g] == MESH_GROUP]
 
     def pose(self) -> tuple[float, float, float, float]:
         """True pose: x, y of the centre of mass, z above its resting height (m), heading (rad)."""
@@ -87,6 +92,9 @@ def add_object(spec: mujoco.MjSpec, object_id: int, object_type: ObjectType, pla
                             priority=1, friction=[friction, 0.005, ROLLING_FRICTION if sphere else 0.0001],
                             condim=6 if sphere else 3)
         geom.pos = [geom.pos[i] - centre[i] for i in range(3)]
+    mesh = model_mesh(object_type.model)
+    if mesh is not None:
+        add_model(spec, body, name, mesh, scale=object_type.scale, shift=[-c for c in centre])
     if not object_type.fixed:
         _set_inertia(body, object_type)
     return SceneObject(object_id, object_type, placement, name, centre[2])

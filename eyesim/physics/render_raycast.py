@@ -14,9 +14,14 @@ import mujoco
 import numpy as np
 
 from eyesim.physics import render
+from eyesim.physics.visual_mesh import COVERED_GROUP, MESH_GROUP
 
 DEFAULT_GEOM_RGBA = (0.5, 0.5, 0.5, 1.0)  # MuJoCo's: a geom with this colour shows its material's
 HIDDEN_GROUPS = 3  # geom groups from here on are hidden in MuJoCo's default view, so in OpenGL's too
+# What this renderer draws: OpenGL's groups, but a body's colliders instead of its .obj model, which
+# keeps every geom an analytic shape (physics/visual_mesh.py)
+SHOWN_GROUPS = np.array([(g < HIDDEN_GROUPS and g != MESH_GROUP) or g == COVERED_GROUP for g in range(6)],
+                        dtype=np.uint8)
 EPSILON = 1e-9
 G = mujoco.mjtGeom
 CORNERS = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=np.float64)
@@ -90,7 +95,7 @@ def _cast(model, data, geoms, origin, columns, view, basis):
 
 def _visible_geoms(model, own_body: int) -> np.ndarray:
     """Geoms a camera shows: not transparent, in a shown group, not the camera's own chassis."""
-    visible = (model.geom_rgba[:, 3] > 0) & (model.geom_group < HIDDEN_GROUPS) & (model.geom_bodyid != own_body)
+    visible = (model.geom_rgba[:, 3] > 0) & np.isin(model.geom_group, np.flatnonzero(SHOWN_GROUPS)) & (model.geom_bodyid != own_body)
     return np.flatnonzero(visible)
 
 
@@ -287,8 +292,7 @@ def _mujoco_cast(model, data, origin, directions, own_body):
     geoms = np.empty(n, dtype=np.int32)
     distances = np.empty(n)
     normals = np.empty((n, 3))
-    group = np.array([1] * HIDDEN_GROUPS + [0] * (6 - HIDDEN_GROUPS), dtype=np.uint8)
-    mujoco.mj_multiRay(model, data, origin, np.ascontiguousarray(directions).reshape(-1), group, 1, own_body,
+    mujoco.mj_multiRay(model, data, origin, np.ascontiguousarray(directions).reshape(-1), SHOWN_GROUPS, 1, own_body,
                        geoms, distances, normals.reshape(-1), n, render.FAR)
     return geoms, distances, normals
 

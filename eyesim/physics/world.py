@@ -9,6 +9,7 @@ import mujoco
 import numpy as np
 
 from eyesim.physics.units import mm, quat_yaw, yaw_quat
+from eyesim.physics.visual_mesh import RAY_GROUPS
 from eyesim.scene.description import Collider, Marker, Scene, Wall
 
 FLOOR_MARGIN = 0.5  # m of floor beyond the walls' extent when a world gives no floor size
@@ -192,5 +193,5 @@ class PhysicsWorld:
         """Distance (m) along a unit direction to the first geom hit, ignoring one body; None = no hit."""
         geomid = np.zeros(1, dtype=np.int32)
         dist = mujoco.mj_ray(self.model, self.data, np.asarray(origin, dtype=np.float64),
-                             np.asarray(direction, dtype=np.float64), None, 1, exclude_body, geomid)
+                             np.asarray(direction, dtype=np.float64), RAY_GROUPS, 1, exclude_body, geomid)
         return None if dist < 0 else float(dist)

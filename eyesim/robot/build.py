@@ -6,7 +6,9 @@ from dataclasses import dataclass, field
 
 import mujoco
 
+from eyesim.physics.meshes import model_mesh
 from eyesim.physics.units import mm, rad, yaw_quat
+from eyesim.physics.visual_mesh import add_model
 from eyesim.physics.world import add_collider, rgba
 from eyesim.robot.component import Component
 from eyesim.robot.robot import Robot
@@ -72,6 +74,9 @@ def add_chassis(spec: mujoco.MjSpec, name: str, robot_type: RobotType, placement
         body.add_freejoint(name=f"{name}/free")
     for index, collider in enumerate(hull_colliders(robot_type)):
         add_collider(body, f"{name}/hull{index}", collider, rgba=rgba(robot_type.color), friction=HULL_FRICTION)
+    mesh = model_mesh(robot_type.model)
+    if mesh is not None:
+        add_model(spec, body, name, mesh, offset_mm=robot_type.model_offset, rotation_deg=robot_type.model_rotation)
     return body
 
 

@@ -31,6 +31,7 @@ import type {
   Wall,
   Water,
 } from "./protocol";
+import { drawMesh, forgetMeshes } from "./mesh_loader";
 import { colorOf, createRobotModel } from "./robot_model";
 
 export interface BuiltWorld {
@@ -186,6 +187,7 @@ function hiddenUntilPlaced<T extends Object3D>(thing: T): T {
 }
 
 export function buildWorld(scene: SceneMessage, onTextureLoaded: () => void): BuiltWorld {
+  forgetMeshes();
   const group = new Group();
   group.add(createFloor(scene.floor, onTextureLoaded));
   for (const wall of scene.walls) group.add(createWall(wall));
@@ -193,12 +195,14 @@ export function buildWorld(scene: SceneMessage, onTextureLoaded: () => void): Bu
   const robots = new Map<number, Object3D>();
   for (const robot of scene.robots) {
     const model = hiddenUntilPlaced(createRobotModel(robot));
+    if (robot.mesh) drawMesh(model, robot.mesh, onTextureLoaded);
     robots.set(robot.id, model);
     group.add(model);
   }
   const objects = new Map<number, Object3D>();
   for (const object of scene.objects) {
     const mesh = hiddenUntilPlaced(createObject(object));
+    if (object.mesh) drawMesh(mesh, object.mesh, onTextureLoaded);
     objects.set(object.id, mesh);
     group.add(mesh);
   }

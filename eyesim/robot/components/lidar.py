@@ -8,6 +8,7 @@ import mujoco
 import numpy as np
 
 from eyesim.physics.units import mm
+from eyesim.physics.visual_mesh import RAY_GROUPS
 from eyesim.robot.component import Component
 from eyesim.scene.description import LidarSpec
 
@@ -53,7 +54,7 @@ class LidarScanner(Component):
         rotation = data.xmat[self.robot.body].reshape(3, 3)
         origin = data.xpos[self.robot.body] + rotation @ self.mount
         directions = self._local @ rotation.T
-        mujoco.mj_multiRay(model, data, origin, directions.ravel(), None, 1, self.robot.body,
+        mujoco.mj_multiRay(model, data, origin, directions.ravel(), RAY_GROUPS, 1, self.robot.body,
                            self._geom, self._dist, None, self.points, mm(MAX_RANGE_MM))
         self._look_past_own_parts(origin, directions)
         within = (self._dist >= 0) & (self._dist < mm(MAX_RANGE_MM))
@@ -73,7 +74,7 @@ class LidarScanner(Component):
             travelled, part, segment = 0.0, self._geom[i], self._dist[i]
             while part >= 0 and model.body_rootid[model.geom_bodyid[part]] == self.robot.body:
                 travelled += segment + 1e-6
-                segment = mujoco.mj_ray(model, data, origin + directions[i] * travelled, directions[i], None, 1,
+                segment = mujoco.mj_ray(model, data, origin + directions[i] * travelled, directions[i], RAY_GROUPS, 1,
                                         model.geom_bodyid[part], geom)
                 part = geom[0]
             self._geom[i], self._dist[i] = part, (travelled + segment if part >= 0 else -1.0)

@@ -8,6 +8,7 @@ import mujoco
 import numpy as np
 
 from eyesim.physics.units import mm, to_mm
+from eyesim.physics.visual_mesh import RAY_GROUPS
 from eyesim.robot.component import Component
 from eyesim.scene.description import PsdSpec
 
@@ -58,7 +59,7 @@ class PsdSensor(Component):
         data = self.world.data
         origin = data.site_xpos[self.site]
         direction = data.site_xmat[self.site][0::3].copy()  # the site's x axis
-        hit = mujoco.mj_ray(self.world.model, data, origin, direction, None, 1, self.robot.body, self._hit)
+        hit = mujoco.mj_ray(self.world.model, data, origin, direction, RAY_GROUPS, 1, self.robot.body, self._hit)
         return origin, direction, (hit if hit >= 0 else None)
 
     def distance_mm(self) -> int:
