@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from eyesim.physics.objects import shape_of
 from eyesim.physics.units import mm
+from eyesim.web.mesh_message import has_mesh, mesh_url
 
 
 def scene_message(sim, texture_url: str | None) -> dict:
@@ -18,6 +19,8 @@ def scene_message(sim, texture_url: str | None) -> dict:
                        # Other drives' wheels come as robot bodies of their own (below).
                        "wheel_diameter": mm(t.wheels.diameter) if t.wheels and t.drive == "differential" else 0.0,
                        "track": mm(t.wheels.track) if t.wheels and t.drive == "differential" else 0.0})
+        if has_mesh(sim, robot.body):  # its .obj model, drawn instead of the box (mesh_message.py)
+            robots[-1]["mesh"] = mesh_url("robot", robot.id)
     markers = [{"x": mm(m.x), "y": mm(m.y), "color": list(m.color)} for m in scene.markers]
     model = sim.world.model
     objects = []
@@ -26,13 +29,23 @@ def scene_message(sim, texture_url: str | None) -> dict:
         if parts:  # `shape` and `size` say what it mainly is; `parts` draw it
             objects.append({"id": thing.id, "type": thing.type.name, "color": list(thing.type.color),
                             "shape": parts[0]["shape"], "size": parts[0]["size"], "parts": parts})
+            if thing.mesh_geoms:
+                objects[-1]["mesh"] = mesh_url("object", thing.id)
     bodies = [{"id": body, "robot": robot.id, "parts": _shapes(model, _geoms(model, body), colored=True)}
               for robot in sim.robots for body in robot.shown_parts]
     water = {"surface": sim.water.surface} if sim.water is not None else None
     return {"type": "scene", "floor": {"width": sim.floor.width, "height": sim.floor.height, "texture": texture_url},
             "walls": walls, "robots": robots, "objects": objects, "markers": markers, "bodies": bodies,
             "water": water,
+            "warnings": [_warning(d) for d in scene.warnings],
             "settings": {"vis": scene.settings.vis, "trace": scene.settings.trace}}
+
+
+def _warning(diagnostic) -> dict:
+    """A loader warning as the viewer lists it (file:line and what was wrong)."""
+    where = diagnostic.location
+    return {"file": where.file, "line": where.line, "column": where.column, "code": diagnostic.code,
+            "message": diagnostic.message}
 
 
 def _geoms(model, body: int) -> range:

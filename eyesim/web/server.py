@@ -23,7 +23,7 @@ from PIL import Image
 
 from eyesim.paths import STATIC_DIR
 from eyesim.robot.components.keys import KEYS
-from eyesim.web import robot_io_commands
+from eyesim.web import mesh_message, place_command, robot_io_commands
 from eyesim.web.scene_message import scene_message
 
 log = logging.getLogger("eyesim.web")
@@ -210,6 +210,8 @@ class ViewerHub:
             self.sim.call(lambda sim: sim.reset())
         elif kind in robot_io_commands.COMMANDS:
             return robot_io_commands.command(self.sim, message)
+        elif kind == "place":
+            return place_command.place(self.sim, message)
         else:
             return f"unknown message type {kind!r}"
         return None
@@ -255,6 +257,7 @@ class ViewerServer:
         app = web.Application()
         app.router.add_get("/ws", self._websocket)
         app.router.add_get("/scene/floor-texture", self._floor_texture)
+        app.router.add_get("/scene/mesh/{kind}/{id}", self._mesh)
         app.router.add_get("/{path:.*}", self._static)
         self._runner = web.AppRunner(app, access_log=None)
         await self._runner.setup()
@@ -287,6 +290,17 @@ class ViewerServer:
         if not texture or not Path(texture).is_file():
             raise web.HTTPNotFound()
         return web.FileResponse(texture)
+
+    async def _mesh(self, request: web.Request) -> web.StreamResponse:
+        """A robot's or object's .obj model as JSON triangles (mesh_message.py); 404 without one."""
+        kind, number = request.match_info["kind"], request.match_info["id"]
+        body = mesh_message.body_of(self.sim, kind, int(number)) if number.isdigit() else None
+        if body is None or not mesh_message.has_mesh(self.sim, body):
+            raise web.HTTPNotFound()
+        # a big model takes a moment to turn into JSON: not on the I/O loop
+        text = await asyncio.get_running_loop().run_in_executor(
+            None, lambda: json.dumps(mesh_message.mesh_message(self.sim.world.model, body)))
+        return web.Response(text=text, content_type="application/json")
 
     async def _websocket(self, request: web.Request) -> web.WebSocketResponse:
         ws = web.WebSocketResponse(heartbeat=20)

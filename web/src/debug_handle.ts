@@ -1,8 +1,10 @@
 // window.eyesimViewer: a read-only view of the viewer's state, for tests and for debugging.
 
 import type { ConnectionState } from "./connection";
+import type { DragTarget } from "./interaction";
 import type { Pose } from "./interpolation";
-import type { IoMessage, Quat, StatusMessage, Vec3 } from "./protocol";
+import { meshBox, meshCount } from "./mesh_loader";
+import type { IoMessage, Quat, SceneWarning, StatusMessage, Vec3 } from "./protocol";
 import type { ProgramState } from "./robot_panel";
 import type { Viewer } from "./viewer";
 import type { WorldCounts } from "./world_view";
@@ -32,6 +34,14 @@ export interface EyesimViewerDebug {
   robotBodiesAndWater(): { bodies: number; water: number | null };
   /** where the robot's centre is on the page (CSS pixels); null without WebGL */
   robotScreenPosition(robot: number): { x: number; y: number } | null;
+  /** where a world point (metres, z up) is on the page (CSS pixels); null without WebGL */
+  worldScreenPosition(x: number, y: number, z: number): { x: number; y: number } | null;
+  /** the robot or object the mouse is dragging now, or null */
+  dragging(): DragTarget | null;
+  /** the scene warnings the toolbar badge lists, and whether the list is open */
+  sceneWarnings(): { warnings: SceneWarning[]; listOpen: boolean };
+  /** whether the controls help is showing */
+  helpVisible(): boolean;
   menuLabels(robot: number): string[] | null;
   consoleText(robot: number): string | null;
   programState(robot: number): ProgramState | null;
@@ -45,6 +55,9 @@ export interface EyesimViewerDebug {
   soundsPlayed(robot: number): number;
   /** sensor ray segments drawn now (scene setting VIS) */
   raySegments(): number;
+  /** how many .obj models are drawn, and one's bounding box in world coordinates (m, z up) */
+  meshesDrawn(): number;
+  meshBox(kind: "robot" | "object", id: number): { min: number[]; max: number[] } | null;
   /** points of the robot's drawn path (scene setting TRACE) */
   tracePoints(robot: number): number;
   /** how many camera images have loaded into the robot's panel */
@@ -83,6 +96,10 @@ export function installDebugHandle(viewer: Viewer): void {
     },
     robotBodiesAndWater: () => viewer.world.robotBodiesAndWater(),
     robotScreenPosition: (robot) => viewer.world.robotScreenPosition(robot),
+    worldScreenPosition: (x, y, z) => viewer.world.screenPosition(x, y, z),
+    dragging: () => viewer.world.draggedThing(),
+    sceneWarnings: () => ({ warnings: viewer.warnings.warnings, listOpen: viewer.warnings.listOpen }),
+    helpVisible: () => viewer.help.visible,
     menuLabels: (robot) => viewer.panels.find(robot)?.lcd.menuLabels() ?? null,
     consoleText: (robot) => viewer.panels.find(robot)?.console.text() ?? null,
     programState: (robot) => viewer.panels.find(robot)?.programState() ?? null,
@@ -91,6 +108,8 @@ export function installDebugHandle(viewer: Viewer): void {
     ioState: (robot) => viewer.panels.find(robot)?.io.state() ?? null,
     soundsPlayed: (robot) => viewer.audio.soundsPlayed(robot),
     raySegments: () => viewer.overlays.raySegments(),
+    meshesDrawn: () => meshCount(),
+    meshBox: (kind, id) => meshBox(`${kind} ${id}`),
     tracePoints: (robot) => viewer.overlays.tracePoints(robot),
     cameraImages: (robot) => viewer.panels.find(robot)?.camera.imagesShown ?? null,
     status: () => (viewer.status ? structuredClone(viewer.status) : null),

@@ -32,6 +32,8 @@ export interface RobotInfo {
   color: Rgb;
   wheel_diameter: number;
   track: number;
+  /** URL of its .obj model (JSON triangles, MeshMessage), drawn instead of the box; absent without one */
+  mesh?: string;
 }
 
 export type ObjectShape = "box" | "sphere" | "cylinder" | "capsule";
@@ -45,6 +47,13 @@ export interface ObjectInfo {
   color: Rgb;
   /** the shapes it is drawn from, in its own frame; empty: just `shape` at its pose */
   parts: Part[];
+  /** URL of its .obj model (JSON triangles, MeshMessage), drawn instead of `parts`; absent without one */
+  mesh?: string;
+}
+
+/** What a `mesh` URL returns: triangles in the robot's or object's own frame (m), one part per colour. */
+export interface MeshMessage {
+  parts: { color: Rgb; vertices: number[]; triangles: number[] }[];
 }
 
 /** One shape of an object or robot body, placed in that thing's frame; cylinders and capsules stand along z. */
@@ -84,6 +93,17 @@ export interface SceneMessage {
   settings: SceneSettings;
   bodies: RobotBody[];
   water: Water | null;
+  /** what the scene loader found wrong (the scene still loaded) */
+  warnings: SceneWarning[];
+}
+
+/** A scene loader warning: where (line and column 0 when unknown), what kind (`code`) and what. */
+export interface SceneWarning {
+  file: string;
+  line: number;
+  column: number;
+  code: string;
+  message: string;
 }
 
 /** The scene's `settings`: draw sensor rays (VIS), draw robot paths (TRACE). */
@@ -239,7 +259,9 @@ export type BrowserCommand =
   | { type: "irtv"; robot: number; code: string }
   | { type: "serial"; robot: number; interface: number; text: string }
   | { type: "digital"; robot: number; line: number; level: number | null }
-  | { type: "analog"; robot: number; channel: number; value: number };
+  | { type: "analog"; robot: number; channel: number; value: number }
+  | { type: "place"; robot: number; x: number; y: number; phi: number }
+  | { type: "place"; object: number; x: number; y: number; phi: number };
 
 class MalformedMessage extends Error {}
 
@@ -332,7 +354,7 @@ function parseWall(w: Fields, what: string): Wall {
 function parseRobot(r: Fields, what: string): RobotInfo {
   const size = numbers(r.size, 3, `${what}.size`);
   size.forEach((s, i) => positive(s, `${what}.size[${i}]`));
-  return {
+  const robot: RobotInfo = {
     id: num(r.id, `${what}.id`),
     name: text(r.name, `${what}.name`),
     type: text(r.type, `${what}.type`),
@@ -342,6 +364,8 @@ function parseRobot(r: Fields, what: string): RobotInfo {
     wheel_diameter: Math.max(0, num(r.wheel_diameter, `${what}.wheel_diameter`)),
     track: Math.max(0, num(r.track, `${what}.track`)),
   };
+  if (r.mesh !== undefined) robot.mesh = text(r.mesh, `${what}.mesh`);
+  return robot;
 }
 
 const SHAPES = ["box", "sphere", "cylinder", "capsule"] as const;
@@ -365,13 +389,15 @@ function parsePart(p: Fields, what: string): Part {
 }
 
 function parseObject(o: Fields, what: string): ObjectInfo {
-  return {
+  const object: ObjectInfo = {
     id: num(o.id, `${what}.id`),
     type: text(o.type, `${what}.type`),
     ...parseShapeSize(o, what),
     color: channels(o.color, 3, `${what}.color`) as Rgb,
     parts: items(o.parts ?? [], `${what}.parts`, parsePart),
   };
+  if (o.mesh !== undefined) object.mesh = text(o.mesh, `${what}.mesh`);
+  return object;
 }
 
 function parseRobotBody(b: Fields, what: string): RobotBody {
@@ -392,6 +418,16 @@ function parseMarker(m: Fields, what: string): Marker {
     x: num(m.x, `${what}.x`),
     y: num(m.y, `${what}.y`),
     color: channels(m.color, 4, `${what}.color`) as Rgba,
+  };
+}
+
+function parseSceneWarning(w: Fields, what: string): SceneWarning {
+  return {
+    file: text(w.file, `${what}.file`),
+    line: w.line === undefined ? 0 : num(w.line, `${what}.line`),
+    column: w.column === undefined ? 0 : num(w.column, `${what}.column`),
+    code: w.code === undefined ? "" : text(w.code, `${what}.code`),
+    message: text(w.message, `${what}.message`),
   };
 }
 
@@ -450,6 +486,7 @@ function parseFields(m: Fields): ServerMessage | null {
         settings: parseSettings(m.settings ?? {}),
         bodies: items(m.bodies ?? [], "bodies", parseRobotBody),
         water: parseWater(m.water),
+        warnings: items(m.warnings ?? [], "warnings", parseSceneWarning),
       };
     case "snapshot": {
       const snapshot: SnapshotMessage = {

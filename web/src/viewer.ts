@@ -4,6 +4,7 @@ import { AudioPlayer } from "./audio_player";
 import { ViewerConnection, type ConnectionState } from "./connection";
 import { SnapshotBuffer } from "./interpolation";
 import { Overlays } from "./overlays";
+import { HelpOverlay } from "./help";
 import { PanelList } from "./panel_list";
 import {
   parseServerMessage,
@@ -13,6 +14,7 @@ import {
   type StatusMessage,
 } from "./protocol";
 import type { RobotPanel } from "./robot_panel";
+import { SceneWarnings } from "./scene_warnings";
 import { Toolbar } from "./toolbar";
 import { WorldView } from "./world_view";
 
@@ -29,6 +31,8 @@ export class Viewer {
   readonly snapshots = new SnapshotBuffer();
   readonly overlays = new Overlays();
   readonly audio = new AudioPlayer();
+  readonly warnings: SceneWarnings;
+  readonly help: HelpOverlay;
   private readonly toolbar: Toolbar;
   private lastScene: SceneMessage | null = null;
   private lastStatus: StatusMessage | null = null;
@@ -38,7 +42,9 @@ export class Viewer {
     const send = (command: BrowserCommand) => this.connection.send(command);
     this.toolbar = new Toolbar(elements.toolbar, send);
     this.panels = new PanelList(elements.panels, send);
-    this.world = new WorldView(elements.world);
+    this.warnings = new SceneWarnings(elements.toolbar);
+    this.world = new WorldView(elements.world, send);
+    this.help = new HelpOverlay(elements.world);
     this.world.addOverlay(this.overlays.group);
     this.connection = new ViewerConnection({
       onMessage: (frame) => this.receive(frame),
@@ -92,6 +98,7 @@ export class Viewer {
         this.panels.showRobots(message.robots);
         this.world.showScene(message);
         this.overlays.reset(message.settings);
+        this.warnings.show(message.warnings);
         break;
       case "snapshot":
         this.snapshots.push(message, performance.now());

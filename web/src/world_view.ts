@@ -12,8 +12,9 @@ import {
 } from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 import { CSS2DRenderer } from "three/addons/renderers/CSS2DRenderer.js";
+import { DragToPlace, type DragTarget } from "./interaction";
 import type { Pose, Poses } from "./interpolation";
-import type { Floor, SceneMessage } from "./protocol";
+import type { BrowserCommand, Floor, SceneMessage } from "./protocol";
 import { buildWorld, disposeWorld, type BuiltWorld } from "./world_builder";
 import { createWorldRoot, worldToThree } from "./world_frame";
 
@@ -91,11 +92,16 @@ export class WorldView {
   private readonly root = createWorldRoot();
   private readonly camera = new PerspectiveCamera(FIELD_OF_VIEW, 1, 0.01, 1000);
   private readonly display: Display | null;
+  private readonly dragging: DragToPlace | null = null;
   private world: BuiltWorld | null = null;
+  private sceneMessage: SceneMessage | null = null;
   private floor: Floor | null = null;
   private needsRender = true;
 
-  constructor(private readonly container: HTMLElement) {
+  constructor(
+    private readonly container: HTMLElement,
+    send: (command: BrowserCommand) => void,
+  ) {
     this.scene.background = new Color(0xdde3ea);
     this.scene.add(new HemisphereLight(0xffffff, 0x8a8f96, 2.2));
     const sun = new DirectionalLight(0xffffff, 1.6);
@@ -113,6 +119,18 @@ export class WorldView {
         this.needsRender = true;
       });
       this.display.controls.addEventListener("change", () => (this.needsRender = true));
+      this.dragging = new DragToPlace(
+        {
+          camera: this.camera,
+          canvas,
+          controls: this.display.controls,
+          root: this.root,
+          world: () => this.world,
+          scene: () => this.sceneMessage,
+          requestRender: () => (this.needsRender = true),
+        },
+        send,
+      );
       new ResizeObserver(() => this.resize()).observe(container);
       this.resize();
     } else {
@@ -132,7 +150,9 @@ export class WorldView {
   /** Replaces the world; keeps the camera unless the floor changed size. */
   showScene(scene: SceneMessage): void {
     if (this.world) disposeWorld(this.world);
+    this.dragging?.cancel();
     this.world = buildWorld(scene, () => (this.needsRender = true));
+    this.sceneMessage = scene;
     this.root.add(this.world.group);
     const { width, height } = scene.floor;
     if (this.floor?.width !== width || this.floor?.height !== height) this.frameFloor(scene.floor);
@@ -165,6 +185,18 @@ export class WorldView {
       const body = this.world.bodies.get(id);
       if (body && place(body, pose)) this.needsRender = true;
     }
+    // What is being dragged is drawn where the pointer has it, not where the (late) snapshots do.
+    if (this.dragging?.applyPreview(poses)) this.needsRender = true;
+  }
+
+  /** What the pointer is dragging now, or null. */
+  draggedThing(): DragTarget | null {
+    return this.dragging?.dragging ?? null;
+  }
+
+  /** Where a world point appears on the page, in CSS pixels; null without WebGL. */
+  screenPosition(x: number, y: number, z: number): { x: number; y: number } | null {
+    return this.pageOf(new Vector3(x, y, z).applyMatrix4(this.root.matrixWorld));
   }
 
   /** Draws a frame if anything moved since the last one. */
@@ -199,9 +231,14 @@ export class WorldView {
   /** Where the robot's centre appears on the page, in CSS pixels; null without WebGL. */
   robotScreenPosition(id: number): { x: number; y: number } | null {
     const robot = this.world?.robots.get(id);
-    if (!this.display || !robot?.visible) return null;
+    return robot?.visible ? this.pageOf(robot.getWorldPosition(new Vector3())) : null;
+  }
+
+  /** Where a point in three.js coordinates appears on the page (CSS pixels); null without WebGL. */
+  private pageOf(point: Vector3): { x: number; y: number } | null {
+    if (!this.display) return null;
     this.camera.updateMatrixWorld();
-    const ndc = robot.getWorldPosition(new Vector3()).project(this.camera);
+    const ndc = point.project(this.camera);
     const rect = this.display.renderer.domElement.getBoundingClientRect();
     return {
       x: rect.left + ((ndc.x + 1) / 2) * rect.width,

@@ -1,0 +1,260 @@
+// Drag to place: press on a robot or object in the 3D view and drag it across the floor (Shift+drag
+// turns it); the simulator moves it on `place` commands, as SIMSetRobot/SIMSetObject would.
+
+import { Matrix4, Object3D, Plane, Quaternion, Raycaster, Vector2, Vector3, type Camera } from "three";
+import type { OrbitControls } from "three/addons/controls/OrbitControls.js";
+import type { Pose, Poses } from "./interpolation";
+import type { BrowserCommand, SceneMessage } from "./protocol";
+import type { BuiltWorld } from "./world_builder";
+
+/** What can be dragged: a robot (also when grabbed by an arm link or wheel) or an object. */
+export interface DragTarget {
+  kind: "robot" | "object";
+  id: number;
+}
+
+/** What the 3D view lends the dragging. */
+export interface DragHost {
+  camera: Camera;
+  canvas: HTMLElement;
+  controls: OrbitControls;
+  /** the world root: its children are placed in world coordinates (z up) */
+  root: Object3D;
+  world(): BuiltWorld | null;
+  scene(): SceneMessage | null;
+  requestRender(): void;
+}
+
+/** Shift+drag turns the thing by one degree per pixel of sideways mouse motion (right = clockwise). */
+const TURN_PER_PIXEL = Math.PI / 180;
+/** While dragging, `place` goes out at most this often (ms); the final pose always goes on release. */
+const SEND_INTERVAL_MS = 40;
+/** After release the thing is drawn where it was dropped until the snapshots (which the view shows
+ *  a little late) have it there too, but no longer than this (ms): it may be driving away. */
+const SETTLE_MS = 600;
+const SETTLED_DISTANCE = 0.002;
+const SETTLED_ANGLE = 0.01;
+const FLOOR = new Plane(new Vector3(0, 0, 1), 0);
+
+interface Drag {
+  target: DragTarget;
+  pointer: number;
+  turning: boolean;
+  startClientX: number;
+  startPhi: number;
+  /** the thing's x, y minus the floor point under the pointer when it was grabbed */
+  grab: Vector2;
+  x: number;
+  y: number;
+  phi: number;
+  lastSent: number;
+  sent: string;
+  /** performance.now() of the release; null while the button is down */
+  releasedAt: number | null;
+}
+
+export function yawOf([w, x, y, z]: Pose["quat"]): number {
+  return Math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z));
+}
+
+function wrapAngle(angle: number): number {
+  return Math.atan2(Math.sin(angle), Math.cos(angle));
+}
+
+export class DragToPlace {
+  private readonly raycaster = new Raycaster();
+  private drag: Drag | null = null;
+
+  constructor(
+    private readonly host: DragHost,
+    private readonly send: (command: BrowserCommand) => void,
+  ) {
+    // Capture phase on the container: the press is ours before OrbitControls (on the canvas) sees it.
+    const container = host.canvas.parentElement ?? host.canvas;
+    container.addEventListener("pointerdown", (event) => this.press(event), { capture: true });
+    container.addEventListener("pointermove", (event) => this.move(event), { capture: true });
+    container.addEventListener("pointerup", (event) => this.release(event), { capture: true });
+    container.addEventListener("pointercancel", (event) => this.release(event), { capture: true });
+  }
+
+  /** What is being dragged now (button down), or null. */
+  get dragging(): DragTarget | null {
+    return this.drag && this.drag.releasedAt === null ? { ...this.drag.target } : null;
+  }
+
+  /** A new scene: whatever was dragged may be gone. */
+  cancel(): void {
+    if (this.drag?.releasedAt === null) this.host.controls.enabled = true;
+    this.drag = null;
+    this.host.canvas.style.cursor = "";
+  }
+
+  /**
+   * Draws the dragged thing where the pointer put it, over the (late) interpolated `poses` the
+   * view has just applied, moving a robot's arm links and wheels along. Says whether it drew.
+   */
+  applyPreview(poses: Poses): boolean {
+    const drag = this.drag;
+    const world = this.host.world();
+    if (!drag || !world) return false;
+    const { kind, id } = drag.target;
+    const model = (kind === "robot" ? world.robots : world.objects).get(id);
+    const shown = (kind === "robot" ? poses.robots : poses.objects).get(id);
+    if (!model || !shown) return false;
+    if (drag.releasedAt !== null) {
+      const settled =
+        Math.hypot(shown.pos[0] - drag.x, shown.pos[1] - drag.y) < SETTLED_DISTANCE &&
+        Math.abs(wrapAngle(yawOf(shown.quat) - drag.phi)) < SETTLED_ANGLE;
+      if (settled || performance.now() - drag.releasedAt > SETTLE_MS) {
+        this.drag = null;
+        return false;
+      }
+    }
+    const before = new Matrix4().compose(
+      new Vector3(...shown.pos),
+      new Quaternion(shown.quat[1], shown.quat[2], shown.quat[3], shown.quat[0]),
+      new Vector3(1, 1, 1),
+    );
+    // Upright at its height (never below the floor), as the simulator sets it.
+    model.position.set(drag.x, drag.y, Math.max(shown.pos[2], 0));
+    model.quaternion.setFromAxisAngle(new Vector3(0, 0, 1), drag.phi);
+    model.updateMatrix();
+    if (kind === "robot") {
+      const moved = model.matrix.clone().multiply(before.invert());
+      for (const body of this.host.scene()?.bodies ?? []) {
+        const part = body.robot === id ? world.bodies.get(body.id) : undefined;
+        if (!part) continue;
+        part.updateMatrix();
+        part.matrix.premultiply(moved).decompose(part.position, part.quaternion, part.scale);
+      }
+    }
+    return true;
+  }
+
+  private press(event: PointerEvent): void {
+    // Only presses on the 3D picture itself (not on the help, labels or notices over it).
+    if (event.target !== this.host.canvas || event.button !== 0 || !event.isPrimary) return;
+    if (this.drag?.releasedAt === null) return;
+    const target = this.pick(event);
+    const world = this.host.world();
+    const floor = this.floorPoint(event);
+    if (!target || !world || !floor) return;
+    const model = (target.kind === "robot" ? world.robots : world.objects).get(target.id);
+    if (!model) return;
+    event.stopPropagation();
+    event.preventDefault();
+    this.host.canvas.setPointerCapture(event.pointerId);
+    this.host.controls.enabled = false;
+    this.host.canvas.style.cursor = "grabbing";
+    const q = model.quaternion;
+    const phi = yawOf([q.w, q.x, q.y, q.z]);
+    this.drag = {
+      target,
+      pointer: event.pointerId,
+      turning: event.shiftKey,
+      startClientX: event.clientX,
+      startPhi: phi,
+      grab: new Vector2(model.position.x - floor.x, model.position.y - floor.y),
+      x: model.position.x,
+      y: model.position.y,
+      phi,
+      lastSent: 0,
+      sent: "",
+      releasedAt: null,
+    };
+  }
+
+  private move(event: PointerEvent): void {
+    const drag = this.drag;
+    if (!drag || drag.releasedAt !== null) {
+      if (event.buttons === 0 && event.target === this.host.canvas) {
+        this.host.canvas.style.cursor = this.pick(event) ? "grab" : "";
+      }
+      return;
+    }
+    if (event.pointerId !== drag.pointer) return;
+    event.stopPropagation();
+    this.follow(drag, event);
+    if (performance.now() - drag.lastSent >= SEND_INTERVAL_MS) this.sendPlace(drag);
+  }
+
+  private release(event: PointerEvent): void {
+    const drag = this.drag;
+    if (!drag || drag.releasedAt !== null || event.pointerId !== drag.pointer) return;
+    event.stopPropagation();
+    if (event.type === "pointerup") this.follow(drag, event);
+    this.sendPlace(drag);
+    drag.releasedAt = performance.now();
+    this.host.controls.enabled = true;
+    this.host.canvas.style.cursor = "";
+    if (this.host.canvas.hasPointerCapture(event.pointerId)) {
+      this.host.canvas.releasePointerCapture(event.pointerId);
+    }
+  }
+
+  /** Moves the drag's pose to where the pointer says, kept on the floor. */
+  private follow(drag: Drag, event: PointerEvent): void {
+    if (drag.turning) {
+      drag.phi = wrapAngle(drag.startPhi - (event.clientX - drag.startClientX) * TURN_PER_PIXEL);
+    } else {
+      const floor = this.floorPoint(event);
+      const size = this.host.scene()?.floor;
+      if (!floor || !size) return;
+      drag.x = Math.min(size.width, Math.max(0, floor.x + drag.grab.x));
+      drag.y = Math.min(size.height, Math.max(0, floor.y + drag.grab.y));
+    }
+    this.host.requestRender();
+  }
+
+  private sendPlace(drag: Drag): void {
+    const { kind, id } = drag.target;
+    const command: BrowserCommand =
+      kind === "robot"
+        ? { type: "place", robot: id, x: drag.x, y: drag.y, phi: drag.phi }
+        : { type: "place", object: id, x: drag.x, y: drag.y, phi: drag.phi };
+    const text = JSON.stringify(command);
+    drag.lastSent = performance.now();
+    if (text === drag.sent) return;
+    drag.sent = text;
+    this.send(command);
+  }
+
+  private aim(event: PointerEvent): void {
+    const rect = this.host.canvas.getBoundingClientRect();
+    const ndc = new Vector2(
+      ((event.clientX - rect.left) / rect.width) * 2 - 1,
+      1 - ((event.clientY - rect.top) / rect.height) * 2,
+    );
+    this.raycaster.setFromCamera(ndc, this.host.camera);
+  }
+
+  /** The robot or object under the pointer, if any. */
+  private pick(event: PointerEvent): DragTarget | null {
+    const world = this.host.world();
+    if (!world) return null;
+    const owners = new Map<Object3D, DragTarget>();
+    for (const [id, model] of world.robots) owners.set(model, { kind: "robot", id });
+    for (const [id, model] of world.objects) owners.set(model, { kind: "object", id });
+    for (const body of this.host.scene()?.bodies ?? []) {
+      const part = world.bodies.get(body.id);
+      if (part) owners.set(part, { kind: "robot", id: body.robot });
+    }
+    this.aim(event);
+    const hits = this.raycaster.intersectObjects([...owners.keys()].filter((o) => o.visible), true);
+    for (const hit of hits) {
+      for (let thing: Object3D | null = hit.object; thing; thing = thing.parent) {
+        const owner = owners.get(thing);
+        if (owner) return owner;
+      }
+    }
+    return null;
+  }
+
+  /** The floor point (world coordinates) under the pointer; null when it points above the horizon. */
+  private floorPoint(event: PointerEvent): Vector3 | null {
+    this.aim(event);
+    this.host.root.updateMatrixWorld();
+    const ray = this.raycaster.ray.clone().applyMatrix4(this.host.root.matrixWorld.clone().invert());
+    return ray.intersectPlane(FLOOR, new Vector3());
+  }
+}
