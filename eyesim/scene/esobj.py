@@ -11,6 +11,7 @@ from pathlib import Path
 
 from eyesim.scene.description import Collider, Location, ObjectType
 from eyesim.scene.diagnostics import Diagnostics, quoted
+from eyesim.scene.keyword_reader import KeywordReader
 from eyesim.scene.lexer import Line, format_number, integer, number, quote_token, split_lines
 from eyesim.scene.robi import VR_AXIS, vr_to_robot
 
@@ -33,41 +34,14 @@ def parse_esobj(text: str, source: str, diagnostics: Diagnostics, where: dict | 
     return reader.object_type()
 
 
-class _ObjectReader:
+class _ObjectReader(KeywordReader):
     def __init__(self, source: str, diagnostics: Diagnostics, ours: bool):
-        self.source = source
-        self.diagnostics = diagnostics
+        super().__init__(source, diagnostics)
         self.ours = ours
         self.fields: dict = {}
         self.colliders: list[tuple[str, list[float], str]] = []  # as written, scaled at the end
         self.mass_centre: list[float] | None = None
         self.model_at: Location | None = None
-
-    def at(self, line: Line, index: int = 0) -> Location:
-        return Location(self.source, line.number, line.tokens[min(index, len(line.tokens) - 1)].column)
-
-    def error(self, line: Line, message: str, index: int = 0, code: str = "syntax") -> None:
-        self.diagnostics.error(self.at(line, index), message, code)
-
-    def arity(self, line: Line, counts: tuple[int, ...], form: str) -> bool:
-        if len(line.args) in counts:
-            return True
-        found = quoted(" ".join(t.text for t in line.args)) if line.args else "nothing"
-        index = max(counts) + 1 if len(line.args) > max(counts) else 0
-        self.error(line, f"{line.keyword}: expected {' or '.join(map(str, counts))} arguments "
-                         f"({line.keyword} {form}), found {len(line.args)}: {found}", index)
-        return False
-
-    def numbers(self, line: Line, first: int, names: tuple[str, ...]) -> list[float] | None:
-        values, ok = [], True
-        for offset, name in enumerate(names):
-            value = number(line.tokens[first + offset].text)
-            if value is None:
-                self.error(line, f"{line.keyword}: expected {name} (a number), found "
-                                 f"{quoted(line.tokens[first + offset].text)}", first + offset)
-                ok = False
-            values.append(value)
-        return values if ok else None
 
     def statement(self, line: Line) -> None:
         word = line.keyword.lower()

@@ -18,6 +18,7 @@ from eyesim.scene.description import (ArmSpec, BuoyancySpec, CameraSpec, Collide
                                       JointSpec, LidarSpec, Location, PsdSpec, RobotType, SteeringSpec,
                                       ThrusterSpec, WheelSpec)
 from eyesim.scene.diagnostics import Diagnostics, quoted
+from eyesim.scene.keyword_reader import KeywordReader
 from eyesim.scene.lexer import Line, Token, format_number, integer, number, quote_token, split_lines
 from eyesim.scene.robot_type import finish_robot_type
 
@@ -98,10 +99,9 @@ def vr_to_robot(x: float, y: float, z: float) -> tuple[float, float, float]:
 VR_AXIS = {"x": "y", "y": "z", "z": "x"}
 
 
-class _RobotReader:
+class _RobotReader(KeywordReader):
     def __init__(self, source: str, diagnostics: Diagnostics, dialect: str):
-        self.source = source
-        self.diagnostics = diagnostics
+        super().__init__(source, diagnostics)
         self.dialect = dialect
         self.fields: dict = {}
         self.where: dict[str, Location] = {}
@@ -120,37 +120,6 @@ class _RobotReader:
         self.steering: dict = {}
 
     # -- helpers -------------------------------------------------------------------------------
-    def at(self, line: Line, index: int = 0) -> Location:
-        index = min(index, len(line.tokens) - 1)
-        return Location(self.source, line.number, line.tokens[index].column)
-
-    def error(self, line: Line, message: str, index: int = 0, code: str = "syntax") -> None:
-        self.diagnostics.error(self.at(line, index), message, code)
-
-    def arity(self, line: Line, counts: tuple[int, ...], form: str) -> bool:
-        n = len(line.args)
-        if n in counts:
-            return True
-        found = quoted(" ".join(t.text for t in line.args)) if line.args else "nothing"
-        wanted = " or ".join(str(c) for c in counts)
-        index = max(counts) + 1 if n > max(counts) else 0  # the first extra argument, or the keyword
-        self.error(line, f"{line.keyword}: expected {wanted} argument{'s' if counts != (1,) else ''} "
-                         f"({line.keyword} {form}), found {n}: {found}", index)
-        return False
-
-    def numbers(self, line: Line, first: int, names: tuple[str, ...]) -> list[float] | None:
-        """Arguments first.. (1-based token index) as numbers; every bad one is reported."""
-        values, ok = [], True
-        for offset, name in enumerate(names):
-            token = line.tokens[first + offset]
-            value = number(token.text)
-            if value is None:
-                self.error(line, f"{line.keyword}: expected {name} (a number), found {quoted(token.text)}",
-                           first + offset)
-                ok = False
-            values.append(value)
-        return values if ok else None
-
     def positive(self, line: Line, value: float, index: int, name: str) -> bool:
         if value <= 0:
             self.error(line, f"{line.keyword}: expected {name} > 0, found {quoted(line.tokens[index].text)}",

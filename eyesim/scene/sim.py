@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 from eyesim.scene.description import Location, Marker, Settings
 from eyesim.scene.diagnostics import Diagnostics, quoted
+from eyesim.scene.keyword_reader import KeywordReader
 from eyesim.scene.lexer import Line, format_number, integer, number, quote_token, split_lines
 
 SETTING_FLAGS = ("vis", "trace")
@@ -68,10 +69,9 @@ def parse_sim(text: str, source: str, diagnostics: Diagnostics, where: dict | No
     return reader.document()
 
 
-class _SceneReader:
+class _SceneReader(KeywordReader):
     def __init__(self, source: str, diagnostics: Diagnostics):
-        self.source = source
-        self.diagnostics = diagnostics
+        super().__init__(source, diagnostics)
         self.world: Reference | None = None
         self.flags: set[str] = set()
         self.values: dict[str, float | int] = {}
@@ -79,12 +79,6 @@ class _SceneReader:
         self.object_files: list[Reference] = []
         self.placements: list[Placement] = []
         self.markers: list[Marker] = []
-
-    def at(self, line: Line, index: int = 0) -> Location:
-        return Location(self.source, line.number, line.tokens[min(index, len(line.tokens) - 1)].column)
-
-    def error(self, line: Line, message: str, index: int = 0, code: str = "syntax") -> None:
-        self.diagnostics.error(self.at(line, index), message, code)
 
     def document(self) -> SimDocument:
         return SimDocument(self.source, self.world, Settings("vis" in self.flags, "trace" in self.flags, **self.values),
@@ -97,18 +91,6 @@ class _SceneReader:
             self.placement(line)
         else:
             handler(line)
-
-    def numbers(self, line: Line, first: int, names: tuple[str, ...]) -> list[float] | None:
-        values, ok = [], True
-        for offset, name in enumerate(names):
-            token = line.tokens[first + offset]
-            value = number(token.text)
-            if value is None:
-                self.error(line, f"{line.keyword}: expected {name} (a number), found {quoted(token.text)}",
-                           first + offset)
-                ok = False
-            values.append(value)
-        return values if ok else None
 
     def usage(self, line: Line, form: str) -> None:
         found = quoted(" ".join(t.text for t in line.args)) if line.args else "nothing"
