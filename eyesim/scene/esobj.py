@@ -51,12 +51,7 @@ class _ObjectReader(KeywordReader):
         if word in SHAPES:  # EyeSim VR 2018 wrote shapes without the `collider` keyword
             self.collider(line, 0)
             return
-        handler = getattr(self, "kw_" + word, None)
-        if handler is None:
-            self.diagnostics.warning(self.at(line), f"unknown keyword {quoted(line.keyword)}: line ignored",
-                                     "unknown-keyword")
-            return
-        handler(line)
+        self.dispatch(line, word)
 
     def kw_dialect(self, line: Line) -> None:
         if self.arity(line, (1,), "eyesim") and line.args[0].text.lower() not in ("eyesim", "vr"):

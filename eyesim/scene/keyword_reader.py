@@ -19,6 +19,16 @@ class KeywordReader:
     def error(self, line: Line, message: str, index: int = 0, code: str = "syntax") -> None:
         self.diagnostics.error(self.at(line, index), message, code)
 
+    def dispatch(self, line: Line, keyword: str) -> None:
+        """Hand the line to this reader's `kw_<keyword>` method; unknown keywords are warned about
+        and the line ignored, as every EyeSim version did."""
+        handler = getattr(self, "kw_" + keyword, None)
+        if handler is None:
+            self.diagnostics.warning(self.at(line), f"unknown keyword {quoted(line.keyword)}: line ignored",
+                                     "unknown-keyword")
+            return
+        handler(line)
+
     def arity(self, line: Line, counts: tuple[int, ...], form: str) -> bool:
         """True when the line has one of the argument counts; else reports what it should look like."""
         n = len(line.args)

@@ -145,12 +145,7 @@ class _RobotReader(KeywordReader):
 
     # -- statements ----------------------------------------------------------------------------
     def statement(self, line: Line) -> None:
-        handler = getattr(self, "kw_" + line.keyword.lower(), None)
-        if handler is None:
-            self.diagnostics.warning(self.at(line), f"unknown keyword {quoted(line.keyword)}: line ignored",
-                                     "unknown-keyword")
-            return
-        handler(line)
+        self.dispatch(line, line.keyword.lower())
 
     def kw_dialect(self, line: Line) -> None:
         if self.arity(line, (1,), "eyesim|eyesim6|vr|vr1") and line.args[0].text.lower() not in DIALECTS:
