@@ -605,16 +605,16 @@ def write_robi(robot: RobotType) -> str:
         numbers = " ".join(f(v) for v in (*c.size, *c.center))
         axis = f" {c.axis}" if c.kind in ("capsule", "cylinder") else ""
         out.append(f"collider {c.kind} {numbers}{axis}")
+    def wheel_line(keyword: str, w) -> str:
+        return f"{keyword} {f(w.diameter)} {f(w.max_speed)} {w.ticks_per_rev} {f(w.track)}"
+
     if robot.wheels is not None:
-        w = robot.wheels
-        wheel = "wheel drive" if robot.drive == "ackermann" else "wheel"
-        out.append(f"{wheel} {f(w.diameter)} {f(w.max_speed)} {w.ticks_per_rev} {f(w.track)}")
+        out.append(wheel_line("wheel drive" if robot.drive == "ackermann" else "wheel", robot.wheels))
     if robot.steering is not None:
         s = robot.steering
         out.append(f"axel turn {f(s.height) if s.height is not None else 0} {f(s.offset)}")
         if s.wheels is not None:
-            w = s.wheels
-            out.append(f"wheel turn {f(w.diameter)} {f(w.max_speed)} {w.ticks_per_rev} {f(w.track)}")
+            out.append(wheel_line("wheel turn", s.wheels))
     for p in robot.psds:
         if p.pitch:
             out.append(f"psd {p.id} {_name(p.name)} {f(p.x)} {f(p.y)} {f(p.z)} {f(p.pitch)} {f(p.heading)} 0")
