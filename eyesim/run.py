@@ -183,6 +183,9 @@ def simulate(args) -> int:
             raise UsageError(f"cannot serve the viewer on port {args.viewer_port}: {error.strerror} "
                              f"(try --viewer-port 0)") from None
         print(f"EyeSim viewer: {viewer.url}", flush=True)
+        if viewer.access.token:
+            print("EyeSim: the viewer is reachable from other machines; open it with the URL above "
+                  "(it carries the access token)", flush=True)
         if args.open and _has_display():
             webbrowser.open(viewer.url)
     print(f"EyeSim: {len(sim.robots)} robot(s), programs connect to {args.host}:{server.port} "

@@ -6,10 +6,16 @@ like SIMSetRobot/SIMSetObject: the true pose changes, encoders and odometry do n
 from __future__ import annotations
 
 import math
+import reprlib
 
 
 def _number(value) -> bool:
-    return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+    if not isinstance(value, (int, float)) or isinstance(value, bool):
+        return False
+    try:
+        return math.isfinite(value)
+    except OverflowError:  # an integer too large for a float
+        return False
 
 
 def _whole(value) -> bool:
@@ -29,7 +35,7 @@ def place(sim, message: dict) -> str | None:
             f"place: no {kind} {ident!r} (the scene has none)"
     x, y, phi = message.get("x"), message.get("y"), message.get("phi")
     if not (_number(x) and _number(y) and _number(phi)):
-        return f"place: x, y (m) and phi (rad) must be numbers, got {x!r}, {y!r}, {phi!r}"
+        return f"place: x, y (m) and phi (rad) must be numbers, got {reprlib.repr(x)}, {reprlib.repr(y)}, {reprlib.repr(phi)}"
     width, height = sim.floor.width, sim.floor.height
     if not (0 <= x <= width and 0 <= y <= height):
         return f"place: ({x:g}, {y:g}) is off the floor (0..{width:g} x 0..{height:g} m)"

@@ -13,6 +13,8 @@ import io
 import json
 import logging
 import math
+import reprlib
+import socket
 import time
 from collections import deque
 from concurrent.futures import ThreadPoolExecutor
@@ -24,11 +26,15 @@ from PIL import Image
 from eyesim.paths import STATIC_DIR
 from eyesim.robot.components.keys import KEYS
 from eyesim.web import mesh_message, place_command, robot_io_commands
+from eyesim.web.access import AccessPolicy
 from eyesim.web.scene_message import scene_message
 
 log = logging.getLogger("eyesim.web")
 CONSOLE_BACKLOG = 500  # console chunks per robot replayed to a browser that connects late
 CAMERA_VIEW_WIDTH = 320  # pixels: larger camera images are sent to the viewer scaled down by a whole factor
+MIN_SPEED, MAX_SPEED = 0.01, 1000.0  # realtime factors a browser may set ('max' for as fast as possible)
+MAX_COMMAND_BYTES = 64 * 1024  # a browser command is a small JSON object; larger ones close the socket
+TEXTURE_TYPES = {"PNG": "image/png", "JPEG": "image/jpeg", "BMP": "image/bmp", "GIF": "image/gif"}
 
 
 def encode_lcd(pixels) -> str:
@@ -66,7 +72,8 @@ class Browser:
             self.wake.clear()
             while self.events:
                 _, item = self.events.popleft()
-                text = await item if isinstance(item, asyncio.Future) else item
+                # shield: the future is shared with other tabs; closing this one must not cancel it
+                text = await asyncio.shield(item) if isinstance(item, asyncio.Future) else item
                 await self.ws.send_str(text)
             if self.snapshot is not None:
                 text, self.snapshot = self.snapshot, None
@@ -192,9 +199,9 @@ class ViewerHub:
         kind = message.get("type")
         if kind == "key":
             robot, key = message.get("robot"), message.get("key")
-            if not isinstance(robot, int) or self.sim.robot_by_id(robot) is None:
-                return f"key: no robot {robot!r}"
-            if key not in KEYS:
+            if not isinstance(robot, int) or isinstance(robot, bool) or self.sim.robot_by_id(robot) is None:
+                return f"key: no robot {reprlib.repr(robot)}"
+            if not isinstance(key, int) or key not in KEYS:
                 return f"key: {key!r} is not one of 1, 2, 4, 8"
             self.sim.call(lambda sim: sim.press_key(robot, key))
         elif kind in ("pause", "resume"):
@@ -203,8 +210,9 @@ class ViewerHub:
             value = message.get("value")
             if value == "max":
                 value = math.inf
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not value > 0:
-                return f"speed: {value!r} is not a positive number or 'max'"
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or \
+                    not (value == math.inf or MIN_SPEED <= value <= MAX_SPEED):
+                return f"speed: {reprlib.repr(value)} is not a number from {MIN_SPEED:g} to {MAX_SPEED:g} or 'max'"
             self.sim.call(lambda sim: sim.clock.set_speed(float(value), sim.time_us))
         elif kind == "reset":
             self.sim.call(lambda sim: sim.reset())
@@ -214,6 +222,36 @@ class ViewerHub:
             return place_command.place(self.sim, message)
         else:
             return f"unknown message type {kind!r}"
+        return None
+
+
+    def command_text(self, text: str) -> str | None:
+        """A command as the browser sent it: the error text for a bad one, else None."""
+        try:
+            data = json.loads(text, parse_constant=_reject_constant)
+        except (ValueError, RecursionError) as error:
+            return f"not valid JSON: {error}"
+        if not isinstance(data, dict):
+            return "expected a JSON object"
+        try:
+            return self.command(data)
+        except Exception:  # a bad value the checks missed: this browser gets an error, nobody else notices
+            log.exception("viewer command %.200r failed", text)
+            return f"{data.get('type')!r}: the simulator could not carry out this command"
+
+
+def _reject_constant(name: str):
+    raise ValueError(f"{name} is not a number here")
+
+
+def _image_type(path: Path) -> str | None:
+    """The Content-Type of an image file we are willing to serve, else None."""
+    try:
+        if path.is_symlink() and path.parent.resolve() not in path.resolve().parents:
+            return None  # a link out of its folder
+        with Image.open(path) as image:
+            return TEXTURE_TYPES.get(image.format)
+    except (OSError, ValueError):
         return None
 
 
@@ -236,17 +274,20 @@ def _camera_message(robot: int, pixels) -> str:
 
 
 class ViewerServer:
-    def __init__(self, sim, io_thread, host: str = "127.0.0.1", port: int = 8080):
+    def __init__(self, sim, io_thread, host: str = "127.0.0.1", port: int = 8080, token: str | None = None):
         self.sim = sim
         self.io = io_thread
         self.host = host
         self.port = port
+        self.access = AccessPolicy(host, token)
         self.hub: ViewerHub | None = None
         self._runner: web.AppRunner | None = None
 
     @property
     def url(self) -> str:
-        return f"http://{self.host}:{self.port}/"
+        host = socket.gethostname() if self.host in ("0.0.0.0", "::", "") else self.host
+        host = f"[{host}]" if ":" in host else host
+        return f"http://{host}:{self.port}/{self.access.url_suffix()}"
 
     def start(self) -> None:
         self.io.run(self._start())
@@ -254,7 +295,7 @@ class ViewerServer:
 
     async def _start(self) -> None:
         self.hub = ViewerHub(self.sim, asyncio.get_running_loop())
-        app = web.Application()
+        app = web.Application(middlewares=[self.access.middleware])
         app.router.add_get("/ws", self._websocket)
         app.router.add_get("/scene/floor-texture", self._floor_texture)
         app.router.add_get("/scene/mesh/{kind}/{id}", self._mesh)
@@ -286,15 +327,19 @@ class ViewerServer:
         return web.FileResponse(path, headers={"Cache-Control": "no-cache"})
 
     async def _floor_texture(self, request: web.Request) -> web.StreamResponse:
+        """Only the image the scene names, and only if it is an image: a scene file is not allowed
+        to turn this route into a way of reading other files."""
         texture = self.sim.scene.world.floor_texture
-        if not texture or not Path(texture).is_file():
+        content_type = _image_type(Path(texture)) if texture else None
+        if content_type is None:
             raise web.HTTPNotFound()
-        return web.FileResponse(texture)
+        return web.FileResponse(texture, headers={"Content-Type": content_type})
 
     async def _mesh(self, request: web.Request) -> web.StreamResponse:
         """A robot's or object's .obj model as JSON triangles (mesh_message.py); 404 without one."""
         kind, number = request.match_info["kind"], request.match_info["id"]
-        body = mesh_message.body_of(self.sim, kind, int(number)) if number.isdigit() else None
+        valid = number.isascii() and number.isdigit() and len(number) <= 9
+        body = mesh_message.body_of(self.sim, kind, int(number)) if valid else None
         if body is None or not mesh_message.has_mesh(self.sim, body):
             raise web.HTTPNotFound()
         # a big model takes a moment to turn into JSON: not on the I/O loop
@@ -303,20 +348,19 @@ class ViewerServer:
         return web.Response(text=text, content_type="application/json")
 
     async def _websocket(self, request: web.Request) -> web.WebSocketResponse:
-        ws = web.WebSocketResponse(heartbeat=20)
+        ws = web.WebSocketResponse(heartbeat=20, max_msg_size=MAX_COMMAND_BYTES)
         await ws.prepare(request)
         browser = Browser(ws)
         await self.hub.attach(browser)
         pump = asyncio.get_running_loop().create_task(browser.pump())
         try:
             async for message in ws:
-                if message.type != WSMsgType.TEXT:
+                if message.type == WSMsgType.TEXT:
+                    error = self.hub.command_text(message.data)
+                elif message.type == WSMsgType.BINARY:
+                    error = "binary messages are not understood: send JSON text"
+                else:
                     continue
-                try:
-                    data = json.loads(message.data)
-                    error = self.hub.command(data) if isinstance(data, dict) else "expected a JSON object"
-                except ValueError:
-                    error = "not valid JSON"
                 if error:
                     browser.add_event(json.dumps({"type": "error", "message": error}))
         finally:
