@@ -5,6 +5,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import lru_cache
 
+import math
+
 import numpy as np
 from PIL import Image, ImageDraw
 
@@ -294,53 +296,64 @@ class Lcd(Component):
         self.pixels[ys[inside], xs[inside]] = rgb(color)
 
     def line(self, x1: int, y1: int, x2: int, y2: int, color: int) -> None:
-        """Both end points included; one pixel per step along the longer axis."""
+        """Both end points included; one pixel per step along the longer axis. Only the steps
+        that can land on the screen are computed, so a line of any length costs the same."""
         check_color(color)
         steps = max(abs(x2 - x1), abs(y2 - y1))
-        t = np.arange(steps + 1)
-        # Exact integer rounding (half up), so every platform draws the same pixels.
-        xs = x1 + ((2 * (x2 - x1) * t + steps) // (2 * steps) if steps else t)
-        ys = y1 + ((2 * (y2 - y1) * t + steps) // (2 * steps) if steps else t)
-        self._plot(np.asarray(xs), np.asarray(ys), color)
+        if steps == 0:
+            self._plot(np.array([x1]), np.array([y1]), color)
+            self._changed()
+            return
+        first, last = 0, steps
+        for start, end, size in ((x1, x2, WIDTH), (y1, y2, HEIGHT)):
+            if start == end:
+                if not 0 <= start < size:
+                    first, last = 1, 0  # all of it off screen
+                continue
+            # steps t where this coordinate is within a pixel of the screen (with a margin)
+            low, high = sorted(((-1 - start) * steps / (end - start), (size - start) * steps / (end - start)))
+            first, last = max(first, math.floor(low) - 1), min(last, math.ceil(high) + 1)
+        # Exact integer rounding (half up), so every platform draws the same pixels; Python
+        # integers because the products can exceed 64 bits for far-away end points.
+        ts = range(first, last + 1)
+        xs = [x1 + (2 * (x2 - x1) * t + steps) // (2 * steps) for t in ts]
+        ys = [y1 + (2 * (y2 - y1) * t + steps) // (2 * steps) for t in ts]
+        self._plot(*_on_screen(xs, ys), color)
         self._changed()
 
     def area(self, x1: int, y1: int, x2: int, y2: int, color: int, fill: bool) -> None:
         """The rectangle between two corners, both included; filled or a one-pixel outline."""
         check_color(color)
-        left, right = sorted((x1, x2))
-        top, bottom = sorted((y1, y2))
+        # Clipped to one pixel beyond the screen: an edge off screen stays off screen.
+        left, right = (min(max(v, -1), WIDTH) for v in sorted((x1, x2)))
+        top, bottom = (min(max(v, -1), HEIGHT) for v in sorted((y1, y2)))
         if fill:
-            xs, ys = np.meshgrid(np.arange(left, right + 1), np.arange(top, bottom + 1))
+            self.pixels[max(top, 0):bottom + 1, max(left, 0):right + 1] = rgb(color)
         else:
             across, down = np.arange(left, right + 1), np.arange(top, bottom + 1)
-            xs = np.concatenate([across, across, np.full(down.size, left), np.full(down.size, right)])
-            ys = np.concatenate([np.full(across.size, top), np.full(across.size, bottom), down, down])
-        self._plot(xs.ravel(), ys.ravel(), color)
+            on_left, on_right = (left if left == min(x1, x2) else -1), (right if right == max(x1, x2) else -1)
+            on_top, on_bottom = (top if top == min(y1, y2) else -1), (bottom if bottom == max(y1, y2) else -1)
+            xs = np.concatenate([across, across, np.full(down.size, on_left), np.full(down.size, on_right)])
+            ys = np.concatenate([np.full(across.size, on_top), np.full(across.size, on_bottom), down, down])
+            self._plot(xs, ys, color)
         self._changed()
 
     def circle(self, cx: int, cy: int, radius: int, color: int, fill: bool) -> None:
-        """Pixels within `radius` of the centre (filled), or the midpoint-circle outline."""
+        """Pixels within `radius` of the centre (filled), or the midpoint-circle outline. Only
+        offsets that can land on the screen are computed, so any radius costs about the same."""
         check_color(color)
         if radius < 0:
             raise ValueError(f"radius {radius} is negative")
-        if fill:
-            offsets = np.arange(-radius, radius + 1)
-            dx, dy = np.meshgrid(offsets, offsets)
-            inside = dx * dx + dy * dy <= radius * radius + radius  # the same edge as the outline
-            self._plot(cx + dx[inside], cy + dy[inside], color)
+        if fill:  # row by row: the span of x with dx^2 + dy^2 <= r^2 + r, the same edge as the outline
+            limit = radius * radius + radius
+            for row in range(max(cy - radius, 0), min(cy + radius, HEIGHT - 1) + 1):
+                half = math.isqrt(limit - (row - cy) ** 2)
+                left, right = max(cx - half, 0), min(cx + half, WIDTH - 1)
+                if left <= right:
+                    self.pixels[row, left:right + 1] = rgb(color)
         else:
-            points = []
-            x, y, error = radius, 0, 1 - radius
-            while x >= y:
-                points += [(x, y), (y, x), (-y, x), (-x, y), (-x, -y), (-y, -x), (y, -x), (x, -y)]
-                y += 1
-                if error < 0:
-                    error += 2 * y + 1
-                else:
-                    x -= 1
-                    error += 2 * (y - x) + 1
-            offsets = np.array(points)
-            self._plot(cx + offsets[:, 0], cy + offsets[:, 1], color)
+            offsets = [o for y in _outline_parameters(cx, cy, radius) for o in _octants(_outline_x(radius, y), y)]
+            self._plot(*_on_screen([cx + dx for dx, _ in offsets], [cy + dy for _, dy in offsets]), color)
         self._changed()
 
     def image(self, x: int, y: int, width: int, height: int, display_width: int, display_height: int,
@@ -359,14 +372,47 @@ class Lcd(Component):
             pixels = np.where(pixels != 0, 0, 255).astype(np.uint8)  # 1 = black, 0 = white
         if channels == 1:
             pixels = np.repeat(pixels, 3, axis=2)
-        rows = np.arange(display_height) * height // display_height
-        cols = np.arange(display_width) * width // display_width
-        shown = pixels[rows][:, cols]
+        # Only the displayed pixels that land on the screen are looked up (nearest pixel).
         top, left = max(0, y), max(0, x)
         bottom, right = min(HEIGHT, y + display_height), min(WIDTH, x + display_width)
         if top < bottom and left < right:
-            self.pixels[top:bottom, left:right] = shown[top - y:bottom - y, left - x:right - x]
+            rows = [(row - y) * height // display_height for row in range(top, bottom)]
+            cols = [(col - x) * width // display_width for col in range(left, right)]
+            self.pixels[top:bottom, left:right] = pixels[rows][:, cols]
         self._changed()
+
+
+def _on_screen(xs: list[int], ys: list[int]) -> tuple[np.ndarray, np.ndarray]:
+    """The points (Python integers, any size) that lie on the screen, as pixel index arrays."""
+    kept = [(x, y) for x, y in zip(xs, ys) if 0 <= x < WIDTH and 0 <= y < HEIGHT]
+    return np.array([p[0] for p in kept], dtype=np.int64), np.array([p[1] for p in kept], dtype=np.int64)
+
+
+def _outline_x(radius: int, y: int) -> int:
+    """x of the midpoint-circle outline at height y in its first octant: the algorithm keeps x
+    while the midpoint (x - 1/2, y) lies inside the circle, so x is the largest such integer."""
+    if y == 0:
+        return radius
+    d = 4 * (radius * radius - y * y)  # (2x - 1)^2 < d
+    if d <= 0:
+        return 0
+    x = (1 + math.isqrt(d - 1)) // 2
+    while x > 0 and (2 * x - 1) ** 2 >= d:
+        x -= 1
+    while (2 * x + 1) ** 2 < d:
+        x += 1
+    return x
+
+
+def _outline_parameters(cx: int, cy: int, radius: int) -> list[int]:
+    """The octant parameters y (0 <= y <= x) whose points can be on the screen: every octant
+    point has y as its horizontal or vertical offset from the centre."""
+    candidates = {abs(px - cx) for px in range(WIDTH)} | {abs(py - cy) for py in range(HEIGHT)}
+    return sorted(y for y in candidates if y <= radius and _outline_x(radius, y) >= y)
+
+
+def _octants(x: int, y: int) -> list[tuple[int, int]]:
+    return [(x, y), (y, x), (-y, x), (-x, y), (-x, -y), (-y, -x), (y, -x), (x, -y)]
 
 
 def create(context) -> list[Component]:
