@@ -25,7 +25,8 @@ DEFAULT_VIEWER_PORT = 8080
 def register(subparsers) -> None:
     parser = subparsers.add_parser("run", help="run the simulator on a scene (default: the bundled arena)",
                                    description="Run the simulator on a scene file (.sim, .wld, .maz or JSON).")
-    parser.add_argument("scene", nargs="?", help="scene file; default: the bundled arena with one S4")
+    parser.add_argument("scene", nargs="?", help="scene file, or the name of a bundled scene (mako_pool); "
+                        "default: the bundled arena with one S4")
     parser.add_argument("--headless", action="store_true", help="no viewer; print a status line per robot at the end")
     parser.add_argument("--until", type=float, metavar="SECONDS", help="stop at this simulation time")
     parser.add_argument("--host", default=g.DEFAULT_HOST, help=f"address to serve on (default {g.DEFAULT_HOST})")
@@ -93,10 +94,10 @@ def parse_key(sim: Simulation, text: str) -> tuple[int, int, float]:
 
 
 def load(path: str | None):
-    from eyesim.scene import DEFAULT_SCENE, SceneError, load_scene
+    from eyesim.scene import DEFAULT_SCENE, SceneError, builtins, load_scene
 
     try:
-        scene = load_scene(path or DEFAULT_SCENE)
+        scene = load_scene(builtins.scene_argument(path) if path else DEFAULT_SCENE)
     except SceneError as error:
         for diagnostic in error.diagnostics:
             print(diagnostic, file=sys.stderr)
