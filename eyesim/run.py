@@ -45,6 +45,8 @@ def register(subparsers) -> None:
     parser.add_argument("--psd-noise", type=float, metavar="MM",
                         help="standard deviation of Gaussian noise on PSD readings (default: the scene's PSDNOISE, else 0)")
     parser.add_argument("--seed", type=int, help="seed of the simulator's random numbers (default: the scene's SEED, else 0)")
+    parser.add_argument("--eyesim6-psd", action="store_true",
+                        help="number PSDs as EyeSim 6 programs do: 1 left, 2 front (as the scene setting EYESIM6PSD)")
     parser.add_argument("--record", metavar="CSV", help="write every robot's true pose every 10 ms to CSV")
     parser.add_argument("--save-lcd", metavar="DIR", help="at the end, save each robot's LCD as DIR/robot<id>-lcd.png")
     parser.add_argument("--open", action="store_true", help="open the viewer in a web browser")
@@ -118,6 +120,8 @@ def with_settings(scene, args):
         changes["psd_noise"] = args.psd_noise
     if args.seed is not None:
         changes["seed"] = args.seed
+    if args.eyesim6_psd:
+        changes["eyesim6_psd"] = True
     return dataclasses.replace(scene, settings=dataclasses.replace(scene.settings, **changes)) if changes else scene
 
 
