@@ -25,7 +25,8 @@ DEFAULT_VIEWER_PORT = 8080
 def register(subparsers) -> None:
     parser = subparsers.add_parser("run", help="run the simulator on a scene (default: the bundled arena)",
                                    description="Run the simulator on a scene file (.sim, .wld, .maz or JSON).")
-    parser.add_argument("scene", nargs="?", help="scene file; default: the bundled arena with one S4")
+    parser.add_argument("scene", nargs="?", help="scene file, or the name of a bundled scene (mako_pool); "
+                        "default: the bundled arena with one S4")
     parser.add_argument("--headless", action="store_true", help="no viewer; print a status line per robot at the end")
     parser.add_argument("--until", type=float, metavar="SECONDS", help="stop at this simulation time")
     parser.add_argument("--host", default=g.DEFAULT_HOST, help=f"address to serve on (default {g.DEFAULT_HOST})")
@@ -44,6 +45,8 @@ def register(subparsers) -> None:
     parser.add_argument("--psd-noise", type=float, metavar="MM",
                         help="standard deviation of Gaussian noise on PSD readings (default: the scene's PSDNOISE, else 0)")
     parser.add_argument("--seed", type=int, help="seed of the simulator's random numbers (default: the scene's SEED, else 0)")
+    parser.add_argument("--eyesim6-psd", action="store_true",
+                        help="number PSDs as EyeSim 6 programs do: 1 left, 2 front (as the scene setting EYESIM6PSD)")
     parser.add_argument("--record", metavar="CSV", help="write every robot's true pose every 10 ms to CSV")
     parser.add_argument("--save-lcd", metavar="DIR", help="at the end, save each robot's LCD as DIR/robot<id>-lcd.png")
     parser.add_argument("--open", action="store_true", help="open the viewer in a web browser")
@@ -93,10 +96,10 @@ def parse_key(sim: Simulation, text: str) -> tuple[int, int, float]:
 
 
 def load(path: str | None):
-    from eyesim.scene import DEFAULT_SCENE, SceneError, load_scene
+    from eyesim.scene import DEFAULT_SCENE, SceneError, builtins, load_scene
 
     try:
-        scene = load_scene(path or DEFAULT_SCENE)
+        scene = load_scene(builtins.scene_argument(path) if path else DEFAULT_SCENE)
     except SceneError as error:
         for diagnostic in error.diagnostics:
             print(diagnostic, file=sys.stderr)
@@ -117,6 +120,8 @@ def with_settings(scene, args):
         changes["psd_noise"] = args.psd_noise
     if args.seed is not None:
         changes["seed"] = args.seed
+    if args.eyesim6_psd:
+        changes["eyesim6_psd"] = True
     return dataclasses.replace(scene, settings=dataclasses.replace(scene.settings, **changes)) if changes else scene
 
 

@@ -29,6 +29,25 @@ def object_path(name: str) -> Path | None:
     return _by_name(OBJECTS_DIR, ".esObj").get(name.casefold())
 
 
+def scene_path(name: str) -> Path | None:
+    """The bundled scene `name` ('mako_pool' or 'mako_pool.sim', any letter case), or None."""
+    stem = name[:-4] if name.lower().endswith(".sim") else name
+    return _by_name(SCENES_DIR, ".sim").get(stem.casefold())
+
+
+def scene_argument(text: str) -> Path:
+    """A scene named on the command line: the file if there is one, else the bundled scene of
+    that name (so `eyesim run mako_pool` works from anywhere), else the path as given."""
+    path = Path(text)
+    if path.exists() or path.parent != Path("."):
+        return path
+    return scene_path(text) or path
+
+
+def scene_names() -> list[str]:
+    return [p.stem for p in _by_name(SCENES_DIR, ".sim").values()]
+
+
 def robot_names() -> list[str]:
     return [p.stem for p in _by_name(ROBOTS_DIR, ".robi").values()]
 

@@ -6,7 +6,7 @@ import json
 import sys
 from pathlib import Path
 
-from eyesim.scene import summary
+from eyesim.scene import builtins, summary
 from eyesim.scene.convert import convert, default_output
 from eyesim.scene.description import Diagnostic, Location
 from eyesim.scene.diagnostics import Diagnostics, SceneError, sorted_diagnostics
@@ -33,7 +33,7 @@ def run_check(args) -> int:
     failed = False
     for name in args.files:
         try:
-            ok, lines, diagnostics = check_file(Path(name))
+            ok, lines, diagnostics = check_file(builtins.scene_argument(name))
         except Exception as e:  # a bug of ours must not show a traceback to a student
             ok, lines, diagnostics = False, [], [_internal(name, e)]
         failed |= not ok

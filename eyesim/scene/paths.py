@@ -34,7 +34,9 @@ def resolve(reference: str, referencing_file: str | Path | None = None) -> Path 
     text = reference.strip().replace("\\", "/")
     if not text or "\x00" in text:
         return None
-    base = Path(referencing_file).parent if referencing_file is not None else None
+    # Absolute, so that a scene given as `x.sim` has the same parent folders to fall back to
+    # (and `..` means the same) as one given by its full path.
+    base = Path(os.path.abspath(referencing_file)).parent if referencing_file is not None else None
     in_home = bool(_SIM_VARIABLE.match(text))
     if in_home:
         text = _SIM_VARIABLE.sub("", text)

@@ -14,7 +14,7 @@ from eyesim.scene.diagnostics import Diagnostics, quoted
 from eyesim.scene.keyword_reader import KeywordReader
 from eyesim.scene.lexer import Line, format_number, integer, number, quote_token, split_lines
 
-SETTING_FLAGS = ("vis", "trace")
+SETTING_FLAGS = ("vis", "trace", "eyesim6psd")
 SETTING_VALUES = {"psdnoise": ("psd_noise", "a standard deviation in mm >= 0"),  # NAME=value settings
                   "seed": ("seed", "a whole number")}
 KEYWORDS = ("world", "maze", "settings", "robi", "robot", "obj", "object", "marker")
@@ -81,7 +81,9 @@ class _SceneReader(KeywordReader):
         self.markers: list[Marker] = []
 
     def document(self) -> SimDocument:
-        return SimDocument(self.source, self.world, Settings("vis" in self.flags, "trace" in self.flags, **self.values),
+        settings = Settings("vis" in self.flags, "trace" in self.flags, eyesim6_psd="eyesim6psd" in self.flags,
+                            **self.values)
+        return SimDocument(self.source, self.world, settings,
                            tuple(self.robot_files), tuple(self.object_files), tuple(self.placements),
                            tuple(self.markers))
 
@@ -116,7 +118,7 @@ class _SceneReader(KeywordReader):
                 self.setting_value(line, i, flag, value)
             else:
                 self.diagnostics.warning(self.at(line, i), f"unknown setting {quoted(token.text)} ignored: "
-                                         "expected VIS, TRACE, PSDNOISE=<mm> or SEED=<n>", "unknown-setting")
+                                         "expected VIS, TRACE, EYESIM6PSD, PSDNOISE=<mm> or SEED=<n>", "unknown-setting")
 
     def setting_value(self, line: Line, index: int, flag: str, text: str) -> None:
         field, expected = SETTING_VALUES[flag]
@@ -221,8 +223,9 @@ def write_sim(document: SimDocument) -> str:
     out = ["# EyeSim scene (written by eyesim convert)"]
     if document.world is not None:
         out.append(f"world {quote_token(document.world.path)}")
-    flags = [name.upper() for name, on in (("vis", document.settings.vis), ("trace", document.settings.trace)) if on]
     settings = document.settings
+    flags = [name for name, on in (("VIS", settings.vis), ("TRACE", settings.trace),
+                                   ("EYESIM6PSD", settings.eyesim6_psd)) if on]
     if settings.psd_noise:
         flags.append(f"PSDNOISE={f(settings.psd_noise)}")
     if settings.seed:

@@ -38,7 +38,8 @@ def scene_lines(scene: Scene) -> list[str]:
         lines.append(f"objects: {len(scene.objects)} (" + ", ".join(f"{n} x{c}" for n, c in counts.items()) + ")")
     if scene.markers:
         lines.append(f"markers: {len(scene.markers)}")
-    flags = [n for n, on in (("VIS", scene.settings.vis), ("TRACE", scene.settings.trace)) if on]
+    flags = [n for n, on in (("VIS", scene.settings.vis), ("TRACE", scene.settings.trace),
+                             ("EYESIM6PSD", scene.settings.eyesim6_psd)) if on]
     if flags:
         lines.append("settings " + " ".join(flags))
     return lines

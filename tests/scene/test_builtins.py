@@ -1,8 +1,10 @@
 """Built-in robot and object types: our data files load cleanly and have realistic dimensions."""
 
+from pathlib import Path
+
 import pytest
 
-from eyesim.scene import builtins, load_object_type, load_robot_type
+from eyesim.scene import builtins, load_object_type, load_robot_type, load_scene
 from eyesim.scene.description import CameraSpec, PsdSpec, WheelSpec
 from eyesim.scene.diagnostics import Diagnostics
 from eyesim.scene.loader import read_definition
@@ -55,3 +57,32 @@ def test_objects_have_their_real_sizes():
 
 def test_builtins_are_loaded_once():
     assert load_robot_type("S4") is load_robot_type("s4")
+
+
+def test_mako_is_numbered_as_the_eyesim_submarine_examples_expect():
+    mako = load_robot_type("Mako")
+    assert mako.drive == "submarine"
+    thrusters = {t.name: (t.motor, (t.dx, t.dy, t.dz)) for t in mako.thrusters}
+    assert thrusters == {"LEFT": (1, (1, 0, 0)), "FRONT": (2, (0, 0, 1)), "RIGHT": (3, (1, 0, 0)),
+                         "BACK": (4, (0, 0, 1))}
+    by_id = {p.id: p for p in mako.psds}
+    assert [by_id[i].name for i in range(1, 7)] == ["PSD_FRONT", "PSD_FRONT_LEFT", "PSD_FRONT_RIGHT",
+                                                    "PSD_BACK_LEFT", "PSD_BACK_RIGHT", "PSD_DOWN"]
+    assert by_id[6].pitch == -90 and by_id[1].heading == 0 and by_id[2].heading == 90
+    assert mako.camera is not None and mako.camera.x > 0
+    # it floats: more water displaced than it weighs
+    assert mako.buoyancy.volume > mako.mass
+
+
+@pytest.mark.parametrize("name", builtins.scene_names())
+def test_bundled_scenes_load_without_warnings(name):
+    assert not load_scene(builtins.scene_path(name)).warnings
+
+
+def test_a_bundled_scene_is_named_on_the_command_line_by_its_name(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert builtins.scene_argument("mako_pool") == builtins.SCENES_DIR / "mako_pool.sim"
+    assert builtins.scene_argument("MAKO_POOL.sim") == builtins.SCENES_DIR / "mako_pool.sim"
+    (tmp_path / "mako_pool.sim").write_text("")
+    assert builtins.scene_argument("mako_pool.sim") == Path("mako_pool.sim")  # a file of that name wins
+    assert builtins.scene_argument("elsewhere/mako_pool") == Path("elsewhere/mako_pool")  # a path is a path

@@ -2,6 +2,7 @@
 
 import argparse
 import json
+import shutil
 
 import pytest
 
@@ -91,3 +92,23 @@ def test_registered_in_the_eyesim_command(capsys):
     except ImportError as e:  # another part of the command is not there yet
         pytest.skip(f"eyesim command incomplete: {e}")
     assert "EyeSim world" in capsys.readouterr().out
+
+
+EYESIM6_EXAMPLES = ("drivemodes/Diff.sim", "drivemodes/Ackermann.sim", "drivemodes/Omni.sim",
+                    "pantilt/PanTilt.sim", "maze/MazeSearch.sim")
+
+
+@pytest.mark.parametrize("scene", EYESIM6_EXAMPLES)
+def test_check_a_scene_named_relative_to_its_folder_as_by_its_full_path(scene, tmp_path, monkeypatch, capsys):
+    # EyeSim 6 examples name their world as %sim%/worlds/..., found by searching the folders above the
+    # scene: that must work when the scene is given as a bare name from inside its folder too.
+    shutil.copytree(CORPUS / "ASAX21__VRRoboticProject/Test Assets", tmp_path / "Test Assets")
+    absolute = tmp_path / "Test Assets/examples" / scene
+    assert run("check", str(absolute)) == 0
+    by_full_path = capsys.readouterr().out.replace(str(absolute), absolute.name)
+    monkeypatch.chdir(absolute.parent)
+    assert run("check", absolute.name) == 0
+    by_name = capsys.readouterr().out
+    # the same lines; warnings are sorted by file name, so they may come in another order
+    assert sorted(by_name.splitlines()) == sorted(by_full_path.splitlines())
+    assert "floor" in by_name.splitlines()[1]  # the world was found, not replaced by an empty one

@@ -5,6 +5,7 @@ from hypothesis import given, settings
 
 from eyesim.scene.description import Marker, Settings
 from eyesim.scene.diagnostics import Diagnostics
+from eyesim.scene.json_format import dumps, parse_json, to_json
 from eyesim.scene.sim import Placement, Reference, parse_sim, write_sim
 from scene_testing import corpus_texts, mutated, random_text, without_locations
 
@@ -106,3 +107,14 @@ def test_mutated_scenes_never_crash_and_write_back(text):
     if not diagnostics.has_errors:
         again, more = parse(write_sim(doc))
         assert without_locations(again) == without_locations(doc) and not more.has_errors
+
+
+def test_the_eyesim6_psd_setting_is_read_written_and_converted():
+    doc, diagnostics = parse("settings eyesim6psd VIS\n")
+    assert not diagnostics.items and doc.settings == Settings(vis=True, eyesim6_psd=True)
+    again, _ = parse(write_sim(doc))
+    assert again.settings == doc.settings
+    kind, from_json = parse_json(dumps(to_json("scene", doc)), "a.json", Diagnostics())
+    assert kind == "scene" and from_json.settings == doc.settings
+    doc, diagnostics = parse("settings EYESIM6PSD=1\n")  # a flag takes no value
+    assert [d.code for d in diagnostics.items] == ["unknown-setting"] and not doc.settings.eyesim6_psd

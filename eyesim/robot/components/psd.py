@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import mujoco
@@ -86,5 +87,18 @@ def beam_quat(heading: float, pitch: float) -> list[float]:
             math.sin(h) * math.cos(p)]
 
 
+def eyesim6_numbering(psds: tuple[PsdSpec, ...]) -> tuple[PsdSpec, ...]:
+    """The sensors as EyeSim 6 programs number them (scene setting EYESIM6PSD): LEFT 1, FRONT 2.
+    Only a robot numbered the RoBIOS-7 way, PSD_FRONT 1 and PSD_LEFT 2, changes: those two trade
+    ids (RIGHT 3 and BACK 4 are the same in both); other sensors keep theirs."""
+    names = {spec.id: spec.name.upper() for spec in psds}
+    if names.get(1) != "PSD_FRONT" or names.get(2) != "PSD_LEFT":
+        return psds
+    return tuple(dataclasses.replace(spec, id={1: 2, 2: 1}.get(spec.id, spec.id)) for spec in psds)
+
+
 def create(context) -> list[Component]:
-    return [PsdSensor(spec, context) for spec in context.robot_type.psds]
+    psds = context.robot_type.psds
+    if context.settings.eyesim6_psd:
+        psds = eyesim6_numbering(psds)
+    return [PsdSensor(spec, context) for spec in psds]

@@ -1,0 +1,32 @@
+/* Mako: a timed thrust script. LEFT (1) and RIGHT (3) push ahead together for 5 s, then it
+ * coasts; then LEFT alone for 5 s turns it. */
+#include <stdio.h>
+#include "eyebot.h"
+
+#define LEFT 1
+#define RIGHT 3
+
+static void report(const char *tag)
+{
+    int x, y, z, phi;
+    SIMGetRobot(0, &x, &y, &z, &phi);
+    printf("%s %d %d %d %d\n", tag, x, y, z, phi);
+}
+
+int main(void)
+{
+    report("start");
+    MOTORDrive(LEFT, 50);
+    MOTORDrive(RIGHT, 50);
+    OSWait(5000);
+    MOTORDrive(LEFT, 0);
+    MOTORDrive(RIGHT, 0);
+    OSWait(3000);
+    report("ahead");
+    MOTORDrive(LEFT, 50);
+    OSWait(5000);
+    MOTORDrive(LEFT, 0);
+    OSWait(3000);
+    report("turned");
+    return 0;
+}
