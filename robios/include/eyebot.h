@@ -2,6 +2,26 @@
 #ifndef EYEBOT_H
 #define EYEBOT_H
 
+/* EyeSim's eyebot.h (through its types.h) gave programs the C standard library and POSIX basics,
+ * and programs call rand, strtok, sqrt, M_PI, usleep, printf without including anything else.
+ * usleep and M_PI are outside strict ISO C (-std=c99/c11): ask for glibc's default set of names
+ * unless the program chose a feature set itself. This only helps when eyebot.h comes first;
+ * `eyesim cc` passes -D_DEFAULT_SOURCE, which works whatever the include order. */
+#if !defined(_DEFAULT_SOURCE) && !defined(_GNU_SOURCE) && !defined(_POSIX_C_SOURCE) && \
+    !defined(_XOPEN_SOURCE) && !defined(_POSIX_SOURCE) && !defined(_FEATURES_H)
+#define _DEFAULT_SOURCE 1
+#endif
+
+#include <errno.h>
+#include <math.h>
+#include <pthread.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
 #ifndef __cplusplus
 #include <stdbool.h>
 #endif
