@@ -112,44 +112,40 @@ def LCDCircle(x1: int, y1: int, size: int, col: int, fill: int) -> int:
     return C.LCDCircle(x1, y1, size, col, fill)
 
 
-# What the C library assumes about the images LCDImage* get, mirrored here so that a buffer too
-# small for it is refused before C reads past its end: their size in pixels, and the size they
-# are shown at (0 = their own size). LCDImageSize and CAMInit set the first, LCDImageStart the second.
+# The size in pixels of the images LCDImage* get, mirrored from the C library so that a buffer too
+# small for it is refused before C reads past its end. As in EyeSim, LCDImageStart sets it (with
+# where the images show); LCDImageSize and CAMInit set it for programs that never call that.
 _image_size = [QVGA_X, QVGA_Y]
-_shown_size = [0, 0]
 
 
 def LCDImageSize(t: int) -> int:
     """The resolution (QQVGA .. CAM5MP) of the images LCDImage, LCDImageGray and LCDImageBinary
-    draw from now on (CAMInit sets it too); CUSTOM: the size LCDImageStart shows them at.
+    draw from now on (CAMInit sets it too); CUSTOM keeps the size LCDImageStart gave.
     Returns 0 (1 on error)."""
     result = C.LCDImageSize(t)
     if result == 0 and t in RESOLUTION_SIZES:
         _image_size[:] = RESOLUTION_SIZES[t]
-        _shown_size[:] = [0, 0]
-    elif result == 0 and t == CUSTOM and _shown_size[0] > 0:
-        _image_size[:] = _shown_size
     return result
 
 
 def LCDImageStart(x: int, y: int, xs: int, ys: int) -> int:
-    """Where images are drawn: top left corner (x, y) and the width and height they are shown at.
-    Returns 0 (1 on error)."""
+    """Where images are drawn (top left corner x, y) and their size: the next images have xs x ys
+    pixels, shown 1:1. Returns 0 (1 on error)."""
     result = C.LCDImageStart(x, y, xs, ys)
     if result == 0:
-        _shown_size[:] = [xs, ys]
+        _image_size[:] = [xs, ys]
     return result
 
 
 def _image(function: str, img: Buffer, bytes_per_pixel: int) -> int:
     width, height = _image_size
     buffer = input_buffer(img, width * height * bytes_per_pixel, function, "the image",
-                          f"a {width} x {height} image, LCDImageSize")
+                          f"a {width} x {height} image, LCDImageStart/LCDImageSize")
     return getattr(C, function)(buffer)
 
 
 def LCDImage(img: Buffer) -> int:
-    """Draws a colour image (3 bytes per pixel, R G B, of the LCDImageSize). Returns 0 (1 on error)."""
+    """Draws a colour image (3 bytes per pixel, R G B, of the LCDImageStart/LCDImageSize size). Returns 0 (1 on error)."""
     return _image("LCDImage", img, 3)
 
 

@@ -253,8 +253,10 @@ COLOR LCDGetPixel(int x, int y);           /* the colour drawn there (-1 outside
 int LCDLine(int x1, int y1, int x2, int y2, COLOR col);
 int LCDArea(int x1, int y1, int x2, int y2, COLOR col, int fill); /* corners included; fill 1 or outline 0 */
 int LCDCircle(int x1, int y1, int size, COLOR col, int fill);     /* centre, radius; fill 1 or outline 0 */
-int LCDImageSize(int t);                   /* size of the images LCDImage* get: QQVGA..CAM5MP (QVGA), CUSTOM */
-int LCDImageStart(int x, int y, int xs, int ys); /* where images show, scaled to xs x ys pixels */
+int LCDImageSize(int t);                   /* size of the images LCDImage* get: QQVGA..CAM5MP (QVGA);
+                                              CUSTOM keeps LCDImageStart's size */
+int LCDImageStart(int x, int y, int xs, int ys); /* where images show, and their size: the next images
+                                                    have xs x ys pixels, shown 1:1 */
 int LCDImage(const BYTE *img);             /* colour image: 3 bytes (R, G, B) per pixel */
 int LCDImageGray(const BYTE *g);           /* gray image: 1 byte per pixel, 0 black .. 255 white */
 int LCDImageBinary(const BYTE *b);         /* 1 byte per pixel: non-zero black, 0 white */
