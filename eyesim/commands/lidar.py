@@ -24,4 +24,8 @@ def lidar_get(sim, robot, request):
     return (0, _scanner(robot).scan().tolist())
 
 
-HANDLERS = {"LIDAR_SET": lidar_set, "LIDAR_GET": lidar_get}
+def sim_laser_scan(sim, robot, request):
+    return (0, _scanner(robot).laser_scan().tolist())
+
+
+HANDLERS = {"LIDAR_SET": lidar_set, "LIDAR_GET": lidar_get, "SIM_LASER_SCAN": sim_laser_scan}

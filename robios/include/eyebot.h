@@ -425,7 +425,7 @@ int SIMSetObject(int id, int x, int y, int z, int phi);     /* non-zero for a fi
 int SIMGetRobotCount(void);                                 /* robots in the scene */
 int SIMGetObjectCount(void);                                /* objects (not robots) in the scene */
 
-/* ---- Older programs (docs/api/compatibility.md): names that still work, and names that are gone */
+/* ---- Older programs (docs/api/compatibility.md): names that still work ------------------------ */
 
 /* The LCD needs no set-up: LCDInit does nothing and returns 0. */
 static inline int LCDInit(void)
@@ -442,16 +442,10 @@ static inline int XInitThreads(void)
 }
 #endif
 
-/* Gone: a call does not compile and the compiler shows the message. */
-#if defined(__clang__)
-#define EYEBOT_GONE(message) __attribute__((unavailable(message)))
-#elif defined(__GNUC__)
-#define EYEBOT_GONE(message) __attribute__((error(message)))
-#else
-#define EYEBOT_GONE(message)
-#endif
-
-int SIMLaserScan(int *scan) EYEBOT_GONE("SIMLaserScan is gone; use LIDARSet(range, tilt, points) and LIDARGet(distances)");
+/* EyeSim 6's laser scan over the LIDAR: 360 distances in mm, one per degree, index 0 straight
+ * ahead and angles growing counter-clockwise (90 left, 180 behind, 270 right): a wall point is at
+ * x + d*cos(phi + i). A level scan of its own: the LIDARSet settings and LIDAR_RESOLUTION stay. */
+int SIMLaserScan(int scan[360]);
 
 #ifdef __cplusplus
 }
