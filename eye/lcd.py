@@ -5,7 +5,8 @@ from __future__ import annotations
 import ctypes
 
 from eye._library import C
-from eye._values import Buffer, c_format, format_text, input_buffer, text
+from eye._printf import printf
+from eye._values import Buffer, c_format, input_buffer, text
 from eye.constants import CAM1MP, CAM1MP_X, CAM1MP_Y, CAM5MP, CAM5MP_X, CAM5MP_Y, CAMHD, CAMHD_X, CAMHD_Y, \
     CUSTOM, QQVGA, QQVGA_X, QQVGA_Y, QVGA, QVGA_X, QVGA_Y, VGA, VGA_X, VGA_Y
 
@@ -19,14 +20,15 @@ RESOLUTION_SIZES = {QQVGA: (QQVGA_X, QQVGA_Y), QVGA: (QVGA_X, QVGA_Y), VGA: (VGA
 
 
 def LCDPrintf(format: object, *args: object) -> int:
-    """Prints `format % args` at the text cursor, like C's printf (the formatting happens in
-    Python). `\\n` starts a new line; long lines wrap and the screen scrolls. Returns 0 (1 on error)."""
-    return C.LCDPrintf(c_format(format_text(format, args)))
+    """Prints at the text cursor, formatted as C's printf does (every conversion, flag, width,
+    precision and length modifier; arguments beyond the format's are ignored). `\\n` starts a
+    new line; long lines wrap and the screen scrolls. Returns 0 (1 on error)."""
+    return C.LCDPrintf(c_format(printf("LCDPrintf", format, args)))
 
 
 def LCDSetPrintf(row: int, column: int, format: object, *args: object) -> int:
     """Moves the text cursor to (row, column), then prints as LCDPrintf. Returns 0 (1 on error)."""
-    return C.LCDSetPrintf(row, column, c_format(format_text(format, args)))
+    return C.LCDSetPrintf(row, column, c_format(printf("LCDSetPrintf", format, args)))
 
 
 def LCDClear() -> int:
