@@ -256,3 +256,15 @@ def test_python_lcd_printf_follows_c_printf(robios_prefix, tmp_path):
     # " 3.14|7   |ff|A|ok|1000000000000%" is 32 characters on row 1
     assert out["cursor"] == ["1", str(len(" 3.14|7   |ff|A|ok|1000000000000%"))]
     assert out["set"] == ["5", "8"]
+
+
+def test_programs_get_the_library_directory_first_on_ld_library_path(monkeypatch):
+    from eyesim import paths
+    from eyesim.launcher import program_environment
+
+    monkeypatch.setenv("LD_LIBRARY_PATH", "/opt/other")
+    env = program_environment("127.0.0.1", 9797, 2)
+    assert env["LD_LIBRARY_PATH"] == f"{paths.robios_lib_dir()}:/opt/other"
+    assert (env["EYESIM_HOST"], env["EYESIM_PORT"], env["EYESIM_ROBOT"]) == ("127.0.0.1", "9797", "2")
+    monkeypatch.delenv("LD_LIBRARY_PATH")
+    assert program_environment("127.0.0.1", 9797, 2)["LD_LIBRARY_PATH"] == str(paths.robios_lib_dir())
