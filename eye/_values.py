@@ -79,19 +79,6 @@ def path(value: str | os.PathLike | bytes) -> bytes:
     return os.fsencode(value)
 
 
-def format_text(format: object, args: tuple) -> str:
-    """printf-style formatting done in Python (`format % args`), as EyeSim's eye.py did. Without
-    arguments a string that is not a valid format ("100%") is printed as it is."""
-    if args:
-        return str(format) % args
-    if not isinstance(format, str):
-        return str(format)
-    try:
-        return format % ()
-    except (TypeError, ValueError):
-        return format
-
-
 def c_format(text_: str) -> bytes:
     """Text for a C printf-style function, with every % doubled so that C prints it unchanged."""
     return text(text_).replace(b"%", b"%%")

@@ -34,7 +34,6 @@ def CAMInit(resolution: int) -> int:
             width, height = lcd.RESOLUTION_SIZES[resolution]
         _publish_size(width, height)
         lcd._image_size[:] = [width, height]  # CAMInit calls LCDImageSize(resolution)
-        lcd._shown_size[:] = [0, 0]
     return result
 
 

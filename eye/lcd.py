@@ -5,7 +5,8 @@ from __future__ import annotations
 import ctypes
 
 from eye._library import C
-from eye._values import Buffer, c_format, format_text, input_buffer, text
+from eye._printf import printf
+from eye._values import Buffer, c_format, input_buffer, text
 from eye.constants import CAM1MP, CAM1MP_X, CAM1MP_Y, CAM5MP, CAM5MP_X, CAM5MP_Y, CAMHD, CAMHD_X, CAMHD_Y, \
     CUSTOM, QQVGA, QQVGA_X, QQVGA_Y, QVGA, QVGA_X, QVGA_Y, VGA, VGA_X, VGA_Y
 
@@ -19,14 +20,15 @@ RESOLUTION_SIZES = {QQVGA: (QQVGA_X, QQVGA_Y), QVGA: (QVGA_X, QVGA_Y), VGA: (VGA
 
 
 def LCDPrintf(format: object, *args: object) -> int:
-    """Prints `format % args` at the text cursor, like C's printf (the formatting happens in
-    Python). `\\n` starts a new line; long lines wrap and the screen scrolls. Returns 0 (1 on error)."""
-    return C.LCDPrintf(c_format(format_text(format, args)))
+    """Prints at the text cursor, formatted as C's printf does (every conversion, flag, width,
+    precision and length modifier; arguments beyond the format's are ignored). `\\n` starts a
+    new line; long lines wrap and the screen scrolls. Returns 0 (1 on error)."""
+    return C.LCDPrintf(c_format(printf("LCDPrintf", format, args)))
 
 
 def LCDSetPrintf(row: int, column: int, format: object, *args: object) -> int:
     """Moves the text cursor to (row, column), then prints as LCDPrintf. Returns 0 (1 on error)."""
-    return C.LCDSetPrintf(row, column, c_format(format_text(format, args)))
+    return C.LCDSetPrintf(row, column, c_format(printf("LCDSetPrintf", format, args)))
 
 
 def LCDClear() -> int:
@@ -112,44 +114,40 @@ def LCDCircle(x1: int, y1: int, size: int, col: int, fill: int) -> int:
     return C.LCDCircle(x1, y1, size, col, fill)
 
 
-# What the C library assumes about the images LCDImage* get, mirrored here so that a buffer too
-# small for it is refused before C reads past its end: their size in pixels, and the size they
-# are shown at (0 = their own size). LCDImageSize and CAMInit set the first, LCDImageStart the second.
+# The size in pixels of the images LCDImage* get, mirrored from the C library so that a buffer too
+# small for it is refused before C reads past its end. As in EyeSim, LCDImageStart sets it (with
+# where the images show); LCDImageSize and CAMInit set it for programs that never call that.
 _image_size = [QVGA_X, QVGA_Y]
-_shown_size = [0, 0]
 
 
 def LCDImageSize(t: int) -> int:
     """The resolution (QQVGA .. CAM5MP) of the images LCDImage, LCDImageGray and LCDImageBinary
-    draw from now on (CAMInit sets it too); CUSTOM: the size LCDImageStart shows them at.
+    draw from now on (CAMInit sets it too); CUSTOM keeps the size LCDImageStart gave.
     Returns 0 (1 on error)."""
     result = C.LCDImageSize(t)
     if result == 0 and t in RESOLUTION_SIZES:
         _image_size[:] = RESOLUTION_SIZES[t]
-        _shown_size[:] = [0, 0]
-    elif result == 0 and t == CUSTOM and _shown_size[0] > 0:
-        _image_size[:] = _shown_size
     return result
 
 
 def LCDImageStart(x: int, y: int, xs: int, ys: int) -> int:
-    """Where images are drawn: top left corner (x, y) and the width and height they are shown at.
-    Returns 0 (1 on error)."""
+    """Where images are drawn (top left corner x, y) and their size: the next images have xs x ys
+    pixels, shown 1:1. Returns 0 (1 on error)."""
     result = C.LCDImageStart(x, y, xs, ys)
     if result == 0:
-        _shown_size[:] = [xs, ys]
+        _image_size[:] = [xs, ys]
     return result
 
 
 def _image(function: str, img: Buffer, bytes_per_pixel: int) -> int:
     width, height = _image_size
     buffer = input_buffer(img, width * height * bytes_per_pixel, function, "the image",
-                          f"a {width} x {height} image, LCDImageSize")
+                          f"a {width} x {height} image, LCDImageStart/LCDImageSize")
     return getattr(C, function)(buffer)
 
 
 def LCDImage(img: Buffer) -> int:
-    """Draws a colour image (3 bytes per pixel, R G B, of the LCDImageSize). Returns 0 (1 on error)."""
+    """Draws a colour image (3 bytes per pixel, R G B, of the LCDImageStart/LCDImageSize size). Returns 0 (1 on error)."""
     return _image("LCDImage", img, 3)
 
 

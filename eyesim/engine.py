@@ -265,7 +265,7 @@ class Simulation:
             log.error("handler for %s failed:\n%s", op.name, traceback.format_exc())
             session.local_time_us = request.time_us + op.cost_us
             self._send(session, encode_error(op.code, request.request_id, g.ERR_BAD_ARGUMENT,
-                                             f"{op.name}: internal simulator error (see the simulator log)"))
+                                             "internal simulator error (see the simulator log)"))
             return
         if isinstance(result, Pending):
             session.pending.append((request, result))

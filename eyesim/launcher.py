@@ -9,6 +9,8 @@ import threading
 from dataclasses import dataclass
 from pathlib import Path
 
+from eyesim import paths
+
 
 @dataclass
 class ProgramRun:
@@ -37,6 +39,17 @@ def command_for(path: Path) -> list[str]:
     return [str(path)]
 
 
+def program_environment(host: str, port: int, robot_id: int) -> dict[str, str]:
+    """Ours plus where the simulator is, and libeyesim's directory first on LD_LIBRARY_PATH: an
+    EyeSim-era eye.py beside a Python program loads the library by name (CDLL("libeyesim.so")),
+    and so do C programs linked without `eyesim cc`'s rpath."""
+    env = dict(os.environ, EYESIM_HOST=host, EYESIM_PORT=str(port), EYESIM_ROBOT=str(robot_id))
+    env.setdefault("PYTHONUNBUFFERED", "1")
+    env["LD_LIBRARY_PATH"] = os.pathsep.join(
+        part for part in (str(paths.robios_lib_dir()), os.environ.get("LD_LIBRARY_PATH")) if part)
+    return env
+
+
 class Launcher:
     """Starts each program for its robot and forwards its output to the console and the viewer."""
 
@@ -56,8 +69,7 @@ class Launcher:
             run.error = f"program not found: {path}"
             self._print(run, "stderr", f"eyesim: {run.error}\n")
             return run
-        env = dict(os.environ, EYESIM_HOST=self.host, EYESIM_PORT=str(self.port), EYESIM_ROBOT=str(robot_id))
-        env.setdefault("PYTHONUNBUFFERED", "1")
+        env = program_environment(self.host, self.port, robot_id)
         robot_id_ = robot_id
         self.sim.call(lambda sim: sim.expected_programs.add(robot_id_))
         run.path = run.path.resolve()

@@ -27,6 +27,21 @@ class LibraryMissing(Exception):
     """The RoBIOS headers or libeyesim are not where eyesim.paths says."""
 
 
+# glibc's feature-test macros: a program that sets one has chosen which names it wants.
+FEATURE_MACROS = ("_DEFAULT_SOURCE", "_GNU_SOURCE", "_POSIX_C_SOURCE", "_POSIX_SOURCE", "_XOPEN_SOURCE",
+                  "_BSD_SOURCE", "_SVID_SOURCE", "_ISOC99_SOURCE", "_ISOC11_SOURCE")
+
+
+def chooses_features(args: list[str]) -> bool:
+    """Whether the arguments define or undefine a feature-test macro themselves."""
+    for previous, arg in zip(["", *args], args):
+        if previous in ("-D", "-U"):  # `-D NAME` as two arguments
+            arg = previous + arg
+        if arg.startswith(("-D", "-U")) and arg[2:].split("=", 1)[0] in FEATURE_MACROS:
+            return True
+    return False
+
+
 def links(args: list[str]) -> bool:
     """Whether a compiler run with these arguments links a program."""
     return not any(arg in NO_LINK_ARGS or arg.startswith("-print-") for arg in args)
@@ -53,7 +68,12 @@ def compiler_command(language: str, args: list[str], prefix: Path | None = None)
     check_library(prefix)
     variable, default = COMPILERS[language]
     compiler = shlex.split(os.environ.get(variable) or default)  # $CC may carry flags: "ccache gcc"
-    command = [*compiler, f"-I{prefix / 'include'}", *args]
+    command = [*compiler, f"-I{prefix / 'include'}"]
+    if language == "cc" and not chooses_features(args):
+        # EyeSim programs call usleep and use M_PI, which strict -std=c99/c11 hides; this asks for
+        # them whatever the program includes first (C++ compilers define _GNU_SOURCE anyway).
+        command.append("-D_DEFAULT_SOURCE")
+    command += args
     if links(args):
         lib_dir = prefix / "lib"
         # Libraries after the sources (static linking needs that order); the rpath lets the

@@ -14,10 +14,10 @@ def _camera(robot) -> Camera:
     return require(robot.component(Camera), robot, "camera")
 
 
-def _started(robot, function: str) -> Camera:
+def _started(robot) -> Camera:
     camera = _camera(robot)
     if camera.size is None:
-        raise CommandError(f"{function}: the camera is not initialised; call CAMInit first")
+        raise CommandError("the camera is not initialised; call CAMInit first")
     return camera
 
 
@@ -25,9 +25,9 @@ def cam_init(sim, robot, request):
     (resolution,) = request.args
     camera = _camera(robot)
     if resolution == CUSTOM:
-        raise CommandError("CAMInit: CUSTOM is for LCD images only; the camera takes " + NAMES)
+        raise CommandError("CUSTOM is for LCD images only; the camera takes " + NAMES)
     if resolution not in RESOLUTIONS:
-        raise CommandError(f"CAMInit: unknown resolution {resolution}; expected one of {NAMES}")
+        raise CommandError(f"unknown resolution {resolution}; expected one of {NAMES}")
     width, height = RESOLUTIONS[resolution]
     camera.start(width, height)
     return (0, width, height)
@@ -39,13 +39,13 @@ def cam_release(sim, robot, request):
 
 
 def cam_get(sim, robot, request):
-    camera = _started(robot, "CAMGet")
+    camera = _started(robot)
     image = camera.capture()
     return (0, camera.size[0], camera.size[1], image.tobytes())
 
 
 def cam_get_gray(sim, robot, request):
-    camera = _started(robot, "CAMGetGray")
+    camera = _started(robot)
     image = camera.capture()
     return (0, camera.size[0], camera.size[1], to_gray(image).tobytes())
 

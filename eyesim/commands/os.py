@@ -9,7 +9,7 @@ VEHICLE, PLATFORM = 1, 2  # OSMachineType values (WALKER = 3: no walking robots 
 def os_wait(sim, robot, request):
     (ms,) = request.args
     if ms < 0:
-        raise CommandError(f"OSWait: negative time {ms} ms")
+        raise CommandError(f"negative time {ms} ms")
     wake_us = request.time_us + ms * 1000
     return Pending.until(wake_us, (0,))
 

@@ -4,22 +4,22 @@ from eyesim.commands.errors import CommandError
 from eyesim.robot.components.psd import PsdSensor
 
 
-def _sensor(robot, psd_id: int, function: str) -> PsdSensor:
+def _sensor(robot, psd_id: int) -> PsdSensor:
     for sensor in robot.components_of(PsdSensor):
         if sensor.id == psd_id:
             return sensor
     ids = sorted(s.id for s in robot.components_of(PsdSensor))
-    raise CommandError(f"{function}: robot {robot.id} has no PSD {psd_id} (it has {ids or 'none'})")
+    raise CommandError(f"robot {robot.id} has no PSD {psd_id} (it has {ids or 'none'})")
 
 
 def psd_get(sim, robot, request):
     (psd_id,) = request.args
-    return (_sensor(robot, psd_id, "PSDGet").distance_mm(),)
+    return (_sensor(robot, psd_id).distance_mm(),)
 
 
 def psd_get_raw(sim, robot, request):
     (psd_id,) = request.args
-    return (_sensor(robot, psd_id, "PSDGetRaw").raw(),)
+    return (_sensor(robot, psd_id).raw(),)
 
 
 HANDLERS = {"PSD_GET": psd_get, "PSD_GET_RAW": psd_get_raw}

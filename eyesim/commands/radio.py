@@ -10,10 +10,10 @@ def _radio(robot) -> Radio:
     return require(robot.component(Radio), robot, "radio")
 
 
-def _switched_on(robot, request, function: str) -> Radio:
+def _switched_on(robot, request) -> Radio:
     radio = _radio(robot)
     if not radio.on or radio.owner is not request.session:
-        raise CommandError(f"{function}: the radio is off; call RADIOInit first", g.ERR_NOT_SUPPORTED)
+        raise CommandError("the radio is off; call RADIOInit first", g.ERR_NOT_SUPPORTED)
     return radio
 
 
@@ -28,20 +28,20 @@ def radio_get_id(sim, robot, request):
 
 def radio_send(sim, robot, request):
     destination, message = request.args
-    _switched_on(robot, request, "RADIOSend")
+    _switched_on(robot, request)
     target = sim.robot_by_id(destination)
     if target is None or target.component(Radio) is None:
         ids = [r.id for r in sim.robots if r.component(Radio) is not None]
-        raise CommandError(f"RADIOSend: no robot {destination} to send to (robot ids: {ids})")
+        raise CommandError(f"no robot {destination} to send to (robot ids: {ids})")
     if len(message) > MAX_MESSAGE:
-        raise CommandError(f"RADIOSend: the message has {len(message)} bytes; at most {MAX_MESSAGE} fit")
+        raise CommandError(f"the message has {len(message)} bytes; at most {MAX_MESSAGE} fit")
     if not target.component(Radio).deliver(robot.id, bytes(message)):
-        raise CommandError(f"RADIOSend: robot {destination} has {MAX_WAITING} unread messages; it takes no more")
+        raise CommandError(f"robot {destination} has {MAX_WAITING} unread messages; it takes no more")
     return (0,)
 
 
 def radio_receive(sim, robot, request):
-    radio = _switched_on(robot, request, "RADIOReceive")
+    radio = _switched_on(robot, request)
     message = radio.take()
     if message is not None:
         return message
@@ -49,7 +49,7 @@ def radio_receive(sim, robot, request):
 
 
 def radio_check(sim, robot, request):
-    radio = _switched_on(robot, request, "RADIOCheck")
+    radio = _switched_on(robot, request)
     return (1 if radio.inbox else 0,)
 
 

@@ -8,41 +8,41 @@ from eyesim.protocol import generated
 from eyesim.robot.actuators import SERVO_MAX
 
 
-def _servo(robot, number: int, function: str):
+def _servo(robot, number: int):
     servo = robot.servos.get(number)
     if servo is None:
         numbers = ", ".join(str(n) for n in sorted(robot.servos)) or "none"
-        raise CommandError(f"{function}: robot {robot.id} ({robot.name}) has no servo {number} (its servos: {numbers})",
+        raise CommandError(f"robot {robot.id} ({robot.name}) has no servo {number} (its servos: {numbers})",
                            generated.ERR_BAD_ARGUMENT if robot.servos else generated.ERR_NOT_SUPPORTED)
     return servo
 
 
-def _position(value: int, what: str, function: str) -> None:
+def _position(value: int, what: str) -> None:
     if not 0 <= value <= SERVO_MAX:
-        raise CommandError(f"{function}: {what} {value} is out of range 0..{SERVO_MAX}")
+        raise CommandError(f"{what} {value} is out of range 0..{SERVO_MAX}")
 
 
 def servo_set(sim, robot, request):
     number, angle = request.args
-    _position(angle, "angle", "SERVOSet")
-    _servo(robot, number, "SERVOSet").set(angle)
+    _position(angle, "angle")
+    _servo(robot, number).set(angle)
     return (0,)
 
 
 def servo_set_raw(sim, robot, request):
     number, angle = request.args
-    _position(angle, "angle", "SERVOSetRaw")
-    _servo(robot, number, "SERVOSetRaw").set_raw(angle)
+    _position(angle, "angle")
+    _servo(robot, number).set_raw(angle)
     return (0,)
 
 
 def servo_range(sim, robot, request):
     number, low, high = request.args
-    _position(low, "low", "SERVORange")
-    _position(high, "high", "SERVORange")
+    _position(low, "low")
+    _position(high, "high")
     if low >= high:
-        raise CommandError(f"SERVORange: low {low} must be below high {high}")
-    _servo(robot, number, "SERVORange").set_range(low, high)
+        raise CommandError(f"low {low} must be below high {high}")
+    _servo(robot, number).set_range(low, high)
     return (0,)
 
 

@@ -11,20 +11,20 @@ from eyesim.physics.units import mm, wrap_degrees
 from eyesim.robot.robot import MountedRobotError
 
 
-def _robot(sim, caller, robot_id: int, function: str):
+def _robot(sim, caller, robot_id: int):
     if robot_id == 0:
         return caller
     target = sim.robot_by_id(robot_id)
     if target is None:
-        raise CommandError(f"{function}: no robot {robot_id} (0 = this robot, 1..{len(sim.robots)} = the scene's)")
+        raise CommandError(f"no robot {robot_id} (0 = this robot, 1..{len(sim.robots)} = the scene's)")
     return target
 
 
-def _object(sim, object_id: int, function: str):
+def _object(sim, object_id: int):
     target = sim.object_by_id(object_id)
     if target is None:
         known = f"1..{len(sim.objects)}" if sim.objects else "the scene has none"
-        raise CommandError(f"{function}: no object {object_id} ({known})")
+        raise CommandError(f"no object {object_id} ({known})")
     return target
 
 
@@ -33,32 +33,32 @@ def _pose(target) -> tuple:
     return (0, round(x), round(y), round(z), round(wrap_degrees(phi)))
 
 
-def _place(target, x: int, y: int, z: int, phi: int, function: str) -> tuple:
+def _place(target, x: int, y: int, z: int, phi: int) -> tuple:
     try:
         target.set_pose(mm(x), mm(y), mm(z), math.radians(phi))
     except (FixedObjectError, MountedRobotError) as error:
-        raise CommandError(f"{function}: {error}") from None
+        raise CommandError(str(error)) from None
     return (0,)
 
 
 def sim_get_robot(sim, robot, request):
     (robot_id,) = request.args
-    return _pose(_robot(sim, robot, robot_id, "SIMGetRobot"))
+    return _pose(_robot(sim, robot, robot_id))
 
 
 def sim_set_robot(sim, robot, request):
     robot_id, x, y, z, phi = request.args
-    return _place(_robot(sim, robot, robot_id, "SIMSetRobot"), x, y, z, phi, "SIMSetRobot")
+    return _place(_robot(sim, robot, robot_id), x, y, z, phi)
 
 
 def sim_get_object(sim, robot, request):
     (object_id,) = request.args
-    return _pose(_object(sim, object_id, "SIMGetObject"))
+    return _pose(_object(sim, object_id))
 
 
 def sim_set_object(sim, robot, request):
     object_id, x, y, z, phi = request.args
-    return _place(_object(sim, object_id, "SIMSetObject"), x, y, z, phi, "SIMSetObject")
+    return _place(_object(sim, object_id), x, y, z, phi)
 
 
 def sim_get_robot_count(sim, robot, request):

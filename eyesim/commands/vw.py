@@ -56,7 +56,7 @@ def vw_drive(sim, robot, request):
     dx, dy, speed = request.args
     vw = _vw(robot)
     if dx <= abs(dy):
-        raise CommandError(f"VWDrive: the point ({dx}, {dy}) cannot be reached on an arc: dx must be greater than |dy|")
+        raise CommandError(f"the point ({dx}, {dy}) cannot be reached on an arc: dx must be greater than |dy|")
     vw.drive_to(mm(dx), mm(dy), mm(speed))
     return (0,)
 

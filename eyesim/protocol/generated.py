@@ -73,6 +73,7 @@ OP_PSD_GET = 2049
 OP_PSD_GET_RAW = 2050
 OP_LIDAR_SET = 2305
 OP_LIDAR_GET = 2306
+OP_SIM_LASER_SCAN = 2307
 OP_SERVO_SET = 2561
 OP_SERVO_SET_RAW = 2562
 OP_SERVO_RANGE = 2563
@@ -174,6 +175,7 @@ OPS = {
     2050: OpSpec('PSD_GET_RAW', 2050, 'psd', 100, False, (('psd', 'i32'),), (('raw', 'i32'),)),
     2305: OpSpec('LIDAR_SET', 2305, 'lidar', 100, False, (('range', 'i32'), ('tilt', 'i32'), ('points', 'i32')), (('result', 'i32'),)),
     2306: OpSpec('LIDAR_GET', 2306, 'lidar', 100, False, (), (('result', 'i32'), ('distances', 'i32s'))),
+    2307: OpSpec('SIM_LASER_SCAN', 2307, 'lidar', 100, False, (), (('result', 'i32'), ('distances', 'i32s'))),
     2561: OpSpec('SERVO_SET', 2561, 'servo', 100, False, (('servo', 'i32'), ('angle', 'i32')), (('result', 'i32'),)),
     2562: OpSpec('SERVO_SET_RAW', 2562, 'servo', 100, False, (('servo', 'i32'), ('angle', 'i32')), (('result', 'i32'),)),
     2563: OpSpec('SERVO_RANGE', 2563, 'servo', 100, False, (('servo', 'i32'), ('low', 'i32'), ('high', 'i32')), (('result', 'i32'),)),

@@ -2,6 +2,26 @@
 #ifndef EYEBOT_H
 #define EYEBOT_H
 
+/* EyeSim's eyebot.h (through its types.h) gave programs the C standard library and POSIX basics,
+ * and programs call rand, strtok, sqrt, M_PI, usleep, printf without including anything else.
+ * usleep and M_PI are outside strict ISO C (-std=c99/c11): ask for glibc's default set of names
+ * unless the program chose a feature set itself. This only helps when eyebot.h comes first;
+ * `eyesim cc` passes -D_DEFAULT_SOURCE, which works whatever the include order. */
+#if !defined(_DEFAULT_SOURCE) && !defined(_GNU_SOURCE) && !defined(_POSIX_C_SOURCE) && \
+    !defined(_XOPEN_SOURCE) && !defined(_POSIX_SOURCE) && !defined(_FEATURES_H)
+#define _DEFAULT_SOURCE 1
+#endif
+
+#include <errno.h>
+#include <math.h>
+#include <pthread.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
 #ifndef __cplusplus
 #include <stdbool.h>
 #endif
@@ -233,8 +253,10 @@ COLOR LCDGetPixel(int x, int y);           /* the colour drawn there (-1 outside
 int LCDLine(int x1, int y1, int x2, int y2, COLOR col);
 int LCDArea(int x1, int y1, int x2, int y2, COLOR col, int fill); /* corners included; fill 1 or outline 0 */
 int LCDCircle(int x1, int y1, int size, COLOR col, int fill);     /* centre, radius; fill 1 or outline 0 */
-int LCDImageSize(int t);                   /* size of the images LCDImage* get: QQVGA..CAM5MP (QVGA), CUSTOM */
-int LCDImageStart(int x, int y, int xs, int ys); /* where images show, scaled to xs x ys pixels */
+int LCDImageSize(int t);                   /* size of the images LCDImage* get: QQVGA..CAM5MP (QVGA);
+                                              CUSTOM keeps LCDImageStart's size */
+int LCDImageStart(int x, int y, int xs, int ys); /* where images show, and their size: the next images
+                                                    have xs x ys pixels, shown 1:1 */
 int LCDImage(const BYTE *img);             /* colour image: 3 bytes (R, G, B) per pixel */
 int LCDImageGray(const BYTE *g);           /* gray image: 1 byte per pixel, 0 black .. 255 white */
 int LCDImageBinary(const BYTE *b);         /* 1 byte per pixel: non-zero black, 0 white */
@@ -403,7 +425,7 @@ int SIMSetObject(int id, int x, int y, int z, int phi);     /* non-zero for a fi
 int SIMGetRobotCount(void);                                 /* robots in the scene */
 int SIMGetObjectCount(void);                                /* objects (not robots) in the scene */
 
-/* ---- Older programs (docs/api/compatibility.md): names that still work, and names that are gone */
+/* ---- Older programs (docs/api/compatibility.md): names that still work ------------------------ */
 
 /* The LCD needs no set-up: LCDInit does nothing and returns 0. */
 static inline int LCDInit(void)
@@ -420,16 +442,10 @@ static inline int XInitThreads(void)
 }
 #endif
 
-/* Gone: a call does not compile and the compiler shows the message. */
-#if defined(__clang__)
-#define EYEBOT_GONE(message) __attribute__((unavailable(message)))
-#elif defined(__GNUC__)
-#define EYEBOT_GONE(message) __attribute__((error(message)))
-#else
-#define EYEBOT_GONE(message)
-#endif
-
-int SIMLaserScan(int *scan) EYEBOT_GONE("SIMLaserScan is gone; use LIDARSet(range, tilt, points) and LIDARGet(distances)");
+/* EyeSim 6's laser scan over the LIDAR: 360 distances in mm, one per degree, index 0 straight
+ * ahead and angles growing counter-clockwise (90 left, 180 behind, 270 right): a wall point is at
+ * x + d*cos(phi + i). A level scan of its own: the LIDARSet settings and LIDAR_RESOLUTION stay. */
+int SIMLaserScan(int scan[360]);
 
 #ifdef __cplusplus
 }

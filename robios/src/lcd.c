@@ -178,50 +178,45 @@ int LCDCircle(int x1, int y1, int size, COLOR col, int fill)
     return lcd_call("LCDCircle", ES_OP_LCD_CIRCLE, args);
 }
 
-/* ---- Images: the image size and where it shows are kept here, in the program ----------------- */
+/* ---- Images: their size and where they show are kept here, in the program ------------------ */
 
 enum { IMAGE_COLOR = 0, IMAGE_GRAY = 1, IMAGE_BINARY = 2 }; /* LCD_IMAGE's format */
 
+/* As in EyeSim, LCDImageStart sets both where images show and how many pixels their data has (a
+ * 128 x 128 map after LCDImageStart(0, 0, 128, 128)); LCDImageSize and CAMInit set the size of
+ * the images of programs that never call it. Images show 1:1. */
 static pthread_mutex_t image_lock = PTHREAD_MUTEX_INITIALIZER;
 static int image_width = QVGA_X, image_height = QVGA_Y; /* pixels of the images the program passes */
 static int image_x, image_y;                            /* where their top-left corner shows */
-static int shown_width, shown_height;                   /* their size on the screen; 0 = image size */
 
 int LCDImageSize(int t)
 {
     static const int sizes[][2] = {{QQVGA_X, QQVGA_Y}, {QVGA_X, QVGA_Y},     {VGA_X, VGA_Y},
                                    {CAM1MP_X, CAM1MP_Y}, {CAMHD_X, CAMHD_Y}, {CAM5MP_X, CAM5MP_Y}};
-    pthread_mutex_lock(&image_lock);
-    int rc = 0;
-    if (t >= QQVGA && t <= CAM5MP) {
-        image_width = sizes[t][0];
-        image_height = sizes[t][1];
-        shown_width = shown_height = 0;
-    } else if (t == CUSTOM) { /* the images are as large as LCDImageStart shows them */
-        if (shown_width > 0) {
-            image_width = shown_width;
-            image_height = shown_height;
-        }
-    } else {
-        rc = LCD_ERROR;
-    }
-    pthread_mutex_unlock(&image_lock);
-    if (rc)
+    if (t == CUSTOM) /* the size LCDImageStart gives (or the last resolution) stays */
+        return 0;
+    if (t < QQVGA || t > CAM5MP) {
         fprintf(stderr, "eyesim: LCDImageSize: %d is not a resolution (QQVGA 0 .. CAM5MP 5, CUSTOM 10)\n", t);
-    return rc;
+        return LCD_ERROR;
+    }
+    pthread_mutex_lock(&image_lock);
+    image_width = sizes[t][0];
+    image_height = sizes[t][1];
+    pthread_mutex_unlock(&image_lock);
+    return 0;
 }
 
 int LCDImageStart(int x, int y, int xs, int ys)
 {
     if (xs <= 0 || ys <= 0) {
-        fprintf(stderr, "eyesim: LCDImageStart: the shown size %d x %d is not positive\n", xs, ys);
+        fprintf(stderr, "eyesim: LCDImageStart: the image size %d x %d is not positive\n", xs, ys);
         return LCD_ERROR;
     }
     pthread_mutex_lock(&image_lock);
     image_x = x;
     image_y = y;
-    shown_width = xs;
-    shown_height = ys;
+    image_width = xs;
+    image_height = ys;
     pthread_mutex_unlock(&image_lock);
     return 0;
 }
@@ -234,12 +229,11 @@ static int draw_image(const char *function, const BYTE *pixels, int format)
     }
     pthread_mutex_lock(&image_lock);
     int width = image_width, height = image_height, x = image_x, y = image_y;
-    int xs = shown_width > 0 ? shown_width : width, ys = shown_height > 0 ? shown_height : height;
     pthread_mutex_unlock(&image_lock);
     es_value data = {0};
     data.p = pixels;
     data.n = (uint32_t)width * (uint32_t)height * (format == IMAGE_COLOR ? 3u : 1u);
-    es_value args[8] = {es_int(x), es_int(y), es_int(width), es_int(height), es_int(xs), es_int(ys),
+    es_value args[8] = {es_int(x), es_int(y), es_int(width), es_int(height), es_int(width), es_int(height),
                         es_int(format), data};
     return lcd_call(function, ES_OP_LCD_IMAGE, args);
 }

@@ -37,3 +37,22 @@ int LIDARGet(int distance[])
     LIDAR_RESOLUTION = points;
     return (int)result[0].i;
 }
+
+int SIMLaserScan(int scan[360])
+{
+    if (!scan) {
+        fprintf(stderr, "eyesim: SIMLaserScan: the scan array is NULL\n");
+        return 1;
+    }
+    es_value result[2] = {{0}};
+    if (es_call("SIMLaserScan", ES_OP_SIM_LASER_SCAN, NULL, result))
+        return 1;
+    if (result[1].n != 360) {
+        fprintf(stderr, "eyesim: SIMLaserScan: the simulator sent %u distances instead of 360\n",
+                (unsigned)result[1].n);
+        return 1;
+    }
+    for (int k = 0; k < 360; k++)
+        scan[k] = es_i32s_at(&result[1], (uint32_t)k);
+    return (int)result[0].i;
+}

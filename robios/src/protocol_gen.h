@@ -76,6 +76,7 @@ typedef enum { ES_T_END = 0, ES_T_I32 = 1, ES_T_U32 = 2, ES_T_F64 = 3, ES_T_STR 
 #define ES_OP_PSD_GET_RAW 2050
 #define ES_OP_LIDAR_SET 2305
 #define ES_OP_LIDAR_GET 2306
+#define ES_OP_SIM_LASER_SCAN 2307
 #define ES_OP_SERVO_SET 2561
 #define ES_OP_SERVO_SET_RAW 2562
 #define ES_OP_SERVO_RANGE 2563
@@ -186,6 +187,7 @@ static const es_op_layout ES_OP_LAYOUTS[] = {
     {2050, "PSD_GET_RAW", 1, {ES_T_I32}, 1, {ES_T_I32}},
     {2305, "LIDAR_SET", 3, {ES_T_I32, ES_T_I32, ES_T_I32}, 1, {ES_T_I32}},
     {2306, "LIDAR_GET", 0, {ES_T_END}, 2, {ES_T_I32, ES_T_I32S}},
+    {2307, "SIM_LASER_SCAN", 0, {ES_T_END}, 2, {ES_T_I32, ES_T_I32S}},
     {2561, "SERVO_SET", 2, {ES_T_I32, ES_T_I32}, 1, {ES_T_I32}},
     {2562, "SERVO_SET_RAW", 2, {ES_T_I32, ES_T_I32}, 1, {ES_T_I32}},
     {2563, "SERVO_RANGE", 3, {ES_T_I32, ES_T_I32, ES_T_I32}, 1, {ES_T_I32}},
@@ -234,7 +236,7 @@ static const es_op_layout ES_OP_LAYOUTS[] = {
     {4101, "SIM_GET_ROBOT_COUNT", 0, {ES_T_END}, 1, {ES_T_I32}},
     {4102, "SIM_GET_OBJECT_COUNT", 0, {ES_T_END}, 1, {ES_T_I32}},
 };
-#define ES_OP_COUNT 99
+#define ES_OP_COUNT 100
 static const es_type ES_ERROR_LAYOUT[] = {ES_T_I32, ES_T_STR};
 
 #endif

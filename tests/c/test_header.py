@@ -269,8 +269,68 @@ def test_xinitthreads_gets_along_with_xlib(robios_prefix, tmp_path, language, st
 
 
 @pytest.mark.parametrize("language,standard", STANDARDS)
-def test_names_that_are_gone_fail_with_a_message(robios_prefix, tmp_path, language, standard):
-    source = '#include "eyebot.h"\nint f(void);\nint f(void) { int scan[360]; return SIMLaserScan(scan); }\n'
+def test_the_legacy_laser_scan_is_declared(robios_prefix, tmp_path, language, standard):
+    source = '#include "eyebot.h"\nint f(void);\nint f(void) { int scan[360]; return SIMLaserScan(scan) + scan[0]; }\n'
     done = compile_only(robios_prefix, tmp_path, language, standard, source)
-    assert done.returncode != 0
-    assert "SIMLaserScan is gone; use LIDARSet(range, tilt, points) and LIDARGet(distances)" in done.stderr
+    assert done.returncode == 0, done.stderr
+
+
+# EyeSim's eyebot.h made the C library available: programs use it with nothing else included.
+STANDARD_LIBRARY = r"""
+#include "eyebot.h"
+
+static int counted;
+
+static void *count(void *arg)
+{
+    counted = *(int *)arg;
+    return NULL;
+}
+
+int main(void)
+{
+    char words[32], *word;
+    int n = 0, argument = 7;
+    FILE *out = stdout;
+    uint8_t small = 200;
+    bool yes = true;
+    pthread_t thread;
+    srand((unsigned)time(NULL));
+    if (rand() > RAND_MAX) return EXIT_FAILURE;
+    strcpy(words, "a b c");
+    for (word = strtok(words, " "); word; word = strtok(NULL, " ")) n++;
+    if (usleep(1000) != 0) return EXIT_FAILURE;
+    pthread_create(&thread, NULL, count, &argument);
+    pthread_join(thread, NULL);
+    fprintf(out, "%d %.3f %.4f %d %d %d %d\n", n, sqrt(2.0), M_PI, small, yes, counted, abs(-3));
+    return EXIT_SUCCESS;
+}
+"""
+STANDARD_LIBRARY_OUTPUT = "3 1.414 3.1416 200 1 7 3\n"
+
+
+@pytest.mark.parametrize("language,standard", [*STANDARDS, ("cc", "-std=gnu11")])
+@pytest.mark.parametrize("stdio_first", [False, True])
+def test_eyebot_h_brings_the_c_library(compiler, free_port_env, language, standard, stdio_first):
+    # With <stdio.h> first the C library's feature set is fixed before eyebot.h can choose it:
+    # usleep and M_PI then come from `eyesim cc`'s -D_DEFAULT_SOURCE.
+    source = ("#include <stdio.h>\n" if stdio_first else "") + STANDARD_LIBRARY
+    exe = compiler.build(source, name="stdlib", language=language, flags=(standard, "-Wpedantic"))
+    ran = run_offline(exe, free_port_env)
+    assert ran.returncode == 0, ran.stderr
+    assert ran.stdout == STANDARD_LIBRARY_OUTPUT
+
+
+def test_eyebot_h_first_needs_no_feature_macro_from_eyesim_cc(robios_prefix, tmp_path, free_port_env):
+    """A plain compiler command (a program's own Makefile) with strict C99: eyebot.h asks for usleep itself."""
+    source = tmp_path / "plain.c"
+    source.write_text(STANDARD_LIBRARY)
+    lib = robios_prefix / "lib"
+    done = subprocess.run(["cc", "-std=c99", "-Wall", "-Wextra", "-Wpedantic", "-Werror",
+                           f"-I{robios_prefix / 'include'}", str(source), "-o", str(tmp_path / "plain"),
+                           f"-L{lib}", f"-Wl,-rpath,{lib}", "-leyesim", "-lpthread", "-lm"],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    ran = run_offline(tmp_path / "plain", free_port_env)
+    assert ran.returncode == 0, ran.stderr
+    assert ran.stdout == STANDARD_LIBRARY_OUTPUT

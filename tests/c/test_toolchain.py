@@ -19,8 +19,21 @@ def test_linking_adds_the_library_after_the_arguments(robios_prefix, monkeypatch
     monkeypatch.delenv("CC", raising=False)
     command = toolchain.compiler_command("cc", ["prog.c", "-o", "prog"], robios_prefix)
     lib = robios_prefix / "lib"
-    assert command == ["cc", f"-I{robios_prefix / 'include'}", "prog.c", "-o", "prog",
+    assert command == ["cc", f"-I{robios_prefix / 'include'}", "-D_DEFAULT_SOURCE", "prog.c", "-o", "prog",
                        f"-L{lib}", f"-Wl,-rpath,{lib}", "-leyesim", "-lpthread", "-lm"]
+
+
+@pytest.mark.parametrize("args,added", [
+    (["prog.c"], True),
+    (["-D_POSIX_C_SOURCE=200112L", "prog.c"], False),
+    (["-D", "_GNU_SOURCE", "prog.c"], False),
+    (["-U_DEFAULT_SOURCE", "prog.c"], False),
+    (["-DDEBUG", "-D", "N=3", "prog.c"], True),
+])
+def test_c_programs_get_the_default_feature_set_unless_they_choose_one(robios_prefix, args, added):
+    # usleep and M_PI need _DEFAULT_SOURCE under strict -std=c99; C++ compilers set _GNU_SOURCE themselves.
+    assert ("-D_DEFAULT_SOURCE" in toolchain.compiler_command("cc", args, robios_prefix)) == added
+    assert "-D_DEFAULT_SOURCE" not in toolchain.compiler_command("c++", args, robios_prefix)
 
 
 @pytest.mark.parametrize("flag", ["-c", "-E", "-S", "-fsyntax-only", "--version"])

@@ -29,19 +29,19 @@ def test_objects_and_robots_can_be_moved_but_fixed_ones_cannot():
         assert client.call("SIM_SET_OBJECT", 3, 1000, 1000, 300, 0) == (0,)  # dropped from 300 mm
         client.call("OS_WAIT", 20)
         assert 200 < client.call("SIM_GET_OBJECT", 3)[3] < 300
-        with pytest.raises(RemoteError, match="SIMSetObject: object 2 .Crate1. is fixed and cannot be moved"):
+        with pytest.raises(RemoteError, match="object 2 .Crate1. is fixed and cannot be moved"):
             client.call("SIM_SET_OBJECT", 2, 100, 100, 0, 0)
-        with pytest.raises(RemoteError, match="SIMSetRobot: robot 2 .Reacher. is mounted on the floor"):
+        with pytest.raises(RemoteError, match="robot 2 .Reacher. is mounted on the floor"):
             client.call("SIM_SET_ROBOT", 2, 100, 100, 0, 0)
         assert client.call("SIM_SET_ROBOT", 3, 800, 1600, 0, 180) == (0,)
         assert client.call("SIM_GET_ROBOT", 3) == (0, 800, 1600, 0, 180)
 
 
 @pytest.mark.parametrize("op,args,message", [
-    ("SIM_GET_ROBOT", (4,), "SIMGetRobot: no robot 4 .0 = this robot, 1..3 = the scene's."),
-    ("SIM_SET_ROBOT", (-1, 0, 0, 0, 0), "SIMSetRobot: no robot -1"),
-    ("SIM_GET_OBJECT", (0,), "SIMGetObject: no object 0 .1..3."),
-    ("SIM_SET_OBJECT", (4, 0, 0, 0, 0), "SIMSetObject: no object 4"),
+    ("SIM_GET_ROBOT", (4,), "no robot 4 .0 = this robot, 1..3 = the scene's."),
+    ("SIM_SET_ROBOT", (-1, 0, 0, 0, 0), "no robot -1"),
+    ("SIM_GET_OBJECT", (0,), "no object 0 .1..3."),
+    ("SIM_SET_OBJECT", (4, 0, 0, 0, 0), "no object 4"),
 ])
 def test_unknown_ids_are_errors(op, args, message):
     with connected_program(scene()) as (sim, client):

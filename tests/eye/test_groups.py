@@ -53,6 +53,8 @@ LCD = """
     signed = (ctypes.c_byte * (160 * 120))(*([-1] * 80 + [0] * 80) * 120)  # eye.py's c_byte buffers
     LCDImageStart(0, 0, 160, 120)
     print("signed", LCDImageGray(signed))
+    LCDImageStart(320, 0, 128, 120)                    # the data size too, as in EyeSim
+    print("map", LCDImageBinary(bytes(128 * 120)))
     np.save("colour.npy", colour)
     np.save("gray.npy", gray)
     try:
@@ -73,13 +75,14 @@ def test_lcd(run_python, tmp_path):
     assert out["pos-eye.py"] == ["0", "2", "7"]
     assert out["settings"] == ["0"] * 6 + ["1"]
     assert out["image"] == out["gray"] == out["binary"] == out["signed"] == ["0"]
-    assert " ".join(out["short"]) == ("LCDImage: the image has 19200 bytes, but 57600 are needed "
-                                      "(a 160 x 120 image, LCDImageSize)")
+    assert " ".join(out["short"]) == ("LCDImage: the image has 19200 bytes, but 46080 are needed "
+                                      "(a 128 x 120 image, LCDImageStart/LCDImageSize)")
     shown = screen(run)
     np.testing.assert_array_equal(shown[120:240, 0:160], np.load(tmp_path / "colour.npy"))
     np.testing.assert_array_equal(shown[120:240, 160:320], np.repeat(np.load(tmp_path / "gray.npy")[..., None], 3, 2))
     assert (shown[120:240, 320:480:2] == 0).all() and (shown[120:240, 321:480:2] == 255).all()  # 1 = black
     assert (shown[0:120, 0:80] == 255).all() and (shown[0:120, 80:160] == 0).all()  # -1 is byte 255
+    assert out["map"] == ["0"] and (shown[0:120, 320:448] == 255).all() and (shown[0:120, 448:] == 0).all()
 
 
 KEYS = """

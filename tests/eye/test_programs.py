@@ -163,3 +163,108 @@ def test_motors_driving_and_objects(robios_prefix, tmp_path):
     assert out["object"] == ["1000", "1000", "0", "0"]
     assert out["moved"] == ["0", "1200", "800", "0", "90"]
     assert out["unknown"] == ["None", "1"]
+
+
+# A stand-in, written for this test, for EyeSim's own eye.py as lab directories still hold it:
+# it loads the library by its file name, as EyeSim's did, and wraps a few functions the same way.
+OLD_STYLE_EYE = """
+    import ctypes
+    import sys
+
+    if sys.platform.startswith("linux"):
+        lib = ctypes.CDLL("libeyesim.so")
+    else:
+        sys.exit("eye.py: unsupported platform " + sys.platform)
+
+    STANDIN = True
+    KEY1 = 1
+
+    lib.LCDPrintf.argtypes = [ctypes.c_char_p]
+    lib.LCDGetPos.argtypes = [ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_int)]
+    lib.VWStraight.argtypes = [ctypes.c_int, ctypes.c_int]
+    lib.VWGetPosition.argtypes = [ctypes.POINTER(ctypes.c_int)] * 3
+
+    def LCDPrintf(format, *args):
+        return lib.LCDPrintf((format % args).encode("ascii"))
+
+    def LCDGetPos(row, column):
+        return lib.LCDGetPos(ctypes.pointer(row), ctypes.pointer(column))
+
+    def VWStraight(dist, speed):
+        return lib.VWStraight(ctypes.c_int(dist), ctypes.c_int(speed))
+
+    def VWWait():
+        return lib.VWWait()
+
+    def VWGetPosition():
+        x, y, phi = ctypes.c_int(), ctypes.c_int(), ctypes.c_int()
+        lib.VWGetPosition(ctypes.pointer(x), ctypes.pointer(y), ctypes.pointer(phi))
+        return [x.value, y.value, phi.value]
+"""
+
+USES_OLD_EYE = """
+    import ctypes
+    import eye
+    from eye import *
+
+    print("standin", eye.STANDIN)
+    library = next(line.split()[-1] for line in open("/proc/self/maps") if "libeyesim.so" in line)
+    print("library", library)
+    LCDPrintf("Lab %d\\n", 3)
+    row, column = ctypes.c_int(), ctypes.c_int()
+    LCDGetPos(row, column)
+    print("cursor", row.value, column.value)
+    VWStraight(200, 200)
+    VWWait()
+    print("odometry", *VWGetPosition())
+"""
+
+
+def test_a_program_beside_eyesims_old_eye_py_runs_with_our_library(robios_prefix, tmp_path):
+    write_program(tmp_path, OLD_STYLE_EYE, "eye.py")
+    write_program(tmp_path, USES_OLD_EYE, "lab.py")
+    (tmp_path / "lab.sim").write_text("world scenes/arena.wld\nS4 500 500 0 lab.py\n")
+    result = run_headless("lab.sim", "--record", "path.csv", cwd=tmp_path)
+    assert result.returncode == 0, result.stdout + result.stderr
+    out = {line.split()[0]: line.split()[1:] for line in program_output(result)}
+    assert out["standin"] == ["True"]  # the directory's eye.py, not ours
+    assert out["library"] == [str((robios_prefix / "lib" / "libeyesim.so").resolve())]
+    assert out["cursor"] == ["1", "0"]
+    x, y, phi = map(int, out["odometry"])
+    assert abs(x - 200) <= 5 and abs(y) <= 5
+    path = read_trajectory(tmp_path / "path.csv")[1]
+    assert math.hypot(path[-1]["x"] - path[0]["x"] - 0.200, path[-1]["y"] - path[0]["y"]) < 0.010
+
+
+PRINTF = """
+    from eye import *
+
+    LCDPrintf("Hello\\n", "")                       # a surplus argument, as C ignores it
+    LCDPrintf("%5.2f|%-4d|%x|%c|%s|%ld%%", 3.14159, 7, 255, 65, "ok", 10 ** 12)
+    print("cursor", *LCDGetPos())
+    LCDSetPrintf(5, 2, "%*d", 6, 42, "surplus")
+    print("set", *LCDGetPos())
+"""
+
+
+def test_python_lcd_printf_follows_c_printf(robios_prefix, tmp_path):
+    write_program(tmp_path, PRINTF, "printf.py")
+    (tmp_path / "lab.sim").write_text("world scenes/arena.wld\nS4 500 500 0 printf.py\n")
+    result = run_headless("lab.sim", cwd=tmp_path)
+    assert result.returncode == 0, result.stdout + result.stderr
+    out = {line.split()[0]: line.split()[1:] for line in program_output(result)}
+    # " 3.14|7   |ff|A|ok|1000000000000%" is 32 characters on row 1
+    assert out["cursor"] == ["1", str(len(" 3.14|7   |ff|A|ok|1000000000000%"))]
+    assert out["set"] == ["5", "8"]
+
+
+def test_programs_get_the_library_directory_first_on_ld_library_path(monkeypatch):
+    from eyesim import paths
+    from eyesim.launcher import program_environment
+
+    monkeypatch.setenv("LD_LIBRARY_PATH", "/opt/other")
+    env = program_environment("127.0.0.1", 9797, 2)
+    assert env["LD_LIBRARY_PATH"] == f"{paths.robios_lib_dir()}:/opt/other"
+    assert (env["EYESIM_HOST"], env["EYESIM_PORT"], env["EYESIM_ROBOT"]) == ("127.0.0.1", "9797", "2")
+    monkeypatch.delenv("LD_LIBRARY_PATH")
+    assert program_environment("127.0.0.1", 9797, 2)["LD_LIBRARY_PATH"] == str(paths.robios_lib_dir())

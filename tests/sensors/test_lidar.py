@@ -49,6 +49,32 @@ def test_a_scan_matches_the_room_and_the_index_convention(tmp_path, programs, ru
         assert abs(measured - to_wall(x, y, beam_heading(phi, i, 8, 180))) <= 10, (i, measured)
 
 
+def test_the_legacy_laser_scan_is_counter_clockwise_from_ahead_and_keeps_the_lidar_settings(
+        tmp_path, programs, run_scene):
+    x, y, phi = 650, 800, 20
+    scene = write_scene(tmp_path, square_room(ROOM), [f"S4 {x} {y} {phi}"])
+    run = run_scene(scene, {1: programs("laser_scan")})
+    assert run.returncode == 0, run.stdout + run.stderr
+
+    assert run.values(1, "set")[0] == [0]
+    rc, *scan = run.values(1, "laser")[0]
+    assert (rc, len(scan)) == (0, 360)
+    # index i at i degrees counter-clockwise from ahead: 0 ahead, 90 left, 180 behind, 270 right
+    for i, wall in ((0, phi), (90, phi + 90), (180, phi + 180), (270, phi - 90)):
+        assert abs(scan[i] - to_wall(x, y, wall)) <= 10, (i, scan[i])
+    for i, measured in enumerate(scan):  # programs map a wall point at x + d*cos(phi + i)
+        assert abs(measured - to_wall(x, y, phi + i)) <= 10, (i, measured)
+
+    # The program's own LIDARSet(180, 0, 8) is untouched: LIDARGet still gives its 8 beams.
+    assert run.values(1, "resolution")[0] == [8]
+    rc, *narrow = run.values(1, "narrow")[0]
+    assert (rc, len(narrow)) == (0, 8)
+    for i, measured in enumerate(narrow):
+        assert abs(measured - to_wall(x, y, beam_heading(phi, i, 8, 180))) <= 10, (i, measured)
+    assert run.values(1, "null")[0] == [1]
+    assert "eyesim: SIMLaserScan: the scan array is NULL" in run.stderr
+
+
 def test_a_tilted_scan_sees_the_floor_ahead_and_the_wall_behind(tmp_path, programs, run_scene):
     scene = write_scene(tmp_path, square_room(ROOM), ["S4 1000 1000 0"])
     run = run_scene(scene, {1: programs("lidar_scan")})

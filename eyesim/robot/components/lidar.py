@@ -16,6 +16,9 @@ MAX_RANGE_MM = 9999  # what a beam that hits nothing within range reports
 MOUNT_ABOVE_TOP = 10.0  # mm the scanner's centre sits above the chassis top
 MAX_POINTS = 3600
 DEFAULT = LidarSpec(points=360, tilt=0.0)  # the scanner of a robot without a `lidar` line
+# SIMLaserScan's beams (EyeSim 6): level, beam i at i degrees counter-clockwise from ahead.
+_ccw = np.radians(np.arange(360))
+LASER_SCAN_BEAMS = np.stack([np.cos(_ccw), np.sin(_ccw), np.zeros(360)], axis=1)
 
 
 class LidarScanner(Component):
@@ -45,39 +48,49 @@ class LidarScanner(Component):
         # Level beam (cos a, -sin a, 0) for a clockwise angle a, then turned about y by the tilt.
         self._local = np.stack([np.cos(clockwise) * math.cos(tilt), -np.sin(clockwise),
                                 -np.cos(clockwise) * math.sin(tilt)], axis=1)
-        self._geom = np.zeros(points, dtype=np.int32)
-        self._dist = np.zeros(points, dtype=np.float64)
 
     def scan(self) -> np.ndarray:
         """Distances in mm (int32), MAX_RANGE_MM where a beam hits nothing in range."""
+        return self._cast(self._local)
+
+    def laser_scan(self) -> np.ndarray:
+        """EyeSim 6's SIMLaserScan: 360 level beams, index i at i degrees counter-clockwise from
+        ahead, whatever configure() set (that stays for scan())."""
+        return self._cast(LASER_SCAN_BEAMS)
+
+    def _cast(self, local: np.ndarray) -> np.ndarray:
+        """Distances in mm along beams given in the robot's frame; the last scan, for the viewer."""
         model, data = self.world.model, self.world.data
         rotation = data.xmat[self.robot.body].reshape(3, 3)
         origin = data.xpos[self.robot.body] + rotation @ self.mount
-        directions = self._local @ rotation.T
+        directions = local @ rotation.T
+        geom = np.zeros(len(local), dtype=np.int32)
+        dist = np.zeros(len(local), dtype=np.float64)
         mujoco.mj_multiRay(model, data, origin, directions.ravel(), RAY_GROUPS, 1, self.robot.body,
-                           self._geom, self._dist, None, self.points, mm(MAX_RANGE_MM))
-        self._look_past_own_parts(origin, directions)
-        within = (self._dist >= 0) & (self._dist < mm(MAX_RANGE_MM))
-        distances = np.where(within, np.rint(self._dist * 1000.0), MAX_RANGE_MM).astype(np.int32)
+                           geom, dist, None, len(local), mm(MAX_RANGE_MM))
+        self._look_past_own_parts(origin, directions, geom, dist)
+        within = (dist >= 0) & (dist < mm(MAX_RANGE_MM))
+        distances = np.where(within, np.rint(dist * 1000.0), MAX_RANGE_MM).astype(np.int32)
         self.last_scan = (origin.copy(), directions, distances)
         return distances
 
-    def _look_past_own_parts(self, origin: np.ndarray, directions: np.ndarray) -> None:
+    def _look_past_own_parts(self, origin: np.ndarray, directions: np.ndarray, geoms: np.ndarray,
+                             dists: np.ndarray) -> None:
         """Beams that hit one of the robot's own moving parts (a wheel, an arm link: bodies other
         than the chassis, which the ray cast already ignores) continue past it."""
         model, data = self.world.model, self.world.data
-        hit = self._geom >= 0
-        own = np.flatnonzero(hit & (model.body_rootid[model.geom_bodyid[np.where(hit, self._geom, 0)]]
+        hit = geoms >= 0
+        own = np.flatnonzero(hit & (model.body_rootid[model.geom_bodyid[np.where(hit, geoms, 0)]]
                                     == self.robot.body))
         geom = np.zeros(1, dtype=np.int32)
         for i in own:
-            travelled, part, segment = 0.0, self._geom[i], self._dist[i]
+            travelled, part, segment = 0.0, geoms[i], dists[i]
             while part >= 0 and model.body_rootid[model.geom_bodyid[part]] == self.robot.body:
                 travelled += segment + 1e-6
                 segment = mujoco.mj_ray(model, data, origin + directions[i] * travelled, directions[i], RAY_GROUPS, 1,
                                         model.geom_bodyid[part], geom)
                 part = geom[0]
-            self._geom[i], self._dist[i] = part, (travelled + segment if part >= 0 else -1.0)
+            geoms[i], dists[i] = part, (travelled + segment if part >= 0 else -1.0)
 
 
 def create(context) -> list[Component]:

@@ -55,17 +55,16 @@ int main(void)
     check("circle centre", LCDGetPixel(440, 45), MAGENTA);
     check("outside the screen", LCDGetPixel(480, 0), -1);
 
-    /* Images: a 4 x 2 colour image shown 10 times larger, a gray and a binary one 1:1. */
+    /* Images: a 4 x 2 colour image (LCDImageStart gives the size), a gray and a binary one. */
     BYTE colour[4 * 2 * 3] = {0};
     for (int k = 0; k < 8; k++)
         colour[3 * k + (k % 3)] = 255; /* red, green, blue, red, ... */
-    LCDImageStart(0, 0, 4, 2);
-    LCDImageSize(CUSTOM);            /* the images are as large as shown now: 4 x 2 pixels */
-    LCDImageStart(400, 100, 40, 20); /* shown 10 times larger */
+    LCDImageStart(400, 100, 4, 2);
+    LCDImageSize(CUSTOM);            /* keeps the 4 x 2 pixels */
     check("image", LCDImage(colour), 0);
-    check("image pixel 0", LCDGetPixel(405, 105), RED);
-    check("image pixel 1", LCDGetPixel(415, 105), GREEN);
-    check("image pixel 5", LCDGetPixel(415, 115), BLUE);
+    check("image pixel 0", LCDGetPixel(400, 100), RED);
+    check("image pixel 1", LCDGetPixel(401, 100), GREEN);
+    check("image pixel 5", LCDGetPixel(401, 101), BLUE);
     BYTE gray[QQVGA_PIXELS];
     memset(gray, 200, sizeof gray);
     LCDImageSize(QQVGA);
