@@ -18,7 +18,7 @@ MIN_APPROACH_SPEED = 0.004  # m/s: the crawl speed that finishes a manoeuvre wit
 HEADING_GAIN = 8.0  # 1/s: how hard a path manoeuvre corrects its heading towards the planned one
 # The last part of a manoeuvre is crawled: the wheels lag their set point by a few ms, and coming in
 # faster they would still turn on after the end, always past the target (12 turns: over 1 degree).
-CRAWL_DISTANCE = float(__import__("os").environ.get("CRAWL", "0.0005"))  # m of wheel travel
+CRAWL_DISTANCE = 0.0005  # m of wheel travel
 STALL_WINDOW = 0.1  # s over which a wheel's progress is judged
 STALL_FRACTION = 0.25  # a wheel turning less than this share of its set speed is stalled
 STALL_MIN_TICKS = 4  # a window in which a wheel should turn fewer ticks says nothing
