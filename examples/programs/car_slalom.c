@@ -7,9 +7,12 @@ int main(void)
 {
     LCDPrintf("Car slalom\n");
     MOTORDrive(1, 30);
+    /* about 15 degrees left, right, left, right; the first and last swings are half as long, so
+       the car weaves about a straight line east */
+    const int times[4] = {600, 1200, 1200, 600};
     for (int turn = 0; turn < 4; turn++) {
-        SERVOSet(1, turn % 2 ? 170 : 84); /* about 15 degrees right, then left */
-        OSWait(1200);
+        SERVOSet(1, turn % 2 ? 170 : 84);
+        OSWait(times[turn]);
     }
     SERVOSet(1, 127);
     OSWait(500);

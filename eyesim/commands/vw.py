@@ -55,8 +55,8 @@ def vw_curve(sim, robot, request):
 def vw_drive(sim, robot, request):
     dx, dy, speed = request.args
     vw = _vw(robot)
-    if dx <= abs(dy):
-        raise CommandError(f"the point ({dx}, {dy}) cannot be reached on an arc: dx must be greater than |dy|")
+    if dx < abs(dy) or dx <= 0:  # dx == |dy| is a quarter circle
+        raise CommandError(f"the point ({dx}, {dy}) cannot be reached on an arc: dx must be at least |dy| (and above 0)")
     vw.drive_to(mm(dx), mm(dy), mm(speed))
     return (0,)
 

@@ -25,29 +25,31 @@ DERIVATIVE_UNIT = 0.0001  # s per unit of the D gain
 
 
 class WheelMotor:
-    """A DC motor with a quadrature encoder on a wheel's hinge joint, or on a fixed tendon (an axle
-    with a differential: the tendon is the mean of its wheels' angles).
+    """A geared motor with a quadrature encoder on a wheel's hinge joint, or on a fixed tendon (an
+    axle with a differential: the tendon is the mean of its wheels' angles).
 
-    Open loop (MOTORDrive) it behaves like a DC motor: the torque falls from `stall_torque` at rest
-    to 0 at the no-load speed `max_speed` times the duty cycle. Closed loop (MOTORSpeed, VW) a speed
-    controller drives it: MuJoCo's velocity servo is the proportional part (stable at any gain, as
-    it is integrated implicitly), with the MOTORPID integral and derivative parts added here. Both
-    are limited to `stall_torque`, so a blocked wheel stalls instead of slipping."""
+    Like EyeSim's motors, it runs under a fast speed controller: MuJoCo's velocity servo (stable at
+    any gain, as it is integrated implicitly) pulls the wheel to its set point with at most `torque`.
+    Open loop (MOTORDrive) the set point is the duty cycle times the no-load speed `max_speed`, so
+    the wheel follows a command within a few hundredths of a second and 0 brakes it; closed loop
+    (MOTORSpeed, VW) the set point is the asked speed, with the MOTORPID integral and derivative
+    parts added here. The torque exceeds what a small robot's wheels can transmit: a full-power
+    step spins them up at once and they slip until the robot catches up."""
 
     def __init__(self, spec: mujoco.MjSpec, name: str, target: str, transmission: mujoco.mjtTrn,
-                 ticks_per_rev: int, max_speed: float, stall_torque: float):
+                 ticks_per_rev: int, max_speed: float, torque: float):
         self.name = name
         self.transmission = transmission
         self.ticks_per_rev = ticks_per_rev
         self.ticks_per_radian = ticks_per_rev / (2 * math.pi)
         self.max_speed = max_speed  # rad/s
-        self.stall_torque = stall_torque  # N*m
+        self.torque = torque  # N*m the motor can give at most
         actuator = spec.add_actuator(name=name, target=target, trntype=transmission)
         actuator.gainprm[0] = SPEED_GAIN
         actuator.biastype = mujoco.mjtBias.mjBIAS_AFFINE
         actuator.biasprm[2] = -SPEED_GAIN
         actuator.forcelimited = True
-        actuator.forcerange = [-stall_torque, stall_torque]
+        actuator.forcerange = [-torque, torque]
 
     def bind(self, world) -> None:
         model, data = world.model, world.data
@@ -100,11 +102,13 @@ class WheelMotor:
 
     # -- commands --------------------------------------------------------------------------------
     def drive(self, percent: float) -> None:
-        """Open loop at `percent` (-100..100) of full power."""
+        """Open loop at `percent` (-100..100) of full power: that share of the no-load speed, under
+        the motor's own fast speed controller (the MOTORPID gains do not apply)."""
         if self.closed_loop:
             self.closed_loop = self.needs_update = False
-            self._set_gain(self.stall_torque / self.max_speed)
-        self.data.ctrl[self.actuator] = percent / 100 * self.max_speed
+            self._set_gain(SPEED_GAIN)
+        self.target = percent / 100 * self.max_speed
+        self.data.ctrl[self.actuator] = self.target
 
     def set_speed(self, speed: float) -> None:
         """Closed loop at `speed` rad/s, clipped to the no-load speed."""
@@ -135,7 +139,7 @@ class WheelMotor:
             self.set_speed(0.0)
 
     def pid_off(self) -> None:
-        """Back to open loop, without power: the motor brakes to a stop like a shorted DC motor."""
+        """Back to open loop at 0 %: the motor brakes the wheel to a stop."""
         self.pid = DEFAULT_PID
         self.drive(0.0)
 

@@ -15,6 +15,7 @@ from eyesim.scene import builtins, paths
 from eyesim.scene.description import (Collider, Diagnostic, Location, ObjectPlacement, ObjectType, Pose,
                                       RobotPlacement, RobotType, Scene, World)
 from eyesim.scene.diagnostics import Diagnostics, SceneError, quoted
+from eyesim.scene.placement import settle_placements
 from eyesim.scene.esobj import parse_esobj
 from eyesim.scene.json_format import parse_json
 from eyesim.scene.lexer import TextFileError, decode
@@ -231,6 +232,8 @@ class _SceneLoader:
             else:
                 self.place_type(placement, where, scene_file, starts, robots, objects)
         markers = world.markers + document.markers
+        robots, objects = settle_placements(robots, objects, self.used_robots, self.used_objects, world.walls,
+                                            self.diagnostics, str(scene_file))
         return Scene(str(scene_file), world, dict(self.used_robots), dict(self.used_objects), tuple(robots),
                      tuple(objects), markers, document.settings, self.diagnostics.warnings)
 

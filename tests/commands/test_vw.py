@@ -18,7 +18,9 @@ def test_remain_and_stalled_while_driving():
         assert client.call("VW_STALLED") == (0,)
         client.call("OS_WAIT", 3000)  # the wall is 400 mm ahead
         assert client.call("VW_STALLED") == (3,)
-        assert client.call("VW_DONE") == (0,)
+        assert client.call("VW_DONE") == (1,)  # a stalled manoeuvre ends, and still says why
+        client.call("OS_WAIT", 300)
+        assert client.call("VW_STALLED") == (3,)
         client.call("VW_SET_SPEED", 0, 0)
         client.call("OS_WAIT", 300)
         assert client.call("VW_STALLED") == (0,)

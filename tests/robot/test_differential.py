@@ -73,7 +73,7 @@ def test_remain_counts_down_to_zero_and_done_flips(manoeuvres):
 def test_an_unreachable_drive_is_an_error(manoeuvres):
     run, _ = manoeuvres
     assert run.values(1, "unreachable") == [[1]]
-    assert "VWDrive" in run.stderr and "dx must be greater than |dy|" in run.stderr
+    assert "VWDrive" in run.stderr and "dx must be at least |dy|" in run.stderr
 
 
 def test_odometry_agrees_with_the_true_pose_on_a_two_metre_square(drive):

@@ -10,13 +10,16 @@ import mujoco
 from eyesim.physics.units import mm
 from eyesim.robot.actuators import Servo, WheelMotor
 from eyesim.robot.component import Component
-from eyesim.robot.components.differential_drive import STALL_TORQUE, WHEEL_ARMATURE, add_wheel
+from eyesim.robot.components.differential_drive import GRAVITY, WHEEL_ARMATURE, add_wheel, wheel_torque
 
 MAX_STEER = math.radians(45)  # servo 0 steers 45 degrees left, 255 as far right (the EyeSim car)
 STRAIGHT = 127  # the servo position that steers straight ahead
 STEER_RATE = math.radians(300)  # rad/s: a hobby servo's speed
 STEER_GAIN = 2.0  # N*m per rad holding the steered wheels on their angle
 STEER_DAMPING = 0.02  # N*m per rad/s
+# The driven axle needs more than a differential drive's motors (measured, docs/api/motor.md): when
+# one rear wheel slips, the differential lets it take the other's torque.
+AXLE_GRIP_FACTOR = 5.0
 KNUCKLE_MASS = 0.005  # kg: the king pin a steered wheel turns on
 
 
@@ -50,16 +53,19 @@ class AckermannDrive(Component):
         self.radius = mm(drive_wheels.diameter) / 2
         prefix = context.prefix
         spec = context.spec
+        load = robot_type.mass * GRAVITY / 4  # N on each wheel
         # Rear axle: two driven wheels; the tendon is their mean angle (an open differential).
         axle = f"{prefix}/axle"
         tendon = spec.add_tendon(name=axle)
         for side, sign in (("left", 1.0), ("right", -1.0)):
             name = f"{prefix}/wheel_rear_{side}"
             add_wheel(context, name, [self.rear_x, sign * mm(drive_wheels.track) / 2, self.radius], self.radius,
-                      shown=True)
+                      load, shown=True)
             tendon.wrap_joint(name, 0.5)
         self.motor = WheelMotor(spec, axle, axle, mujoco.mjtTrn.mjTRN_TENDON, drive_wheels.ticks_per_rev,
-                                math.radians(drive_wheels.max_speed), 2 * STALL_TORQUE)
+                                math.radians(drive_wheels.max_speed),
+                                # the axle's torque, which the differential splits between the two wheels
+                                2 * wheel_torque(robot_type, self.radius, 4, AXLE_GRIP_FACTOR))
         self.motors = {1: self.motor}
         self.encoders = {1: self.motor}
         # Front axle: each wheel turns freely on a knuckle that the steering turns about z.
@@ -71,7 +77,7 @@ class AckermannDrive(Component):
             knuckle.add_joint(name=name, type=mujoco.mjtJoint.mjJNT_HINGE, axis=[0, 0, 1], armature=WHEEL_ARMATURE)
             knuckle.add_geom(name=name, type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[0.004, front_radius / 2, 0],
                              mass=KNUCKLE_MASS, contype=0, conaffinity=0, rgba=[0.3, 0.3, 0.3, 1.0])
-            add_wheel(context, f"{prefix}/wheel_front_{side}", [0.0, 0.0, 0.0], front_radius, parent=knuckle,
+            add_wheel(context, f"{prefix}/wheel_front_{side}", [0.0, 0.0, 0.0], front_radius, load, parent=knuckle,
                       shown=True)
             actuator = spec.add_actuator(name=name, target=name, trntype=mujoco.mjtTrn.mjTRN_JOINT)
             actuator.gainprm[0] = STEER_GAIN

@@ -17,11 +17,14 @@ import mujoco
 from eyesim.physics.units import mm
 from eyesim.robot.actuators import WheelMotor
 from eyesim.robot.component import Component
-from eyesim.robot.components.differential_drive import STALL_TORQUE, WHEEL_ARMATURE, WHEEL_DAMPING, WHEEL_MASS
+from eyesim.robot.components.differential_drive import WHEEL_ARMATURE, WHEEL_DAMPING, WHEEL_MASS, wheel_torque
 
 ROLLER_FRICTION = 0.02  # along the axle: what the rollers' bearings resist
 GRIP = 1.0  # along the rolling direction
 WHEEL_WIDTH = 0.02  # m
+# Of the grip along a wheel's rolling direction; measured to meet the 0.1 s step response
+# (docs/api/motor.md): more makes four slipping wheels fight each other.
+MECANUM_GRIP_FACTOR = 4.0
 # (name, motor, x sign, y sign, direction its bottom roller pushes when the wheel turns forward)
 WHEELS = (("front_left", 1, 1, 1, -45.0), ("front_right", 2, 1, -1, 45.0),
           ("back_left", 3, -1, 1, 45.0), ("back_right", 4, -1, -1, -45.0))
@@ -59,7 +62,9 @@ class OmniDrive(Component):
             tendon = spec.add_tendon(name=shaft)
             tendon.wrap_joint(body_name, math.sqrt(2))
             self.motors[motor] = WheelMotor(spec, shaft, shaft, mujoco.mjtTrn.mjTRN_TENDON, wheels.ticks_per_rev,
-                                            math.radians(wheels.max_speed), STALL_TORQUE)
+                                            math.radians(wheels.max_speed),
+                                            # the shaft's gearing multiplies its torque by sqrt 2 at the wheel
+                                            wheel_torque(robot_type, self.radius, 4, MECANUM_GRIP_FACTOR) / math.sqrt(2))
         self.encoders = self.motors
 
     def bind(self, world) -> None:

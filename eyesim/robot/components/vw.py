@@ -15,11 +15,14 @@ from eyesim.robot.components.differential_drive import DifferentialDrive
 LINEAR_ACCEL = 1.0  # m/s^2 the controller ramps linear speed by (keeps the wheels from slipping)
 BRAKE_FRACTION = 0.5  # of the acceleration used to plan the stop, leaving headroom for lag
 MIN_APPROACH_SPEED = 0.004  # m/s: the crawl speed that finishes a manoeuvre without stalling short
-DISTANCE_TOLERANCE = 0.0002  # m
 HEADING_GAIN = 8.0  # 1/s: how hard a path manoeuvre corrects its heading towards the planned one
+# The last part of a manoeuvre is crawled: the wheels lag their set point by a few ms, and coming in
+# faster they would still turn on after the end, always past the target (12 turns: over 1 degree).
+CRAWL_DISTANCE = 0.0005  # m of wheel travel
 STALL_WINDOW = 0.1  # s over which a wheel's progress is judged
 STALL_FRACTION = 0.25  # a wheel turning less than this share of its set speed is stalled
 STALL_MIN_TICKS = 4  # a window in which a wheel should turn fewer ticks says nothing
+STALL_END_WINDOWS = 3  # a manoeuvre stalled for this many windows in a row ends (VWWait returns)
 
 
 class Manoeuvre:
@@ -30,7 +33,7 @@ class Manoeuvre:
     what it needs every step is worked out here once."""
 
     def __init__(self, distance: float, rotation: float, speed: float, start_ticks: tuple[int, int],
-                 half_track: float, top_wheel_speed: float):
+                 half_track: float, top_wheel_speed: float, metres_per_tick: float):
         self.distance = distance
         self.rotation = rotation
         self.start_ticks = start_ticks
@@ -43,8 +46,11 @@ class Manoeuvre:
         if not self.on_the_spot:  # the outer wheel must stay within its motor's reach
             self.top_speed = min(self.top_speed, top_wheel_speed / (1 + abs(self.curvature) * half_track))
         scale = 1 / half_track if self.on_the_spot else 1.0  # wheel metres -> the followed unit
-        self.tolerance = DISTANCE_TOLERANCE * scale
+        # Half the odometry's resolution (one wheel's tick moves the robot half a tick): a coarser
+        # tolerance would end every manoeuvre short by the same amount, and twelve turns add it up.
+        self.tolerance = metres_per_tick / 2 * scale
         self.floor = MIN_APPROACH_SPEED * scale
+        self.crawl = CRAWL_DISTANCE * scale
         self.braking = 2 * BRAKE_FRACTION * LINEAR_ACCEL * scale  # speed = sqrt(braking x remaining)
 
 
@@ -65,13 +71,16 @@ class VwController(Component):
         self.target_v = 0.0
         self.target_w = 0.0
         self.manoeuvre: Manoeuvre | None = None
+        self._owed: tuple[str, float] | None = None  # ("turn" | "straight", what the last one left over)
         self.engaged = False  # the wheels' speeds still need setting every step (ramp, manoeuvre)
         self.driving = False  # the controller has the wheels turning: watch for stalls
         self.odometry = [0.0, 0.0, 0.0]  # x, y (m), phi (rad) since start or VWSetPosition
         self._last_left = self._last_right = None  # encoder ticks after the last step
         self.stalled = 0  # bit 0 left, bit 1 right
         self._window_time = 0.0  # s into the current stall window
-        self._window_start: tuple[int, int, float, float] | None = None  # ticks and wheel speed set points
+        self._window_start: tuple | None = None  # ticks, wheel speed set points, wheel ground positions
+        self._stalled_windows = 0  # in a row, during a manoeuvre
+        self.stuck = False  # the last manoeuvre ended stalled: VWStalled keeps saying so until the next command
 
     # -- geometry ----------------------------------------------------------------------------
     def _ticks(self) -> tuple[int, int]:
@@ -89,15 +98,26 @@ class VwController(Component):
     # -- commands (from the VW handlers) -----------------------------------------------------
     def set_speed(self, v: float, w: float) -> None:
         self.manoeuvre = None
+        self._owed = None
+        self._new_command()
         self.engaged = self.driving = True
         self.target_v = max(-self.max_speed, min(self.max_speed, v))
         self.target_w = max(-self.max_turn, min(self.max_turn, w))
 
     def straight(self, distance: float, speed: float) -> None:
-        self._start(distance, 0.0, min(abs(speed), self.max_speed))
+        self._start(distance + self._owed_by("straight"), 0.0, min(abs(speed), self.max_speed))
 
     def turn(self, angle: float, speed: float) -> None:
-        self._start(0.0, angle, min(abs(speed), self.max_turn))
+        self._start(0.0, angle + self._owed_by("turn"), min(abs(speed), self.max_turn))
+
+    def _owed_by(self, kind: str) -> float:
+        """What the last manoeuvre of this kind left over (signed: m or rad), when it was the last
+        thing the wheels did. The encoders count in steps (an S4 turning on the spot: 0.2 degrees),
+        so a manoeuvre ends up to half a step off its target, always the same way for the same
+        target; carrying the rest into the next one keeps a series of turns or straights on target
+        (VWGetPosition knows the difference, too)."""
+        owed, self._owed = self._owed, None
+        return owed[1] if owed is not None and owed[0] == kind else 0.0
 
     def curve(self, distance: float, angle: float, speed: float) -> None:
         """An arc of `distance` m changing the heading by `angle` rad; a zero distance turns on the
@@ -105,18 +125,28 @@ class VwController(Component):
         if distance == 0:
             self.turn(angle, abs(speed) / self.half_track)
         else:
+            self._owed = None
             self._start(distance, angle, min(abs(speed), self.max_speed))
 
     def drive_to(self, dx: float, dy: float, speed: float) -> None:
         """Along the circular arc that leaves in the current heading and passes through the point
-        dx ahead, dy to the left (requires dx > |dy|, so the arc turns by less than 90 degrees)."""
+        dx ahead, dy to the left (requires dx >= |dy|, so the arc turns by at most 90 degrees)."""
         rotation = 2 * math.atan2(dy, dx)
         distance = dx if dy == 0 else (dx * dx + dy * dy) / (2 * dy) * rotation
         self.curve(distance, rotation, speed)
 
+    def _new_command(self) -> None:
+        """A new VW command: whatever stalled before is forgotten."""
+        if self.stuck:
+            self.stuck = False
+            self.stalled = 0
+        self._stalled_windows = 0
+        self._window_start = None
+
     def _start(self, distance: float, rotation: float, speed: float) -> None:
+        self._new_command()
         self.manoeuvre = Manoeuvre(distance, rotation, speed, self._ticks(), self.half_track,
-                                   self.drive.max_wheel_speed * self.drive.radius)
+                                   self.drive.max_wheel_speed * self.drive.radius, self.metres_per_tick)
         self.engaged = self.driving = True
         if self.manoeuvre.length == 0 or self.manoeuvre.top_speed == 0:
             self._finish()
@@ -128,6 +158,8 @@ class VwController(Component):
     def release(self) -> None:
         """Direct motor commands take the wheels over until the next VW command."""
         self.manoeuvre = None
+        self._owed = None
+        self._new_command()
         self.engaged = self.driving = False
         self.v = self.w = self.target_v = self.target_w = 0.0
 
@@ -177,11 +209,13 @@ class VwController(Component):
         distance, rotation = self._progress()
         remaining = m.length - m.sign * (rotation if m.on_the_spot else distance)
         if remaining <= m.tolerance:
+            if m.on_the_spot or m.rotation == 0:
+                self._owed = ("turn" if m.on_the_spot else "straight", m.sign * remaining)
             self._finish()
             self.v = self.w = 0.0
             return
         # As fast as allowed, but slow enough to brake in what remains, never slower than a crawl.
-        speed = max(min(m.top_speed, math.sqrt(m.braking * remaining)), m.floor)
+        speed = max(min(m.top_speed, math.sqrt(m.braking * max(0.0, remaining - m.crawl))), m.floor)
         braking = speed < m.top_speed
         if m.on_the_spot:
             self.target_v, self.target_w = 0.0, m.sign * speed
@@ -207,9 +241,10 @@ class VwController(Component):
             self._window_time += dt
             if self._window_start is None or self._window_time >= STALL_WINDOW:
                 self._watch_stall(left, right)
-        elif self.stalled or self._window_start is not None:
-            self.stalled = 0
+        elif (self.stalled and not self.stuck) or self._window_start is not None:
+            self.stalled = self.stalled if self.stuck else 0
             self._window_start = None
+            self._stalled_windows = 0
 
     def _integrate(self, left: float, right: float) -> None:
         """Odometry: the wheels moved `left` and `right` metres since the last step."""
@@ -220,23 +255,37 @@ class VwController(Component):
         self.odometry = [x + distance * math.cos(mid), y + distance * math.sin(mid), phi + rotation]
 
     def _watch_stall(self, left: int, right: int) -> None:
-        """At the end of each short window, compares each wheel's encoder progress with what its
-        speed set point asked for (the smaller of the set points at the window's start and end,
-        so that speeding up or slowing down is never taken for a stall)."""
+        """At the end of each short window, compares each wheel's progress with what its speed set
+        point asked for (the smaller of the set points at the window's start and end, so that
+        speeding up or slowing down is never taken for a stall). Progress is both what its encoder
+        counted and how far it moved over the floor: a blocked wheel fails the first, a wheel
+        spinning in place (against a wall, jammed in a corner, lifted) the second. A manoeuvre
+        that stays stalled ends, so VWWait returns; VWStalled then still tells why."""
         wheels = self.drive.wheels
-        targets = abs(wheels[0].target), abs(wheels[1].target)
+        targets = wheels[0].target, wheels[1].target
+        ground = self.drive.wheel_ground_positions()
         start = self._window_start
         if start is not None:
             stalled = 0
-            for bit, ticks, begun, target, earlier in ((1, left, start[0], targets[0], start[2]),
-                                                       (2, right, start[1], targets[1], start[3])):
-                expected = min(target, earlier) * self._window_time * self.drive.wheels[0].ticks_per_radian
-                if expected >= STALL_MIN_TICKS and abs(ticks - begun) < STALL_FRACTION * expected:
+            for index, (bit, ticks) in enumerate(((1, left), (2, right))):
+                target, earlier = targets[index], start[2 + index]
+                speed = min(abs(target), abs(earlier)) if target * earlier > 0 else 0.0
+                expected = speed * self._window_time * wheels[index].ticks_per_radian
+                if expected < STALL_MIN_TICKS:
+                    continue
+                x, y, forward_x, forward_y = ground[index]
+                x0, y0 = start[4][index][:2]
+                over_floor = ((x - x0) * forward_x + (y - y0) * forward_y) * math.copysign(1.0, target)
+                expected_m = speed * self._window_time * self.drive.radius
+                if abs(ticks - start[index]) < STALL_FRACTION * expected or over_floor < STALL_FRACTION * expected_m:
                     stalled |= bit
             self.stalled = stalled
-        self._window_start = (left, right, *targets)
+            self._stalled_windows = self._stalled_windows + 1 if stalled and self.manoeuvre else 0
+            if self._stalled_windows >= STALL_END_WINDOWS:
+                self._finish()
+                self.stuck = True
+        self._window_start = (left, right, *targets, ground)
         self._window_time = 0.0
-        self._window = [0.0, 0.0, 0.0]
 
 
 def _ramp(current: float, target: float, step: float) -> float:
