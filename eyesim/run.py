@@ -11,13 +11,14 @@ import webbrowser
 
 from eyesim import scripted_input
 from eyesim.clock import DETERMINISTIC, MAX_SPEED, REALTIME, Clock
-from eyesim.engine import Simulation
+from eyesim.engine import DEFAULT_CALL_TIME_US, Simulation
 from eyesim.launcher import Launcher
 from eyesim.net.io_thread import IoThread
 from eyesim.net.program_server import ProgramServer
 from eyesim.protocol import generated as g
 from eyesim.robot.components.keys import KEY_NAMES
 from eyesim.robot_log import RobotLog
+from eyesim.scene.sim import MAX_CALL_TIME_MS
 
 DEFAULT_VIEWER_PORT = 8080
 
@@ -44,6 +45,9 @@ def register(subparsers) -> None:
     parser.add_argument("--psd-noise", type=float, metavar="MM",
                         help="standard deviation of Gaussian noise on PSD readings (default: the scene's PSDNOISE, else 0)")
     parser.add_argument("--seed", type=int, help="seed of the simulator's random numbers (default: the scene's SEED, else 0)")
+    parser.add_argument("--call-time", type=float, metavar="MS",
+                        help="ms of simulation time every ordinary RoBIOS call takes (default: the scene's CALLTIME, "
+                             f"else {DEFAULT_CALL_TIME_US / 1000:g}; 0 = as fast as possible)")
     parser.add_argument("--record", metavar="CSV", help="write every robot's true pose every 10 ms to CSV")
     parser.add_argument("--save-lcd", metavar="DIR", help="at the end, save each robot's LCD as DIR/robot<id>-lcd.png")
     parser.add_argument("--open", action="store_true", help="open the viewer in a web browser")
@@ -117,6 +121,10 @@ def with_settings(scene, args):
         changes["psd_noise"] = args.psd_noise
     if args.seed is not None:
         changes["seed"] = args.seed
+    if args.call_time is not None:
+        if not 0 <= args.call_time <= MAX_CALL_TIME_MS:
+            raise UsageError(f"--call-time {args.call_time:g}: must be from 0 to {MAX_CALL_TIME_MS} (ms)")
+        changes["call_time"] = args.call_time
     return dataclasses.replace(scene, settings=dataclasses.replace(scene.settings, **changes)) if changes else scene
 
 

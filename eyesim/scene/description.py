@@ -341,6 +341,7 @@ class Settings:
     trace: bool = False  # draw robot paths
     psd_noise: float = 0.0  # standard deviation (mm) of the Gaussian noise on PSD readings; 0 = exact
     seed: int = 0  # seeds the simulator's random numbers (PSD noise), so runs repeat exactly
+    call_time: float | None = None  # ms of simulation time an ordinary RoBIOS call takes; None = the default
 
 
 @dataclass(frozen=True)
