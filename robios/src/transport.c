@@ -630,6 +630,11 @@ static void connect_to_simulator(void)
 
 /* ---- Calls ------------------------------------------------------------------------------------- */
 
+bool es_may_wait_in_simulation(void)
+{
+    return atomic_load(&connected) && !reader_thread && !atomic_load(&exiting);
+}
+
 static bool has_variable_fields(const es_type *types, unsigned count)
 {
     for (unsigned k = 0; k < count; k++)
