@@ -47,7 +47,7 @@ def register(subparsers) -> None:
     parser.add_argument("--seed", type=int, help="seed of the simulator's random numbers (default: the scene's SEED, else 0)")
     parser.add_argument("--call-time", type=float, metavar="MS",
                         help="ms of simulation time every ordinary RoBIOS call takes (default: the scene's CALLTIME, "
-                             f"else {DEFAULT_CALL_TIME_US / 1000:g}; 0 = as fast as possible)")
+                             f"else {DEFAULT_CALL_TIME_US / 1000:g}; 0 = none beyond the protocol's 0.1 ms)")
     parser.add_argument("--record", metavar="CSV", help="write every robot's true pose every 10 ms to CSV")
     parser.add_argument("--save-lcd", metavar="DIR", help="at the end, save each robot's LCD as DIR/robot<id>-lcd.png")
     parser.add_argument("--open", action="store_true", help="open the viewer in a web browser")
