@@ -18,7 +18,8 @@ BUILD = BENCH / "results" / "build"
 
 def main() -> None:
     program = build_c(BENCH / "programs" / "robot_computer_calls.c", BUILD / "robot_computer_calls")
-    simulator, port = start_simulator("--headless", "--clock", "realtime", "--serial-loopback", "1:0")
+    # --call-time 0 here and below: the round trips themselves, not the per-call time (bench_call_time.py).
+    simulator, port = start_simulator("--headless", "--clock", "realtime", "--call-time", "0", "--serial-loopback", "1:0")
     try:
         env = dict(os.environ, EYESIM_PORT=str(port))
         result = subprocess.run([str(program), str(CALLS)], capture_output=True, text=True, check=True, env=env)
@@ -39,7 +40,7 @@ def main() -> None:
              "min_late_ms": min(lateness)}
     print(f"\n10 ms timer, {timer['callbacks']} callbacks: lateness in simulation time "
           f"mean {timer['mean_late_ms']:.2f} ms, min {timer['min_late_ms']:.0f} ms, max {timer['max_late_ms']:.0f} ms")
-    simulator, port = start_simulator("--headless", "--clock", "deterministic")
+    simulator, port = start_simulator("--headless", "--clock", "deterministic", "--call-time", "0")
     try:
         env = dict(os.environ, EYESIM_PORT=str(port))
         result = subprocess.run([str(program), "rate"], capture_output=True, text=True, check=True, env=env)

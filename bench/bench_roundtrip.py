@@ -51,7 +51,9 @@ def python_echo(client) -> list[float]:
 
 def psd_get() -> list[float]:
     program = build_c(BENCH / "programs" / "psd_roundtrip.c", BUILD / "psd_roundtrip")
-    simulator, port = start_simulator("--headless", "--clock", "realtime")
+    # --call-time 0: replies as soon as they are ready (the default holds each one for the per-call time,
+    # bench_call_time.py); this measures the round trip itself.
+    simulator, port = start_simulator("--headless", "--clock", "realtime", "--call-time", "0")
     try:
         env = dict(os.environ, EYESIM_PORT=str(port))
         result = subprocess.run([str(program), str(CALLS)], capture_output=True, text=True, check=True, env=env)

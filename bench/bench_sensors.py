@@ -79,7 +79,8 @@ def maze_walls():
 
 def through_protocol(program: Path, renderer_env: dict) -> dict:
     env = dict(os.environ, **renderer_env)
-    simulator, port = start_simulator("--headless", "--clock", "realtime", env=env)
+    # --call-time 0: what the sensors add to a round trip, not the per-call time (bench_call_time.py).
+    simulator, port = start_simulator("--headless", "--clock", "realtime", "--call-time", "0", env=env)
     try:
         result = subprocess.run([str(program), str(CALLS), str(FRAMES)], capture_output=True, text=True, check=True,
                                 env=dict(env, EYESIM_PORT=str(port)))

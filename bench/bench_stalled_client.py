@@ -48,7 +48,7 @@ def trial(port: int, stall: bool) -> float:
 
 
 def main() -> int:
-    simulator, port = start_simulator("--headless", "--clock", "realtime")
+    simulator, port = start_simulator("--headless", "--clock", "realtime", "--call-time", "0")  # round trips only
     try:
         baseline = [trial(port, stall=False) for _ in range(TRIALS)]
         stalled = [trial(port, stall=True) for _ in range(TRIALS)]

@@ -5,6 +5,7 @@ to the simulator exactly as a C program does. Calling conventions follow EyeSim'
 come back as new buffers, out-parameters as lists, RADIOReceive as [id, message]; see
 docs/api/python.md."""
 
+from eye import _sleep  # noqa: F401  (time.sleep in simulation time)
 from eye import constants
 from eye._library import EyeSimError, lib
 from eye.audio import *  # noqa: F401,F403

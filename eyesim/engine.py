@@ -8,7 +8,11 @@ Deterministic mode is a conservative lock-step: every connected program has its 
 (`Session.local_time_us`). Each request is handled at its program's time and advances that time by
 the operation's documented cost; physics only steps once every program is either blocked in a
 pending call or has asked for something at or beyond the next step. Requests are taken in order
-of (time, robot id), so the result does not depend on how the OS schedules the programs."""
+of (time, robot id), so the result does not depend on how the OS schedules the programs.
+
+Every answered call takes the call time (DEFAULT_CALL_TIME_US, the scene's CALLTIME, `--call-time`)
+of simulation time, in both modes: deterministic mode adds it to the program's clock, realtime mode
+holds the reply back until simulation time has gone on by that much since the request came in."""
 
 from __future__ import annotations
 
@@ -38,6 +42,9 @@ DEFAULT_STEP_US = 2000  # physics step: 2 ms
 SNAPSHOT_PERIOD = 1 / 30  # wall seconds between published snapshots
 MAX_CATCH_UP_STEPS = 50  # realtime: steps taken in one go before looking at the queue again
 IDLE_WAIT = 0.05  # s the loop sleeps when nothing can happen (paused, waiting for programs)
+# Simulation time an ordinary call takes (docs/running.md#call-time): EyeSim answered in a few ms,
+# and lab programs that count loop iterations instead of time were written against that.
+DEFAULT_CALL_TIME_US = 4000
 
 
 class Simulation:
@@ -59,6 +66,9 @@ class Simulation:
         self._lcd_sent: dict[int, int] = {}
         self._camera_sent: dict[int, int] = {}
         self.step_observers: list = []  # called as observer(sim) after every physics step
+        call_time_ms = scene.settings.call_time
+        self.call_time_us = DEFAULT_CALL_TIME_US if call_time_ms is None else round(call_time_ms * 1000)
+        self._held: list = []  # realtime: heap of (due_us, seq, session, frame), replies held for the call time
         self._build()
 
     # -- building ------------------------------------------------------------------------------
@@ -138,15 +148,19 @@ class Simulation:
             self._publish(force=True)
 
     def _realtime_round(self) -> None:
-        if self.clock.paused:
+        if self.clock.paused:  # held replies wait too: their simulation time does not go on
             self._handle_inbox(block=IDLE_WAIT)
             return
         if self.clock.as_fast_as_possible:  # one step per round, with the queue looked at in between
             self._handle_inbox(block=None)
             self.step()
+            self._release_held()
             return
+        self._release_held()
         wait = self.clock.seconds_until(self.time_us + self.step_us)
         if wait > 0:
+            if self._held:  # due by now (it was not a moment ago): 0, just look at the queue
+                wait = max(0.0, min(wait, self.clock.seconds_until(self._held[0][0])))
             self._handle_inbox(block=min(wait, SNAPSHOT_PERIOD))
             return
         self._handle_inbox(block=None)
@@ -258,21 +272,54 @@ class Simulation:
             else:
                 result = commands.HANDLERS[op.code](self, session.robot, request)
         except commands.CommandError as error:
-            session.local_time_us = request.time_us + op.cost_us
-            self._send(session, encode_error(op.code, request.request_id, error.code, str(error)))
+            self._answer(request, encode_error(op.code, request.request_id, error.code, str(error)))
             return
         except Exception:
             log.error("handler for %s failed:\n%s", op.name, traceback.format_exc())
-            session.local_time_us = request.time_us + op.cost_us
-            self._send(session, encode_error(op.code, request.request_id, g.ERR_BAD_ARGUMENT,
-                                             "internal simulator error (see the simulator log)"))
+            self._answer(request, encode_error(op.code, request.request_id, g.ERR_BAD_ARGUMENT,
+                                               "internal simulator error (see the simulator log)"))
             return
         if isinstance(result, Pending):
             session.pending.append((request, result))
             session.local_time_us = request.time_us
             return
-        session.local_time_us = request.time_us + op.cost_us
-        self._send(session, encode_message(op.code, g.KIND_REPLY, request.request_id, result))
+        self._answer(request, encode_message(op.code, g.KIND_REPLY, request.request_id, result))
+
+    def call_cost_us(self, op) -> int:
+        """Simulation time an answered call takes: the call time, or the op's own cost when that is
+        larger (camera images). Blocking calls cost only what they wait (OSWait(n) exactly n ms),
+        so waits and timers stay exact; the handshake costs nothing."""
+        if op.blocking or op.code == g.OP_HELLO:
+            return op.cost_us
+        return max(op.cost_us, self.call_time_us)
+
+    def _answer(self, request: Request, frame: bytes) -> None:
+        """Send the reply to a call answered at once, after the call's cost in simulation time."""
+        session = request.session
+        cost = self.call_cost_us(request.op)
+        if self.clock.deterministic or not self.call_time_us or cost == 0:
+            session.local_time_us = request.time_us + cost  # deterministic: the program's clock goes on
+            self._send(session, frame)
+            return
+        # Realtime: the reply leaves once simulation time has gone on by the cost since the request.
+        due = max(self._realtime_now_us(), request.time_us) + cost
+        session.local_time_us = due  # the program's next call cannot be earlier
+        heapq.heappush(self._held, (due, next(self._sequence), session, frame))
+
+    def _realtime_now_us(self) -> int:
+        """Realtime: simulation time now, between steps: the wall clock's, within the step under way
+        (at --speed max and while paused, the time of the last step)."""
+        if self.clock.paused or self.clock.as_fast_as_possible:
+            return self.time_us
+        return int(min(max(self.clock.target_us(), self.time_us), self.time_us + self.step_us))
+
+    def _release_held(self) -> None:
+        if not self._held:
+            return
+        now = self._realtime_now_us()
+        while self._held and self._held[0][0] <= now:
+            _, _, session, frame = heapq.heappop(self._held)
+            self._send(session, frame)
 
     def _hello(self, request: Request) -> tuple:
         version, selector, program, pid = request.args

@@ -11,13 +11,14 @@ import webbrowser
 
 from eyesim import scripted_input
 from eyesim.clock import DETERMINISTIC, MAX_SPEED, REALTIME, Clock
-from eyesim.engine import Simulation
+from eyesim.engine import DEFAULT_CALL_TIME_US, Simulation
 from eyesim.launcher import Launcher
 from eyesim.net.io_thread import IoThread
 from eyesim.net.program_server import ProgramServer
 from eyesim.protocol import generated as g
 from eyesim.robot.components.keys import KEY_NAMES
 from eyesim.robot_log import RobotLog
+from eyesim.scene.sim import MAX_CALL_TIME_MS
 
 DEFAULT_VIEWER_PORT = 8080
 
@@ -47,6 +48,9 @@ def register(subparsers) -> None:
     parser.add_argument("--seed", type=int, help="seed of the simulator's random numbers (default: the scene's SEED, else 0)")
     parser.add_argument("--eyesim6-psd", action="store_true",
                         help="number PSDs as EyeSim 6 programs do: 1 left, 2 front (as the scene setting EYESIM6PSD)")
+    parser.add_argument("--call-time", type=float, metavar="MS",
+                        help="ms of simulation time every ordinary RoBIOS call takes (default: the scene's CALLTIME, "
+                             f"else {DEFAULT_CALL_TIME_US / 1000:g}; 0 = none beyond the protocol's 0.1 ms)")
     parser.add_argument("--record", metavar="CSV", help="write every robot's true pose every 10 ms to CSV")
     parser.add_argument("--save-lcd", metavar="DIR", help="at the end, save each robot's LCD as DIR/robot<id>-lcd.png")
     parser.add_argument("--open", action="store_true", help="open the viewer in a web browser")
@@ -122,6 +126,10 @@ def with_settings(scene, args):
         changes["seed"] = args.seed
     if args.eyesim6_psd:
         changes["eyesim6_psd"] = True
+    if args.call_time is not None:
+        if not 0 <= args.call_time <= MAX_CALL_TIME_MS:
+            raise UsageError(f"--call-time {args.call_time:g}: must be from 0 to {MAX_CALL_TIME_MS} (ms)")
+        changes["call_time"] = args.call_time
     return dataclasses.replace(scene, settings=dataclasses.replace(scene.settings, **changes)) if changes else scene
 
 

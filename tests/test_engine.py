@@ -4,9 +4,10 @@ import time
 
 import pytest
 from support.client import ProgramClient
-from support.scenes import arena
+from support.scenes import arena, with_call_time
 from support.simulator import running_simulation
 
+from eyesim.engine import DEFAULT_CALL_TIME_US
 from eyesim.protocol import generated as g
 from eyesim.robot.components.keys import KEY2
 
@@ -19,29 +20,43 @@ def test_deterministic_time_stands_still_while_a_program_computes():
         before = sim.time_us
         time.sleep(0.3)  # the program "computes" for 0.3 s of wall time
         client.call("OS_GET_COUNT")
-        assert sim.time_us - before <= sim.step_us  # at most the step the next call falls into
+        # The first call's cost (the call time), and at most the step the next call falls into.
+        assert sim.time_us - before <= sim.call_time_us + sim.step_us
 
 
-def test_deterministic_calls_cost_their_documented_time():
-    cost = g.OPS_BY_NAME["OS_GET_COUNT"].cost_us
+def test_deterministic_calls_cost_the_call_time():
     with running_simulation(arena(), "deterministic") as (sim, port):
+        assert sim.call_time_us == DEFAULT_CALL_TIME_US  # not the protocol's 0.1 ms
+        assert sim.call_cost_us(g.OPS_BY_NAME["OS_GET_COUNT"]) == DEFAULT_CALL_TIME_US
         client = ProgramClient(port)
         client.hello()
         start = client.call("OS_GET_COUNT")[0]
         calls = 100
         for _ in range(calls - 1):
             client.call("OS_GET_COUNT")
-        assert client.call("OS_GET_COUNT")[0] - start == calls * cost // 1000
+        assert client.call("OS_GET_COUNT")[0] - start == calls * DEFAULT_CALL_TIME_US // 1000
+
+
+def test_a_call_time_of_0_leaves_the_protocols_own_costs():
+    cost = g.OPS_BY_NAME["OS_GET_COUNT"].cost_us  # 0.1 ms: time must go on even then
+    with running_simulation(with_call_time(arena(), 0), "deterministic") as (sim, port):
+        client = ProgramClient(port)
+        client.hello()
+        start = client.call("OS_GET_COUNT")[0]
+        for _ in range(99):
+            client.call("OS_GET_COUNT")
+        assert client.call("OS_GET_COUNT")[0] - start == 100 * cost // 1000
 
 
 def test_deterministic_os_wait_costs_exactly_its_milliseconds():
     with running_simulation(arena(), "deterministic") as (sim, port):
         client = ProgramClient(port)
         client.hello()
+        call_ms = sim.call_time_us // 1000  # the OS_GET_COUNT before the wait
         for wait in (1, 7, 100, 333):
             before = client.call("OS_GET_COUNT")[0]
             client.call("OS_WAIT", wait)
-            assert client.call("OS_GET_COUNT")[0] - before == wait
+            assert client.call("OS_GET_COUNT")[0] - before == call_ms + wait
 
 
 def test_realtime_os_wait_follows_the_wall_clock():
@@ -52,6 +67,49 @@ def test_realtime_os_wait_follows_the_wall_clock():
         client.call("OS_WAIT", 300)
         elapsed = time.perf_counter() - start
         assert 0.25 < elapsed < 1.5
+
+
+def test_realtime_replies_come_after_the_call_time_of_simulation_time():
+    with running_simulation(with_call_time(arena(), 10), "realtime", speed=2) as (sim, port):
+        client = ProgramClient(port)
+        client.hello()
+        start = client.call("OS_GET_COUNT")[0]
+        for _ in range(20):
+            client.call("KEY_READ")
+        assert client.call("OS_GET_COUNT")[0] - start >= 21 * 10
+
+
+def test_realtime_at_max_speed_a_call_takes_whole_steps():
+    with running_simulation(with_call_time(arena(), 3), "realtime", speed=float("inf")) as (sim, port):
+        client = ProgramClient(port)
+        client.hello()
+        start = client.call("OS_GET_COUNT")[0]
+        for _ in range(9):
+            client.call("KEY_READ")
+        assert client.call("OS_GET_COUNT")[0] - start >= 10 * 4  # 3 ms rounded up to two 2 ms steps
+
+
+def test_while_paused_a_held_reply_waits_for_simulation_time():
+    with running_simulation(arena(), "realtime") as (sim, port):
+        client = ProgramClient(port)
+        client.hello()
+        sim.call(lambda s: s.clock.set_paused(True, s.time_us))
+        request = client.send("KEY_READ")
+        client.sock.settimeout(0.3)
+        with pytest.raises(TimeoutError):
+            client.receive()  # no simulation time passes, so the call does not end
+        client.sock.settimeout(10)
+        sim.call(lambda s: s.clock.set_paused(False, s.time_us))
+        assert client.reply("KEY_READ", request) == (0,)
+
+
+def test_realtime_with_a_call_time_of_0_answers_at_once():
+    with running_simulation(with_call_time(arena(), 0), "realtime") as (sim, port):
+        client = ProgramClient(port)
+        client.hello()
+        sim.call(lambda s: s.clock.set_paused(True, s.time_us))
+        client.call("OS_GET_COUNT")  # paused, and still answered: nothing is held
+        assert sim.call_cost_us(g.OPS_BY_NAME["OS_GET_COUNT"]) == g.OPS_BY_NAME["OS_GET_COUNT"].cost_us
 
 
 def test_key_get_waits_for_a_press_while_other_calls_go_on():

@@ -14,6 +14,15 @@ def os_wait(sim, robot, request):
     return Pending.until(wake_us, (0,))
 
 
+def os_sleep(sim, robot, request):
+    """The program's sleep/usleep/nanosleep (rerouted by the C library) and Python's time.sleep: a wait
+    in simulation time like OSWait, to the microsecond (rounded up, so that any sleep lets time go on)."""
+    seconds, nanoseconds = request.args
+    if nanoseconds >= 1_000_000_000:
+        raise CommandError(f"sleep: {nanoseconds} nanoseconds is not below one second")
+    return Pending.until(request.time_us + seconds * 1_000_000 + -(-nanoseconds // 1000), (0,))
+
+
 def os_get_count(sim, robot, request):
     return (request.time_us // 1000,)
 
@@ -33,6 +42,7 @@ def os_machine_type(sim, robot, request):
 
 HANDLERS = {
     "OS_WAIT": os_wait,
+    "OS_SLEEP": os_sleep,
     "OS_GET_COUNT": os_get_count,
     "OS_MACHINE_NAME": os_machine_name,
     "OS_MACHINE_ID": os_machine_id,

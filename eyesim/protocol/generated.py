@@ -55,6 +55,7 @@ OP_OS_GET_COUNT = 1026
 OP_OS_MACHINE_NAME = 1027
 OP_OS_MACHINE_ID = 1028
 OP_OS_MACHINE_TYPE = 1029
+OP_OS_SLEEP = 1030
 OP_TIMER_ATTACH = 1281
 OP_TIMER_DETACH = 1282
 OP_TIMER_WAIT = 1283
@@ -157,6 +158,7 @@ OPS = {
     1027: OpSpec('OS_MACHINE_NAME', 1027, 'os', 100, False, (), (('name', 'str'),)),
     1028: OpSpec('OS_MACHINE_ID', 1028, 'os', 100, False, (), (('id', 'i32'),)),
     1029: OpSpec('OS_MACHINE_TYPE', 1029, 'os', 100, False, (), (('type', 'i32'),)),
+    1030: OpSpec('OS_SLEEP', 1030, 'os', 0, True, (('seconds', 'u32'), ('nanoseconds', 'u32')), (('result', 'i32'),)),
     1281: OpSpec('TIMER_ATTACH', 1281, 'timer', 100, False, (('period_ms', 'i32'),), (('handle', 'i32'),)),
     1282: OpSpec('TIMER_DETACH', 1282, 'timer', 100, False, (('handle', 'i32'),), (('result', 'i32'),)),
     1283: OpSpec('TIMER_WAIT', 1283, 'timer', 0, True, (), (('handles', 'i32s'),)),

@@ -342,6 +342,7 @@ class Settings:
     psd_noise: float = 0.0  # standard deviation (mm) of the Gaussian noise on PSD readings; 0 = exact
     seed: int = 0  # seeds the simulator's random numbers (PSD noise), so runs repeat exactly
     eyesim6_psd: bool = False  # PSDs numbered as EyeSim 6 programs expect: LEFT 1, FRONT 2 (RIGHT 3, BACK 4)
+    call_time: float | None = None  # ms of simulation time an ordinary RoBIOS call takes; None = the default
 
 
 @dataclass(frozen=True)

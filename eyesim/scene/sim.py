@@ -16,7 +16,9 @@ from eyesim.scene.lexer import Line, format_number, integer, number, quote_token
 
 SETTING_FLAGS = ("vis", "trace", "eyesim6psd")
 SETTING_VALUES = {"psdnoise": ("psd_noise", "a standard deviation in mm >= 0"),  # NAME=value settings
-                  "seed": ("seed", "a whole number")}
+                  "seed": ("seed", "a whole number"),
+                  "calltime": ("call_time", "a time in ms from 0 to 1000")}
+MAX_CALL_TIME_MS = 1000  # more is surely a mistake of units (a call taking seconds)
 KEYWORDS = ("world", "maze", "settings", "robi", "robot", "obj", "object", "marker")
 
 
@@ -118,7 +120,7 @@ class _SceneReader(KeywordReader):
                 self.setting_value(line, i, flag, value)
             else:
                 self.diagnostics.warning(self.at(line, i), f"unknown setting {quoted(token.text)} ignored: "
-                                         "expected VIS, TRACE, EYESIM6PSD, PSDNOISE=<mm> or SEED=<n>", "unknown-setting")
+                                         "expected VIS, TRACE, EYESIM6PSD, PSDNOISE=<mm>, SEED=<n> or CALLTIME=<ms>", "unknown-setting")
 
     def setting_value(self, line: Line, index: int, flag: str, text: str) -> None:
         field, expected = SETTING_VALUES[flag]
@@ -126,7 +128,8 @@ class _SceneReader(KeywordReader):
         if not text:
             self.error(line, f"settings: {flag.upper()} needs a value: {flag.upper()}=<{expected}>", index, "bad-value")
             return
-        if value is None or (field == "psd_noise" and value < 0):
+        if value is None or (field == "psd_noise" and value < 0) or \
+                (field == "call_time" and not 0 <= value <= MAX_CALL_TIME_MS):
             self.error(line, f"settings: {flag.upper()} expects {expected}, found {quoted(text)}", index, "bad-value")
             return
         self.values[field] = value
@@ -230,6 +233,8 @@ def write_sim(document: SimDocument) -> str:
         flags.append(f"PSDNOISE={f(settings.psd_noise)}")
     if settings.seed:
         flags.append(f"SEED={settings.seed}")
+    if settings.call_time is not None:
+        flags.append(f"CALLTIME={f(settings.call_time)}")
     if flags:
         out.append("settings " + " ".join(flags))
     out += [f"robot {quote_token(r.path)}" for r in document.robot_files]

@@ -58,6 +58,7 @@ typedef enum { ES_T_END = 0, ES_T_I32 = 1, ES_T_U32 = 2, ES_T_F64 = 3, ES_T_STR 
 #define ES_OP_OS_MACHINE_NAME 1027
 #define ES_OP_OS_MACHINE_ID 1028
 #define ES_OP_OS_MACHINE_TYPE 1029
+#define ES_OP_OS_SLEEP 1030
 #define ES_OP_TIMER_ATTACH 1281
 #define ES_OP_TIMER_DETACH 1282
 #define ES_OP_TIMER_WAIT 1283
@@ -169,6 +170,7 @@ static const es_op_layout ES_OP_LAYOUTS[] = {
     {1027, "OS_MACHINE_NAME", 0, {ES_T_END}, 1, {ES_T_STR}},
     {1028, "OS_MACHINE_ID", 0, {ES_T_END}, 1, {ES_T_I32}},
     {1029, "OS_MACHINE_TYPE", 0, {ES_T_END}, 1, {ES_T_I32}},
+    {1030, "OS_SLEEP", 2, {ES_T_U32, ES_T_U32}, 1, {ES_T_I32}},
     {1281, "TIMER_ATTACH", 1, {ES_T_I32}, 1, {ES_T_I32}},
     {1282, "TIMER_DETACH", 1, {ES_T_I32}, 1, {ES_T_I32}},
     {1283, "TIMER_WAIT", 0, {ES_T_END}, 1, {ES_T_I32S}},
@@ -236,7 +238,7 @@ static const es_op_layout ES_OP_LAYOUTS[] = {
     {4101, "SIM_GET_ROBOT_COUNT", 0, {ES_T_END}, 1, {ES_T_I32}},
     {4102, "SIM_GET_OBJECT_COUNT", 0, {ES_T_END}, 1, {ES_T_I32}},
 };
-#define ES_OP_COUNT 100
+#define ES_OP_COUNT 101
 static const es_type ES_ERROR_LAYOUT[] = {ES_T_I32, ES_T_STR};
 
 #endif

@@ -18,11 +18,17 @@
 #include <sys/socket.h>
 #include <time.h>
 #include <unistd.h>
+#if defined(__linux__)
+#include <dirent.h>
+#include <sys/syscall.h>
+#endif
 
 #define DEFAULT_CONNECT_TIMEOUT_S 10.0
 #define MIN_HANDSHAKE_TIMEOUT_S 5.0 /* a busy simulator may take a moment to answer HELLO */
 #define RETRY_INTERVAL_MS 100
 #define REPORTED_ERRORS_MAX 64
+#define WATCH_INTERVAL_MS 20 /* how often the watcher looks whether the program's own threads are gone */
+#define LIBRARY_THREADS_MAX 4
 
 #ifndef MSG_NOSIGNAL
 #define MSG_NOSIGNAL 0 /* macOS: SO_NOSIGPIPE is set on the socket instead */
@@ -61,6 +67,10 @@ static uint32_t reported[REPORTED_ERRORS_MAX];
 static unsigned reported_count;
 
 static _Thread_local uint8_t *kept_reply; /* backs text/array results until the thread's next call */
+static _Thread_local bool reader_thread;  /* the thread that delivers replies can never wait for one */
+static atomic_bool connected;             /* the handshake is done */
+
+static atomic_long library_tids[LIBRARY_THREADS_MAX]; /* kernel ids of the library's threads (0 = free) */
 
 /* ---- Ending the program ------------------------------------------------------------------------ */
 
@@ -146,10 +156,11 @@ static int ms_until(double deadline)
     return left <= 0 ? 0 : left > 1e9 ? 1000000000 : (int)ceil(left);
 }
 
+/* A pause in wall time. poll, not nanosleep: libeyesim reroutes nanosleep into simulation time. */
 static void sleep_ms(int ms)
 {
-    struct timespec t = {ms / 1000, (long)(ms % 1000) * 1000000L};
-    while (nanosleep(&t, &t) != 0 && errno == EINTR) {
+    double deadline = now_s() + ms / 1000.0;
+    while (poll(NULL, 0, ms_until(deadline)) < 0 && errno == EINTR) {
     }
 }
 
@@ -291,6 +302,7 @@ static void deliver(uint8_t *body, uint32_t len)
 static void *read_replies(void *unused)
 {
     (void)unused;
+    reader_thread = true;
     for (;;) {
         uint8_t *body;
         uint32_t len;
@@ -307,8 +319,41 @@ static void *read_replies(void *unused)
     }
 }
 
+/* ---- The library's threads ---------------------------------------------------------------------- */
+
+static long thread_id(void)
+{
+#if defined(__linux__)
+    return (long)syscall(SYS_gettid);
+#else
+    return 0;
+#endif
+}
+
+typedef struct {
+    void *(*run)(void *);
+} library_start;
+
+/* Every library thread notes its kernel id first, so the watcher does not count it as the program's. */
+static void *run_library_thread(void *arg)
+{
+    library_start start = *(library_start *)arg;
+    free(arg);
+    long id = thread_id();
+    for (int k = 0; k < LIBRARY_THREADS_MAX; k++) {
+        long free_slot = 0;
+        if (atomic_compare_exchange_strong(&library_tids[k], &free_slot, id))
+            break;
+    }
+    return start.run(NULL);
+}
+
 int es_start_library_thread(void *(*run)(void *))
 {
+    library_start *start = malloc(sizeof *start);
+    if (!start)
+        return ENOMEM;
+    start->run = run;
     /* The library's threads must never run the program's signal handlers: block everything. */
     sigset_t all, old;
     sigfillset(&all);
@@ -317,17 +362,81 @@ int es_start_library_thread(void *(*run)(void *))
     pthread_attr_init(&attr);
     pthread_attr_setdetachstate(&attr, PTHREAD_CREATE_DETACHED);
     pthread_t thread;
-    int rc = pthread_create(&thread, &attr, run, NULL);
+    int rc = pthread_create(&thread, &attr, run_library_thread, start);
     pthread_attr_destroy(&attr);
     pthread_sigmask(SIG_SETMASK, &old, NULL);
+    if (rc)
+        free(start);
     return rc;
 }
 
-static void start_reader(void)
+#if defined(__linux__)
+static bool is_library_thread(long id)
+{
+    for (int k = 0; k < LIBRARY_THREADS_MAX; k++)
+        if (atomic_load(&library_tids[k]) == id)
+            return true;
+    return false;
+}
+
+/* A thread that has ended but is still listed: the main thread after pthread_exit stays a zombie
+ * until the whole process ends. Unreadable means it is gone. */
+static bool thread_ended(const char *id)
+{
+    char path[64], stat[512];
+    snprintf(path, sizeof path, "/proc/self/task/%s/stat", id);
+    FILE *file = fopen(path, "re");
+    if (!file)
+        return true;
+    size_t n = fread(stat, 1, sizeof stat - 1, file);
+    fclose(file);
+    stat[n] = '\0';
+    const char *name_end = strrchr(stat, ')'); /* "tid (name) S ...": the name may hold anything */
+    return !name_end || name_end[1] != ' ' || name_end[2] == 'Z' || name_end[2] == 'X';
+}
+
+/* True while a thread of the program's own (not one of the library's) is alive. */
+static bool program_threads_alive(void)
+{
+    DIR *tasks = opendir("/proc/self/task");
+    if (!tasks)
+        return true; /* cannot tell: keep the program as it is */
+    bool alive = false;
+    struct dirent *entry;
+    while (!alive && (entry = readdir(tasks)))
+        if (entry->d_name[0] != '.' && !is_library_thread(atol(entry->d_name)))
+            alive = !thread_ended(entry->d_name);
+    closedir(tasks);
+    return alive;
+}
+
+/* A process ends when its last thread ends; the library's threads would keep it alive for ever
+ * after a main that ends with pthread_exit (the multitasking examples do). This thread ends the
+ * program once only library threads are left, as the last thread's pthread_exit would have: exit(0),
+ * which flushes output, runs atexit handlers and closes the connection, so the simulator sees the
+ * program end. */
+static void *watch_program(void *unused)
+{
+    (void)unused;
+    for (;;) {
+        sleep_ms(WATCH_INTERVAL_MS);
+        if (!program_threads_alive())
+            exit(0);
+    }
+}
+#endif
+
+static void start_library_threads(void)
 {
     int rc = es_start_library_thread(read_replies);
     if (rc)
         es_fatal(ES_EXIT_PROTOCOL, "cannot start the thread that reads replies (%s)", strerror(rc));
+#if defined(__linux__)
+    rc = es_start_library_thread(watch_program);
+    if (rc)
+        fprintf(stderr, "eyesim: cannot start the thread that ends the program with its own threads (%s)\n",
+                strerror(rc));
+#endif
 }
 
 /* ---- Connecting -------------------------------------------------------------------------------- */
@@ -515,10 +624,16 @@ static void connect_to_simulator(void)
 #endif
     handshake(timeout);
     atexit(note_exit);
-    start_reader();
+    start_library_threads();
+    atomic_store(&connected, true);
 }
 
 /* ---- Calls ------------------------------------------------------------------------------------- */
+
+bool es_may_wait_in_simulation(void)
+{
+    return atomic_load(&connected) && !reader_thread && !atomic_load(&exiting);
+}
 
 static bool has_variable_fields(const es_type *types, unsigned count)
 {

@@ -2,6 +2,7 @@
 #ifndef EYESIM_TRANSPORT_H
 #define EYESIM_TRANSPORT_H
 
+#include <stdbool.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -23,6 +24,10 @@
  * "eyesim: <function>: <reason>", and the caller returns its documented error value.
  * Text or array results point into a reply buffer kept until this thread's next call. */
 int es_call(const char *function, uint16_t op, const es_value *args, es_value *results);
+
+/* True when a sleep of the calling thread may wait in simulation time (sleep.c): the program is
+ * connected, not exiting, and this is not the library's reader thread (which cannot wait for a reply). */
+bool es_may_wait_in_simulation(void);
 
 /* Prints "eyesim: <message>" to stderr and ends the program with `status` (once per process). */
 #if defined(__GNUC__)

@@ -1,8 +1,11 @@
 """The system group: the robot's name, id and type from the scene; the clock in simulation time."""
 
+import pytest
+from support.client import RemoteError
 from support.connected import connected_program
 from support.scenes import arena
 
+from eyesim.engine import DEFAULT_CALL_TIME_US
 from eyesim.protocol import generated as g
 
 
@@ -14,9 +17,24 @@ def test_machine_name_id_and_type_are_the_robots():
 
 
 def test_the_clock_counts_simulation_milliseconds_at_the_documented_cost():
-    with connected_program() as (_sim, client):
+    with connected_program() as (sim, client):
         before = client.call("OS_GET_COUNT")[0]
         client.call("OS_WAIT", 1234)
-        # OS_GET_COUNT costs 0.1 ms, so the clock reads 1234.1 ms later: 1234 whole milliseconds.
-        assert g.OPS_BY_NAME["OS_GET_COUNT"].cost_us == 100
-        assert client.call("OS_GET_COUNT")[0] - before == 1234
+        # OS_GET_COUNT costs the call time (whole ms by default), the wait exactly its 1234 ms.
+        call_ms = sim.call_cost_us(g.OPS_BY_NAME["OS_GET_COUNT"]) / 1000
+        assert call_ms == DEFAULT_CALL_TIME_US / 1000 >= 1
+        assert client.call("OS_GET_COUNT")[0] - before == call_ms + 1234
+
+
+def test_sleep_waits_seconds_and_nanoseconds_of_simulation_time():
+    with connected_program() as (sim, client):
+        call_ms = sim.call_time_us // 1000  # the OS_GET_COUNT before each sleep
+        # 999_999.001 us are rounded up to a whole second: a started microsecond counts, so that
+        # even a 1 ns sleep lets time go on (and the clock stays on whole ms here).
+        for seconds, nanoseconds, waited_ms in ((0, 500_000_000, 500), (2, 0, 2000), (0, 999_999_001, 1000),
+                                                (0, 0, 0)):
+            before = client.call("OS_GET_COUNT")[0]
+            assert client.call("OS_SLEEP", seconds, nanoseconds) == (0,)
+            assert client.call("OS_GET_COUNT")[0] - before == call_ms + waited_ms
+        with pytest.raises(RemoteError, match="sleep: 1000000000 nanoseconds is not below one second"):
+            client.call("OS_SLEEP", 0, 1_000_000_000)

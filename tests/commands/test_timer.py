@@ -22,16 +22,17 @@ def timer_reply(client, request_id):
 
 def test_timers_fire_at_their_period_and_time_stands_still_while_callbacks_run():
     with connected_program() as (sim, client):
+        call_ms = sim.call_time_us // 1000
+        attached_ms = client.call("OS_GET_COUNT")[0] + call_ms  # TIMER_ATTACH comes one call later
         handle = client.call("TIMER_ATTACH", 10)[0]
-        attached_ms = client.call("OS_GET_COUNT")[0]
         wait = client.send("TIMER_WAIT")
-        main = client.send("OS_WAIT", 35)  # the main thread waits 35 ms meanwhile
+        main = client.send("OS_WAIT", 35 - call_ms)  # the main thread waits until 35 ms after attaching
         for tick in range(1, 4):
             assert timer_reply(client, wait) == [handle]
             frozen = sim.time_us
             time.sleep(0.2)  # the "callback" takes a while: simulation time must not run on
             assert sim.time_us == frozen
-            assert client.call("OS_GET_COUNT")[0] - attached_ms in (10 * tick - 1, 10 * tick)
+            assert client.call("OS_GET_COUNT")[0] - attached_ms == 10 * tick  # the callback sees its due time
             wait = client.send("TIMER_WAIT")
         assert client.reply("OS_WAIT", main) == (0,)  # before the 4th tick at 40 ms
         assert 35 <= client.call("OS_GET_COUNT")[0] - attached_ms < 40
@@ -39,7 +40,7 @@ def test_timers_fire_at_their_period_and_time_stands_still_while_callbacks_run()
 
 def test_while_the_main_thread_computes_time_waits_for_it_too():
     with connected_program() as (sim, client):
-        client.call("TIMER_ATTACH", 5)
+        client.call("TIMER_ATTACH", 50)  # due after the calls below (each takes the call time)
         client.send("TIMER_WAIT")
         client.call("OS_GET_COUNT")
         frozen = sim.time_us

@@ -11,6 +11,8 @@ import pytest
 from PIL import Image
 from support.programs import read_trajectory, run_headless
 
+from eyesim.engine import DEFAULT_CALL_TIME_US
+
 from eyesim.robot.components.lcd import HEIGHT, MENU_HEIGHT
 
 DRIVE = """
@@ -103,7 +105,8 @@ def test_python_programs_reach_each_group_of_the_c_library(robios_prefix, tmp_pa
     assert out["printf"] == ["0", "0", "0", "0"]
     assert out["keyread"] == ["0"]
     assert out["keyget"] == ["8"]
-    assert out["wait"][0] == "0" and 250 <= int(out["wait"][1]) <= 251  # simulation time, deterministic
+    # simulation time, deterministic: the wait and the OSGetCount before it (the call time)
+    assert out["wait"][0] == "0" and int(out["wait"][1]) == 250 + DEFAULT_CALL_TIME_US // 1000
     front, back = map(int, out["psd"])
     assert 1300 < front < 1500 and 300 < back < 500  # 2 m arena, the robot at x = 500 facing east
     assert out["setpos"] == ["0", "100", "-200", "90"]
@@ -152,7 +155,7 @@ def test_motors_driving_and_objects(robios_prefix, tmp_path):
     out = {line.split()[0]: line.split()[1:] for line in program_output(result)}
     assert out["motors"] == ["0", "0"]
     assert out["encoders"] == ["True", "True"]
-    assert out["reset"] == ["0", "0"]
+    assert out["reset"][0] == "0" and 0 <= int(out["reset"][1]) <= 20  # the wheel turns on for one call time
     assert out["pid"] == ["0"] * 5
     assert out["servo"] == ["1", "1", "1"]  # the S4 has no servos: the C library says so on stderr
     assert "SERVOSet" in result.stdout + result.stderr

@@ -1,5 +1,7 @@
 """Small scenes built in code for the engine and network tests."""
 
+import dataclasses
+
 from eyesim.scene import load_robot_type
 from eyesim.scene.description import Pose, RobotPlacement, Scene, Wall, World
 
@@ -11,3 +13,8 @@ def arena(robots=((500, 500, 0),), size=2000, inner_walls=()) -> Scene:
     placements = tuple(RobotPlacement(s4.name, Pose(*pose)) for pose in robots)
     return Scene("test-arena", World("test-arena", size, size, walls + tuple(inner_walls)),
                  robot_types={s4.name: s4}, robots=placements)
+
+
+def with_call_time(scene: Scene, ms: float) -> Scene:
+    """The scene with `settings CALLTIME=<ms>`: every ordinary call takes `ms` of simulation time."""
+    return dataclasses.replace(scene, settings=dataclasses.replace(scene.settings, call_time=ms))

@@ -98,12 +98,14 @@ def test_placing_a_robot_moves_its_true_pose_not_its_odometry_even_while_paused(
     assert _yaw(pose["quat"]) == pytest.approx(math.pi / 2, abs=1e-3)
     assert sim.clock.paused
     paused_at = snapshot["time"]
-    assert program.call("SIM_GET_ROBOT", 1)[1:] == (1200, 800, 0, 90)
-    assert program.call("VW_GET_POSITION")[:3] == (0, 0, 0)  # odometry did not notice
+    # Asked while paused; the replies come once simulation time goes on (each call takes the call time).
+    true_pose, odometry = program.send("SIM_GET_ROBOT", 1), program.send("VW_GET_POSITION")
     assert sim.time == paused_at  # placing while paused took no simulation time
 
     run_async(_talk(server.port, [{"type": "resume"}], lambda ms: any(m["type"] == "status" and not m["paused"]
                                                                      for m in ms)))
+    assert program.reply("SIM_GET_ROBOT", true_pose)[1:] == (1200, 800, 0, 90)
+    assert program.reply("VW_GET_POSITION", odometry)[:3] == (0, 0, 0)  # odometry did not notice
     program.close()
 
 
