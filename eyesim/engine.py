@@ -20,12 +20,15 @@ import heapq
 import itertools
 import logging
 import queue
+import struct
 import time
 import traceback
+from collections import deque
 
 from eyesim import commands
 from eyesim.clock import Clock
 from eyesim.events import EventBus
+from eyesim.net.program_server import ProgramSockets
 from eyesim.physics.builder import build_world
 from eyesim.protocol import encode_error, encode_message, generated as g
 from eyesim.robot.component import Component
@@ -53,7 +56,11 @@ class Simulation:
         self.clock = clock or Clock()
         self.step_us = step_us
         self.events = EventBus()
-        self.inbox: queue.SimpleQueue = queue.SimpleQueue()
+        self.inbox: queue.SimpleQueue = queue.SimpleQueue()  # actions from other threads
+        # Program sockets are served on this thread: waiting for the next step means waiting on them.
+        self.network = ProgramSockets(self._deliver, self._connected, self._drop_session)
+        self._ready: deque[Session] = deque()  # realtime: programs with queued requests, served in turn
+        self._running = False
         self.sessions: list[Session] = []
         self.expected_programs: set[int] = set()  # robot ids whose launched program has not connected
         self.stop_when_programs_done = False  # end the run once no program is connected or expected
@@ -104,22 +111,22 @@ class Simulation:
         return self.objects[object_id - 1] if 1 <= object_id <= len(self.objects) else None
 
     # -- entry points for other threads ---------------------------------------------------------
-    def submit(self, request: Request) -> None:
-        self.inbox.put(("request", request))
-
-    def connect(self, session: Session) -> None:
-        self.inbox.put(("connect", session))
-
-    def disconnect(self, session: Session) -> None:
-        self.inbox.put(("disconnect", session))
-
     def call(self, action) -> None:
         """Run `action(sim)` on the simulation thread (browser commands, launcher notices)."""
-        self.inbox.put(("call", action))
+        self.inbox.put(action)
+        self.network.wake()
+
+    def on_loop(self, action) -> None:
+        """Run `action(sim)` on the simulation thread, or at once while no loop runs (setting up and
+        tearing down, before `run` starts and after it ended)."""
+        if self._running:
+            self.call(action)
+        else:
+            action(self)
 
     def stop(self) -> None:
         self._stopping = True
-        self.inbox.put(("wake", None))
+        self.network.wake()
 
     # -- things that happen at a simulation time ------------------------------------------------
     def schedule(self, time_us: int, action) -> None:
@@ -137,6 +144,7 @@ class Simulation:
         """Run until `stop()` or until simulation time reaches `until` seconds."""
         until_us = None if until is None else round(until * 1e6)
         self.clock.anchor(self.time_us)
+        self._running = True
         try:
             while not self._stopping and (until_us is None or self.time_us < until_us):
                 if self.clock.deterministic:
@@ -145,25 +153,33 @@ class Simulation:
                     self._realtime_round()
                 self._publish()
         finally:
+            self._running = False
+            self._drain_inbox()  # actions queued while the loop was ending, e.g. a listener to remove
             self._publish(force=True)
 
     def _realtime_round(self) -> None:
-        if self.clock.paused:  # held replies wait too: their simulation time does not go on
-            self._handle_inbox(block=IDLE_WAIT)
+        if self.clock.paused:  # calls are carried out; held replies wait: their time does not go on
+            self._wait(0 if self._ready else IDLE_WAIT)
+            self._serve()
             return
-        if self.clock.as_fast_as_possible:  # one step per round, with the queue looked at in between
-            self._handle_inbox(block=None)
+        if self.clock.as_fast_as_possible:  # one step per round, each program served once in between
+            self._wait(0)
+            self._serve(rounds=1)
             self.step()
             self._release_held()
             return
         self._release_held()
         wait = self.clock.seconds_until(self.time_us + self.step_us)
         if wait > 0:
-            if self._held:  # due by now (it was not a moment ago): 0, just look at the queue
+            if self._ready:  # serve in turn until the step is due, then look at the sockets again
+                self._serve(deadline=time.perf_counter() + wait)
+                self._wait(0)
+                return
+            if self._held:  # due by now (it was not a moment ago): 0, just look at the sockets
                 wait = max(0.0, min(wait, self.clock.seconds_until(self._held[0][0])))
-            self._handle_inbox(block=min(wait, SNAPSHOT_PERIOD))
+            self._wait(min(wait, SNAPSHOT_PERIOD))
             return
-        self._handle_inbox(block=None)
+        self._wait(0)
         for _ in range(MAX_CATCH_UP_STEPS):
             self.step()
             if self.clock.seconds_until(self.time_us + self.step_us) > 0:
@@ -171,52 +187,71 @@ class Simulation:
         if self.clock.seconds_until(self.time_us) < -0.25:
             self.clock.anchor(self.time_us)  # too far behind (slow machine): don't try to catch up
 
-    def _handle_inbox(self, block: float | None) -> None:
-        """Handle everything queued; with `block`, first wait up to that long for something."""
-        if not block and self.inbox.empty():  # the common case at full speed: no exception raised
-            return
-        try:
-            item = self.inbox.get(timeout=block) if block else self.inbox.get_nowait()
-        except queue.Empty:
-            return
-        while True:
-            self._handle(item)
-            try:
-                item = self.inbox.get_nowait()
-            except queue.Empty:
-                return
+    def _wait(self, timeout: float) -> None:
+        """Wait up to `timeout` s for program sockets or other threads, then take what arrived."""
+        self.network.poll(timeout)
+        self._drain_inbox()
 
-    def _handle(self, item) -> None:
-        kind, payload = item
-        if kind == "request":
-            session = payload.session
-            if session.closed:
-                return
-            session.note_request(time.perf_counter())
-            if self.clock.deterministic and payload.op.code != g.OP_HELLO and session.robot is not None:
-                session.queued.append(payload)
-            else:
-                payload.time_us = max(self.time_us, session.local_time_us)
-                self._execute(payload)
-        elif kind == "connect":
-            payload.local_time_us = self.time_us
-            self.sessions.append(payload)
-        elif kind == "disconnect":
-            self._drop_session(payload)
-        elif kind == "call":
+    def _drain_inbox(self) -> None:
+        while not self.inbox.empty():
+            action = self.inbox.get_nowait()
             try:
-                payload(self)
+                action(self)
             except Exception:
                 log.error("command failed:\n%s", traceback.format_exc())
             self._wake_pending()
 
+    # -- program connections (called by self.network on this thread) ---------------------------------
+    def _connected(self, session: Session) -> None:
+        session.local_time_us = self.time_us
+        self.sessions.append(session)
+
+    def _deliver(self, request: Request) -> None:
+        """A request read from a program's socket. Realtime: served in turn with other programs';
+        deterministic: queued for its time (see _deterministic_round). The handshake, and anything
+        sent before it, is answered at once."""
+        session = request.session
+        if session.closed:
+            return
+        session.note_request(time.perf_counter())
+        if request.op.code == g.OP_HELLO or session.robot is None:
+            request.time_us = max(self.time_us, session.local_time_us)
+            self._execute(request)
+            return
+        if not session.queued and not self.clock.deterministic:
+            self._ready.append(session)
+        session.queued.append(request)
+
+    def _serve(self, rounds: int | None = None, deadline: float | None = None) -> None:
+        """Realtime: carry out queued requests, one program's at a time in turn (a program that
+        pipelines requests gets one turn per round like the rest), for `rounds` rounds or until
+        the wall clock passes `deadline`, or until none are left."""
+        remaining = len(self._ready) * rounds if rounds is not None else None
+        while self._ready and remaining != 0:
+            session = self._ready.popleft()
+            if session.closed or not session.queued:
+                continue
+            self._take_request(session)
+            if session.queued:
+                self._ready.append(session)
+            if remaining is not None:
+                remaining -= 1
+            if deadline is not None and time.perf_counter() >= deadline:
+                return
+
+    def _take_request(self, session: Session, at_us: int | None = None) -> None:
+        request = session.queued.popleft()
+        session.connection.resume()  # room in its queue again
+        request.time_us = max(self.time_us, session.local_time_us) if at_us is None else at_us
+        self._execute(request)
+
     def _deterministic_round(self) -> None:
-        self._handle_inbox(block=None)
+        self._wait(0)
         live = [s for s in self.sessions if s.robot is not None and not s.closed]
         now = time.perf_counter()
         waiting_for = [s for s in live if not s.queued and not s.blocked(now)]
         if waiting_for or self.expected_programs:
-            self._handle_inbox(block=IDLE_WAIT)  # a program is computing: wait for its next call
+            self._wait(IDLE_WAIT)  # a program is computing: wait for its next call
             return
         boundary = self.time_us + self.step_us
         best = None
@@ -235,9 +270,7 @@ class Simulation:
             return
         (at_us, _), session = best
         if session.queued:
-            request = session.queued.popleft()
-            request.time_us = at_us
-            self._execute(request)
+            self._take_request(session, at_us)
         else:
             self._wake_session(session, at_us)
 
@@ -270,12 +303,15 @@ class Simulation:
             elif session.robot is None:
                 raise commands.CommandError("the first request must be the HELLO handshake", g.ERR_NO_HANDSHAKE)
             else:
+                problem = op.out_of_range(request.args)  # protocol.json's ranges, before any work
+                if problem:
+                    raise commands.CommandError(problem, g.ERR_BAD_ARGUMENT)
                 result = commands.HANDLERS[op.code](self, session.robot, request)
         except commands.CommandError as error:
             self._answer(request, encode_error(op.code, request.request_id, error.code, str(error)))
             return
-        except Exception:
-            log.error("handler for %s failed:\n%s", op.name, traceback.format_exc())
+        except Exception:  # a fault stays with its call: the program gets an error, everyone else goes on
+            log.error("handler for %s from %s failed:\n%s", op.name, session.name, traceback.format_exc())
             self._answer(request, encode_error(op.code, request.request_id, g.ERR_BAD_ARGUMENT,
                                                "internal simulator error (see the simulator log)"))
             return
@@ -283,7 +319,18 @@ class Simulation:
             session.pending.append((request, result))
             session.local_time_us = request.time_us
             return
-        self._answer(request, encode_message(op.code, g.KIND_REPLY, request.request_id, result))
+        self._answer(request, self._reply_frame(request, result))
+
+    def _reply_frame(self, request: Request, values: tuple) -> bytes:
+        """The encoded reply; a value that does not fit its field becomes an error reply, never a
+        failure of the simulation thread."""
+        try:
+            return encode_message(request.op.code, g.KIND_REPLY, request.request_id, values)
+        except (struct.error, OverflowError, TypeError, ValueError) as error:
+            log.error("reply to %s from %s does not encode (%s): %r", request.op.name, request.session.name,
+                      error, values)
+            return encode_error(request.op.code, request.request_id, g.ERR_BAD_ARGUMENT,
+                                "the result does not fit the reply (a value out of range)")
 
     def call_cost_us(self, op) -> int:
         """Simulation time an answered call takes: the call time, or the op's own cost when that is
@@ -372,7 +419,7 @@ class Simulation:
                 still.append((request, pending))
                 continue
             session.local_time_us = max(session.local_time_us, at_us)
-            self._send(session, encode_message(request.op.code, g.KIND_REPLY, request.request_id, values))
+            self._send(session, self._reply_frame(request, values))
         session.pending = still
 
     def _send(self, session: Session, frame: bytes) -> None:
@@ -402,6 +449,7 @@ class Simulation:
             self.stop()
 
     def shutdown_sessions(self) -> None:
+        self.network.close_all()
         for session in list(self.sessions):
             session.connection.close()
             self._drop_session(session)

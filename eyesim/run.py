@@ -177,9 +177,8 @@ def simulate(args) -> int:
     if robot_log is not None:
         sim.events.subscribe(robot_log)
 
-    io = IoThread()
-    io.start()
-    server = ProgramServer(sim, io, args.host, args.port)
+    io = None  # the viewer's thread; programs are served by the simulation thread itself
+    server = ProgramServer(sim, args.host, args.port)
     try:
         server.start()
     except OSError as error:
@@ -189,6 +188,8 @@ def simulate(args) -> int:
     if not args.headless:
         from eyesim.web.server import ViewerServer
 
+        io = IoThread()
+        io.start()
         viewer = ViewerServer(sim, io, args.host, args.viewer_port)
         try:
             viewer.start()
@@ -226,7 +227,8 @@ def simulate(args) -> int:
         server.stop()
         if viewer is not None:
             viewer.stop()
-        io.stop()
+        if io is not None:
+            io.stop()
         if recorder is not None:
             recorder.close()
         if robot_log is not None:

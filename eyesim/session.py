@@ -14,11 +14,14 @@ BUSY_WAIT_GRACE = 0.5  # s of wall time; see Session.blocked
 
 
 class Connection(Protocol):
-    """What the engine needs from a transport: thread-safe sending and closing."""
+    """What the engine needs from a transport, on the simulation thread."""
 
     def send(self, data: bytes) -> None: ...
 
     def close(self) -> None: ...
+
+    def resume(self) -> None:
+        """A queued request was taken: there may be room to read more."""
 
 
 @dataclass

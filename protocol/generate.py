@@ -37,6 +37,11 @@ def load() -> tuple[dict, list]:
         if not group * 256 < op["code"] < (group + 1) * 256:
             raise SystemExit(f"{SPEC}: op {op['name']}: code {op['code']} is outside group {op['group']} "
                              f"({group * 256 + 1}..{group * 256 + 255})")
+        fields = {name for name, _ in op["request"]}
+        for name, limits in op.get("ranges", {}).items():
+            if name not in fields or len(limits) != 3 or not limits[0] <= limits[1]:
+                raise SystemExit(f"{SPEC}: op {op['name']}: range of {name!r} must name a request field "
+                                 f"as [low, high, unit]")
         if op["code"] in codes:
             raise SystemExit(f"{SPEC}: op {op['name']}: code {op['code']} is used twice")
         codes.add(op["code"])
@@ -63,10 +68,18 @@ def python_source(spec: dict) -> str:
         out.append(
             f"    {op['code']}: OpSpec({op['name']!r}, {op['code']}, {op['group']!r}, "
             f"{op['cost_us']}, {bool(op.get('blocking', False))}, "
-            f"{tuple(tuple(f) for f in op['request'])!r}, {tuple(tuple(f) for f in op['reply'])!r}),"
+            f"{tuple(tuple(f) for f in op['request'])!r}, {tuple(tuple(f) for f in op['reply'])!r}"
+            f"{ranges_source(op)}),"
         )
     out += ["}", "OPS_BY_NAME = {op.name: op for op in OPS.values()}", ""]
     return "\n".join(out)
+
+
+def ranges_source(op: dict) -> str:
+    """The op's field ranges as (field index, low, high, unit), in request order."""
+    names = [name for name, _ in op["request"]]
+    ranges = tuple((names.index(name), low, high, unit) for name, (low, high, unit) in op.get("ranges", {}).items())
+    return f", {tuple(sorted(ranges))!r}" if ranges else ""
 
 
 def c_types(fields: list) -> str:

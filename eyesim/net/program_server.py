@@ -1,85 +1,89 @@
-"""TCP server for RoBIOS programs: framing and decoding on the I/O thread, work to the simulation.
+"""TCP server for RoBIOS programs, served by the simulation thread itself (docs/architecture.md).
 
-Reading: the asyncio loop on the I/O thread reads each non-blocking socket, reassembles frames per
-connection (a client that sends half a frame and stalls holds up nobody else) and queues complete
-requests for the simulation thread. A malformed request gets an error reply; a frame that breaks
-the framing (oversized, too short) gets an error reply and closes that one connection.
+The simulation thread waits on the program sockets with a selector between physics steps: a
+request is read, decoded, carried out and answered on that one thread, with no hand-off between
+threads (each hand-off cost as much as the loopback round trip itself). Other threads reach the
+simulation through its inbox and wake the selector through a socket pair.
 
-Writing: the simulation thread sends replies straight into the non-blocking socket, which saves a
-thread hop per call; whatever the kernel does not take at once is queued and flushed by the I/O
-loop, so the simulation never waits for a slow reader and replies keep their order."""
+Every socket is non-blocking. A connection reassembles its own frames, so a client that sends half
+a frame and stalls holds up nobody. Replies go straight into the socket; what the kernel does not
+take at once waits in that connection's backlog, flushed when the socket is writable, so the
+simulation never waits for a slow reader. Two limits keep one program from sinking the rest:
+while a connection has MAX_QUEUED requests waiting or more than READ_PAUSE_BACKLOG bytes of
+replies unread, its socket is not read (TCP holds the sender back); a program that stops reading
+its replies for STALL_TIMEOUT, or lets them pile up beyond MAX_BACKLOG, is disconnected with a
+logged reason, and its buffers are given back."""
 
 from __future__ import annotations
 
-import asyncio
 import errno
 import logging
+import selectors
 import socket
-import threading
+import time
 
 from eyesim.protocol import FrameDecoder, ProtocolError, decode_payload, encode_error, generated as g
 from eyesim.session import Request, Session
 
 log = logging.getLogger("eyesim.net")
 READ_SIZE = 256 * 1024
+MAX_QUEUED = 64  # requests of one program waiting for the simulation before its socket rests
+READ_PAUSE_BACKLOG = 1 << 20  # bytes of unread replies before a program's requests are not read
+MAX_BACKLOG = 32 << 20  # bytes of unread replies that close the connection (two largest frames)
+STALL_TIMEOUT = 30.0  # s a program may leave its replies unread (a debugger's breakpoint) before it is dropped
 
 
 class ProgramConnection:
-    """One program's socket. `send` and `close` may be called from any thread."""
+    """One program's socket; used only on the simulation thread."""
 
-    def __init__(self, sim, loop: asyncio.AbstractEventLoop, sock: socket.socket, peer: str):
-        self.sim = sim
-        self.loop = loop
+    def __init__(self, sockets: "ProgramSockets", sock: socket.socket, peer: str):
+        self.sockets = sockets
         self.sock = sock
         self.decoder = FrameDecoder()
-        self._lock = threading.Lock()
-        self._backlog = bytearray()  # bytes the kernel has not taken yet, flushed by the I/O loop
-        self._closed = False
+        self.backlog = bytearray()  # reply bytes the kernel has not taken yet
+        self.closed = False
         self.session = Session(connection=self, peer=peer)
+        self._events = selectors.EVENT_READ
+        self.backlog_progress = 0.0  # wall time (monotonic) the backlog last began or shrank
 
-    def open(self) -> None:
-        self.sim.connect(self.session)
-        self.loop.add_reader(self.sock, self._on_readable)
-
-    # -- any thread ----------------------------------------------------------------------------
+    # -- replies -------------------------------------------------------------------------------
     def send(self, data: bytes) -> None:
-        with self._lock:
-            if self._closed:
-                return
-            if not self._backlog:
-                try:
-                    sent = self.sock.send(data)
-                except BlockingIOError:
-                    sent = 0
-                except OSError:
-                    return  # the reader side notices the broken connection and cleans up
-                if sent == len(data):
-                    return
-                data = data[sent:]
-                self.loop.call_soon_threadsafe(self._watch_writable)
-            self._backlog += data
-
-    def close(self) -> None:
-        self.loop.call_soon_threadsafe(self._shutdown)
-
-    # -- I/O thread ----------------------------------------------------------------------------
-    def _watch_writable(self) -> None:
-        if not self._closed:
-            self.loop.add_writer(self.sock, self._on_writable)
-
-    def _on_writable(self) -> None:
-        with self._lock:
+        if self.closed:
+            return
+        if not self.backlog:
             try:
-                sent = self.sock.send(self._backlog)
+                sent = self.sock.send(data)
             except BlockingIOError:
-                return
+                sent = 0
             except OSError:
-                sent = len(self._backlog)
-            del self._backlog[:sent]
-            if not self._backlog:
-                self.loop.remove_writer(self.sock)
+                return  # reading notices the broken connection and closes it
+            if sent == len(data):
+                return
+            data = memoryview(data)[sent:]
+        if len(self.backlog) + len(data) > MAX_BACKLOG:
+            log.warning("%s: %d bytes of replies unread; closing the connection (the program stopped "
+                        "reading its replies)", self.session.name, len(self.backlog) + len(data))
+            self.close()
+            return
+        if not self.backlog:
+            self.backlog_progress = time.monotonic()
+        self.backlog += data
+        self.update_interest()
 
-    def _on_readable(self) -> None:
+    def flush(self) -> None:
+        try:
+            sent = self.sock.send(self.backlog)
+        except BlockingIOError:
+            return
+        except OSError:
+            sent = len(self.backlog)
+        if sent:
+            self.backlog_progress = time.monotonic()
+        del self.backlog[:sent]
+        self.resume()  # requests held back while the replies piled up
+
+    # -- requests ------------------------------------------------------------------------------
+    def read(self) -> None:
         try:
             data = self.sock.recv(READ_SIZE)
         except BlockingIOError:
@@ -89,17 +93,22 @@ class ProgramConnection:
                 log.warning("%s: %s", self.session.peer, error)
             data = b""
         if not data:
-            self._shutdown()
+            self.close()
             return
+        self._take(data)
+
+    def _take(self, data: bytes) -> None:
+        """Decode requests up to the queue limit; the rest stays buffered until there is room."""
         try:
-            messages = self.decoder.feed(data)
+            messages = self.decoder.feed(data, limit=MAX_QUEUED - len(self.session.queued))
         except ProtocolError as error:
             log.warning("%s: %s; closing the connection", self.session.peer, error)
             self.send(encode_error(0, 0, error.code, str(error)))
-            self._shutdown(flush=True)
+            self.close(flush=True)
             return
         for message in messages:
             self._dispatch(message)
+        self.update_interest()
 
     def _dispatch(self, message) -> None:
         op = g.OPS.get(message.op)
@@ -109,44 +118,157 @@ class ProgramConnection:
             return
         if message.kind != g.KIND_REQUEST:
             self.send(encode_error(message.op, message.request_id, g.ERR_BAD_FRAME,
-                                   f"{op.name}: programs may only send requests (kind {g.KIND_REQUEST}), "
-                                   f"not kind {message.kind}"))
+                                   f"programs may only send requests (kind {g.KIND_REQUEST}), not kind {message.kind}"))
             return
         try:
             args = decode_payload(op.request, message.payload)
         except ProtocolError as error:
-            self.send(encode_error(message.op, message.request_id, error.code, f"{op.name}: {error}"))
+            self.send(encode_error(message.op, message.request_id, error.code, str(error)))
             return
-        self.sim.submit(Request(self.session, op, message.request_id, args))
+        self.sockets.deliver(Request(self.session, op, message.request_id, args))
 
-    def _shutdown(self, flush: bool = False) -> None:
-        with self._lock:
-            if self._closed:
-                return
-            self._closed = True
-            if flush and self._backlog:
-                try:
-                    self.sock.setblocking(True)
-                    self.sock.settimeout(1.0)
-                    self.sock.sendall(self._backlog)
-                except OSError:
-                    pass
-        self.loop.remove_reader(self.sock)
-        self.loop.remove_writer(self.sock)
+    # -- selector interest -----------------------------------------------------------------------
+    def resume(self) -> None:
+        """The simulation took a request: decode what is buffered, and read again when there is room."""
+        if not self.closed and self.decoder.pending_bytes and self._has_room():
+            self._take(b"")
+        self.update_interest()
+
+    def _has_room(self) -> bool:
+        return len(self.session.queued) < MAX_QUEUED and len(self.backlog) < READ_PAUSE_BACKLOG
+
+    def update_interest(self) -> None:
+        """Read while the program's queue and unread replies are small; write while replies wait."""
+        if self.closed:
+            return
+        events = 0
+        if self._has_room():
+            events |= selectors.EVENT_READ
+        if self.backlog:
+            events |= selectors.EVENT_WRITE
+        if events == self._events:
+            return
+        selector = self.sockets.selector
+        if not self._events:
+            selector.register(self.sock, events, self)
+        elif not events:
+            selector.unregister(self.sock)
+        else:
+            selector.modify(self.sock, events, self)
+        self._events = events
+
+    def close(self, flush: bool = False) -> None:
+        if self.closed:
+            return
+        self.closed = True
+        if flush and self.backlog:
+            try:
+                self.sock.setblocking(True)
+                self.sock.settimeout(1.0)
+                self.sock.sendall(self.backlog)
+            except OSError:
+                pass
+        self.backlog = bytearray()  # given back at once, not when the session is forgotten
+        if self._events:
+            self.sockets.selector.unregister(self.sock)
+            self._events = 0
         self.sock.close()
-        self.sim.disconnect(self.session)
+        self.sockets.closed(self)
+
+
+class ProgramSockets:
+    """The selector the simulation thread waits on: listeners, program connections and a wake-up
+    socket pair for the other threads. `deliver(request)`, `connected(session)` and
+    `disconnected(session)` are the simulation's, called on its thread."""
+
+    def __init__(self, deliver, connected, disconnected):
+        self.selector = selectors.DefaultSelector()
+        self.deliver = deliver
+        self._connected = connected
+        self._disconnected = disconnected
+        self._wake_read, self._wake_write = socket.socketpair()
+        self._wake_read.setblocking(False)
+        self._wake_write.setblocking(False)
+        self.selector.register(self._wake_read, selectors.EVENT_READ, None)
+        self.connections: set[ProgramConnection] = set()
+        self._last_stall_check = time.monotonic()
+
+    def wake(self) -> None:
+        """Any thread: make a waiting `poll` return."""
+        try:
+            self._wake_write.send(b"\0")
+        except (BlockingIOError, OSError):
+            pass  # already woken (the pair's buffer is full) or shut down
+
+    def add_listener(self, listener: socket.socket) -> None:
+        self.selector.register(listener, selectors.EVENT_READ, listener)
+
+    def remove_listener(self, listener: socket.socket) -> None:
+        self.selector.unregister(listener)
+        listener.close()
+
+    def poll(self, timeout: float | None) -> None:
+        """Wait up to `timeout` seconds (0: just look) for sockets, then serve what is ready."""
+        for key, events in self.selector.select(timeout):
+            target = key.data
+            if target is None:
+                self._drain_wake()
+            elif isinstance(target, socket.socket):
+                self._accept(target)
+            else:
+                if events & selectors.EVENT_WRITE and not target.closed:
+                    target.flush()
+                if events & selectors.EVENT_READ and not target.closed:
+                    target.read()
+        now = time.monotonic()
+        if now - self._last_stall_check >= 1.0:
+            self._last_stall_check = now
+            self._drop_stalled(now)
+
+    def _drop_stalled(self, now: float) -> None:
+        for connection in list(self.connections):
+            if connection.backlog and now - connection.backlog_progress > STALL_TIMEOUT:
+                log.warning("%s: has not read its replies for %.0f s (%d bytes waiting); closing the connection",
+                            connection.session.name, now - connection.backlog_progress, len(connection.backlog))
+                connection.close()
+
+    def _drain_wake(self) -> None:
+        try:
+            while self._wake_read.recv(4096):
+                pass
+        except (BlockingIOError, OSError):
+            pass
+
+    def _accept(self, listener: socket.socket) -> None:
+        try:
+            sock, address = listener.accept()
+        except (BlockingIOError, OSError):
+            return
+        sock.setblocking(False)
+        sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+        connection = ProgramConnection(self, sock, f"{address[0]}:{address[1]}")
+        self.connections.add(connection)
+        self.selector.register(sock, selectors.EVENT_READ, connection)
+        self._connected(connection.session)
+
+    def closed(self, connection: ProgramConnection) -> None:
+        self.connections.discard(connection)
+        self._disconnected(connection.session)
+
+    def close_all(self) -> None:
+        for connection in list(self.connections):
+            connection.close()
 
 
 class ProgramServer:
-    """Listens for programs on host:port (port 0 = any free port; see `port` once started)."""
+    """Listens for programs on host:port (port 0 = any free port; see `port` once started). The
+    simulation thread accepts and serves the connections (see ProgramSockets)."""
 
-    def __init__(self, sim, io_thread, host: str = g.DEFAULT_HOST, port: int = g.DEFAULT_PORT):
+    def __init__(self, sim, host: str = g.DEFAULT_HOST, port: int = g.DEFAULT_PORT):
         self.sim = sim
-        self.io = io_thread
         self.host = host
         self.port = port
         self._listener: socket.socket | None = None
-        self._accepting: asyncio.Task | None = None
 
     def start(self) -> None:
         """Bind and start accepting; raises OSError (e.g. port in use) in the caller's thread."""
@@ -154,25 +276,9 @@ class ProgramServer:
         listener.setblocking(False)
         self._listener = listener
         self.port = listener.getsockname()[1]
-        self.io.run(self._start())
-
-    async def _start(self) -> None:
-        self._accepting = asyncio.get_running_loop().create_task(self._accept_loop())
-
-    async def _accept_loop(self) -> None:
-        loop = asyncio.get_running_loop()
-        while True:
-            sock, address = await loop.sock_accept(self._listener)
-            sock.setblocking(False)
-            sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
-            connection = ProgramConnection(self.sim, loop, sock, f"{address[0]}:{address[1]}")
-            connection.open()
+        self.sim.on_loop(lambda sim: sim.network.add_listener(listener))
 
     def stop(self) -> None:
         if self._listener is not None:
-            self.io.run(self._stop())
-
-    async def _stop(self) -> None:
-        if self._accepting is not None:
-            self._accepting.cancel()
-        self._listener.close()
+            listener, self._listener = self._listener, None
+            self.sim.on_loop(lambda sim: sim.network.remove_listener(listener))

@@ -129,15 +129,16 @@ class FrameDecoder:
         self._buffer = bytearray()
         self._max_frame = max_frame
 
-    def feed(self, data: bytes) -> list[Message]:
-        """Add received bytes; return the complete messages they finish, in order.
+    def feed(self, data: bytes, limit: int | None = None) -> list[Message]:
+        """Add received bytes; return the complete messages they finish, in order, at most `limit`
+        of them (the rest stay buffered: feed b"" later to take them).
 
         Raises ProtocolError(BAD_FRAME) when a frame announces a size beyond the limit."""
         self._buffer += data
         messages = []
         buf = self._buffer
         pos = 0
-        while len(buf) - pos >= 4:
+        while len(buf) - pos >= 4 and (limit is None or len(messages) < limit):
             (length,) = _LEN.unpack_from(buf, pos)
             if length > self._max_frame or length < _HEADER.size:
                 raise ProtocolError(g.ERR_BAD_FRAME,

@@ -32,7 +32,8 @@ class Robot:
         self.placement = placement
         self.body_name = body_name
         self.mounted = mounted
-        self.components: list[Component] = []
+        self.components: list[Component] = []  # complete once built (robot/build.py)
+        self._of_class: dict[type, list] = {}  # components_of, looked up on every call of a handler
         self.part_names: list[str] = []
         self.shown_part_names: list[str] = []
         self.motors: dict = {}
@@ -43,6 +44,7 @@ class Robot:
 
     def bind(self, world: PhysicsWorld) -> None:
         self.world = world
+        self._of_class = {}  # the components are complete now
         self.body = world.body_id(self.body_name)
         self.shown_parts = [world.body_id(name) for name in self.shown_part_names]
         for component in self.components:
@@ -53,13 +55,14 @@ class Robot:
 
     def component(self, cls: type[C]) -> C | None:
         """The robot's first component of a class, or None when it has none."""
-        for component in self.components:
-            if isinstance(component, cls):
-                return component
-        return None
+        found = self.components_of(cls)
+        return found[0] if found else None
 
     def components_of(self, cls: type[C]) -> list[C]:
-        return [c for c in self.components if isinstance(c, cls)]
+        found = self._of_class.get(cls)
+        if found is None:
+            found = self._of_class[cls] = [c for c in self.components if isinstance(c, cls)]
+        return found
 
     def pose(self) -> tuple[float, float, float, float]:
         """True pose: x, y, z in metres (z of the floor-level origin), heading in radians."""

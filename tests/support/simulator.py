@@ -1,4 +1,4 @@
-"""An in-process simulator (engine + program server on their own threads) for tests."""
+"""An in-process simulator (the engine, serving its program sockets, on a thread of its own) for tests."""
 
 from __future__ import annotations
 
@@ -7,7 +7,6 @@ import threading
 
 from eyesim.clock import Clock
 from eyesim.engine import Simulation
-from eyesim.net.io_thread import IoThread
 from eyesim.net.program_server import ProgramServer
 
 
@@ -19,9 +18,7 @@ def running_simulation(scene, mode: str = "realtime", speed: float = 1.0, expect
     does for the programs `eyesim run` launches."""
     sim = Simulation(scene, Clock(mode, speed))
     sim.expected_programs.update(expect)
-    io = IoThread()
-    io.start()
-    server = ProgramServer(sim, io, "127.0.0.1", 0)
+    server = ProgramServer(sim, "127.0.0.1", 0)
     server.start()
     errors = []
 
@@ -40,5 +37,4 @@ def running_simulation(scene, mode: str = "realtime", speed: float = 1.0, expect
         thread.join(timeout=10)
         sim.shutdown_sessions()
         server.stop()
-        io.stop()
     assert not errors, errors
