@@ -131,7 +131,7 @@ def test_bad_arguments_raise_clear_python_errors(robios_prefix, tmp_path, call, 
 MOTION = """
     from eye import *
 
-    print("motors", MOTORDrive(1, 60), MOTORDrive(2, 60))
+    print("motors", MOTORDrive(1, 20), MOTORDrive(2, 20))  # slowly: the manoeuvres below need room
     OSWait(500)
     print("encoders", ENCODERRead(1) > 0, ENCODERRead(2) > 0)
     print("reset", ENCODERReset(1), ENCODERRead(1))
@@ -155,8 +155,8 @@ def test_motors_driving_and_objects(robios_prefix, tmp_path):
     out = {line.split()[0]: line.split()[1:] for line in program_output(result)}
     assert out["motors"] == ["0", "0"]
     assert out["encoders"] == ["True", "True"]
-    # the wheel turns on for one call time: 60% of 3600 deg/s for 4 ms is 26 ticks of 1100 a turn
-    assert out["reset"][0] == "0" and 0 <= int(out["reset"][1]) <= 30
+    # the wheel turns on for one call time: 20% of 3600 deg/s for 4 ms is 9 ticks of 1100 a turn
+    assert out["reset"][0] == "0" and 0 <= int(out["reset"][1]) <= 12
     assert out["pid"] == ["0"] * 5
     assert out["servo"] == ["1", "1", "1"]  # the S4 has no servos: the C library says so on stderr
     assert "SERVOSet" in result.stdout + result.stderr
