@@ -59,6 +59,8 @@ class Simulation:
         self._lcd_sent: dict[int, int] = {}
         self._camera_sent: dict[int, int] = {}
         self.step_observers: list = []  # called as observer(sim) after every physics step
+        # called as observer(robot, request, reply) after a request was answered at once (recorders)
+        self.request_observers: list = []
         self._build()
 
     # -- building ------------------------------------------------------------------------------
@@ -121,6 +123,7 @@ class Simulation:
         if robot is None:
             raise ValueError(f"no robot {robot_id}")
         robot.component(Keys).press(key)
+        self.events.input(robot_id, "key", key=key)
 
     # -- the loop --------------------------------------------------------------------------------
     def run(self, until: float | None = None) -> None:
@@ -136,6 +139,11 @@ class Simulation:
                 self._publish()
         finally:
             self._publish(force=True)
+
+    def handle_queued(self) -> None:
+        """Handle what is still queued after the loop ended (the last console lines, program exits),
+        so observers such as recorders see them."""
+        self._handle_inbox(block=None)
 
     def _realtime_round(self) -> None:
         if self.clock.paused:
@@ -273,6 +281,8 @@ class Simulation:
             return
         session.local_time_us = request.time_us + op.cost_us
         self._send(session, encode_message(op.code, g.KIND_REPLY, request.request_id, result))
+        for observer in self.request_observers:
+            observer(session.robot, request, result)
 
     def _hello(self, request: Request) -> tuple:
         version, selector, program, pid = request.args

@@ -47,7 +47,11 @@ def register(subparsers) -> None:
     parser.add_argument("--seed", type=int, help="seed of the simulator's random numbers (default: the scene's SEED, else 0)")
     parser.add_argument("--eyesim6-psd", action="store_true",
                         help="number PSDs as EyeSim 6 programs do: 1 left, 2 front (as the scene setting EYESIM6PSD)")
-    parser.add_argument("--record", metavar="CSV", help="write every robot's true pose every 10 ms to CSV")
+    parser.add_argument("--record", action="append", default=[], metavar="FILE",
+                        help="record the run: FILE.mcap (poses, sensors, LCDs, console, ...; docs/recording.md) "
+                        "or FILE.csv (every robot's true pose every 10 ms); repeatable")
+    parser.add_argument("--record-rate", type=float, default=None, metavar="HZ",
+                        help="pose samples per simulated second in an .mcap recording (default 100)")
     parser.add_argument("--save-lcd", metavar="DIR", help="at the end, save each robot's LCD as DIR/robot<id>-lcd.png")
     parser.add_argument("--open", action="store_true", help="open the viewer in a web browser")
     parser.add_argument("--verbose", "-v", action="store_true", help="log connections and internal events")
@@ -196,12 +200,7 @@ def simulate(args) -> int:
     print(f"EyeSim: {len(sim.robots)} robot(s), programs connect to {args.host}:{server.port} "
           f"({mode} clock{'' if speed == 1 else f', speed {args.speed}'})", flush=True)
 
-    recorder = None
-    if args.record:
-        from eyesim.record import TrajectoryRecorder
-
-        recorder = TrajectoryRecorder(args.record)
-        sim.step_observers.append(recorder)
+    recorders = start_recorders(sim, args)
     launcher = Launcher(sim, args.host, server.port)
     for robot_id, path in sorted(programs.items()):
         launcher.start(robot_id, path)
@@ -215,11 +214,12 @@ def simulate(args) -> int:
     finally:
         launcher.stop_all(let_finish=5.0 if sim.stop_when_programs_done else 0.0)
         sim.shutdown_sessions()
+        sim.handle_queued()
         server.stop()
         if viewer is not None:
             viewer.stop()
         io.stop()
-        if recorder is not None:
+        for recorder in recorders:
             recorder.close()
         if robot_log is not None:
             robot_log.flush()
@@ -233,6 +233,31 @@ def simulate(args) -> int:
         for robot in sim.robots:
             print(status_line(robot, runs.get(robot.id)))
     return 1 if any(run.failed for run in launcher.runs) else 0
+
+
+def start_recorders(sim, args) -> list:
+    """One recorder per --record file: MCAP for .mcap, the trajectory CSV for anything else."""
+    from eyesim.record import Recorder, TrajectoryRecorder
+    from eyesim.record.mcap_recorder import DEFAULT_POSE_RATE
+
+    if args.record_rate is not None and not any(p.lower().endswith(".mcap") for p in args.record):
+        raise UsageError("--record-rate applies to .mcap recordings: add --record FILE.mcap")
+    recorders = []
+    try:
+        for path in args.record:
+            if path.lower().endswith(".mcap"):
+                rate = DEFAULT_POSE_RATE if args.record_rate is None else args.record_rate
+                recorders.append(Recorder(sim, path, pose_rate=rate))
+            else:
+                recorders.append(TrajectoryRecorder(path))
+                sim.step_observers.append(recorders[-1])
+    except (ValueError, OSError) as error:
+        for recorder in recorders:
+            recorder.close()
+        if isinstance(error, ValueError):
+            raise UsageError(f"--record-rate: {error}") from None
+        raise UsageError(f"--record: cannot write {error.filename}: {error.strerror}") from None
+    return recorders
 
 
 def _has_display() -> bool:

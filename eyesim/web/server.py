@@ -34,6 +34,7 @@ CONSOLE_BACKLOG = 500  # console chunks per robot replayed to a browser that con
 CAMERA_VIEW_WIDTH = 320  # pixels: larger camera images are sent to the viewer scaled down by a whole factor
 MIN_SPEED, MAX_SPEED = 0.01, 1000.0  # realtime factors a browser may set ('max' for as fast as possible)
 MAX_COMMAND_BYTES = 64 * 1024  # a browser command is a small JSON object; larger ones close the socket
+RECORDER_ONLY = ("input", "edit")  # events for recordings (eyesim/record); browsers see their effects
 TEXTURE_TYPES = {"PNG": "image/png", "JPEG": "image/jpeg", "BMP": "image/bmp", "GIF": "image/gif"}
 
 
@@ -113,6 +114,8 @@ class ViewerHub:
     # -- I/O loop ----------------------------------------------------------------------------
     def _event(self, message: dict) -> None:
         kind = message["type"]
+        if kind in RECORDER_ONLY:
+            return
         if kind == "lcd":
             robot, pixels = message["robot"], message["pixels"]
             future = self.loop.run_in_executor(self.encoder, _lcd_message, robot, pixels)
