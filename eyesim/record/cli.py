@@ -15,6 +15,14 @@ def register(subparsers) -> None:
     export.add_argument("--csv", required=True, metavar="FILE", help="the CSV file to write")
     export.set_defaults(func=export_main)
 
+    replay = subparsers.add_parser("replay", help="watch a recording in the browser viewer, with a timeline",
+                                   description="Serve the viewer over a recording: play, pause, scrub, plot.")
+    replay.add_argument("recording", help="an .mcap file made with eyesim run --record")
+    replay.add_argument("--host", default="127.0.0.1", help="address to serve on (default 127.0.0.1)")
+    replay.add_argument("--viewer-port", type=int, default=8080, help="port of the viewer (default 8080; 0 = any free port)")
+    replay.add_argument("--open", action="store_true", help="open the viewer in a web browser")
+    replay.set_defaults(func=replay_main)
+
 
 def open_recording(path: str, command: str) -> Recording | None:
     """The recording, or None after printing why it cannot be read."""
@@ -38,4 +46,32 @@ def export_main(args) -> int:
             print(f"eyesim export: cannot write {args.csv}: {error.strerror}", file=sys.stderr)
             return 2
     print(f"eyesim export: {rows} rows to {args.csv}")
+    return 0
+
+
+def replay_main(args) -> int:
+    import asyncio
+    import webbrowser
+
+    from eyesim.run import _has_display
+    from eyesim.web.replay_server import serve
+
+    recording = open_recording(args.recording, "replay")
+    if recording is None:
+        return 2
+
+    def ready(server) -> None:
+        print(f"EyeSim replay of {recording.path.name} ({recording.duration_s:.1f} s): {server.url}", flush=True)
+        if args.open and _has_display():
+            webbrowser.open(server.url)
+
+    with recording:
+        try:
+            asyncio.run(serve(recording, args.host, args.viewer_port, ready))
+        except OSError as error:
+            print(f"eyesim replay: cannot serve on port {args.viewer_port}: {error.strerror} (try --viewer-port 0)",
+                  file=sys.stderr)
+            return 2
+        except KeyboardInterrupt:
+            pass
     return 0

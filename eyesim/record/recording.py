@@ -149,10 +149,10 @@ class Recording:
         values = self.poses[index, column]
         return values[:3].tolist(), values[3:].tolist()
 
-    def robot_track(self, robot_id: int) -> np.ndarray:
-        """(N, 7) poses of a robot over all samples: x, y, z, qw, qx, qy, qz."""
+    def robot_track(self, robot_id: int) -> tuple[list[int], np.ndarray]:
+        """Sample times and (N, 7) poses of a robot over the whole recording: x, y, z, qw, qx, qy, qz."""
         column = self._frames.get(schemas.robot_frame(robot_id))
-        return self.poses[:, column] if column is not None else np.zeros((0, 7))
+        return (self.pose_times, self.poses[:, column]) if column is not None else ([], np.zeros((0, 7)))
 
     def snapshot_at(self, time_us: int) -> dict | None:
         """The viewer's `snapshot` message as it was at `time_us`, or None before any pose sample."""
