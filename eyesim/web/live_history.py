@@ -91,9 +91,10 @@ class LiveHistory:
         return times, np.array(rows, dtype=float).reshape(len(rows), 7)
 
     def image_time(self, robot_id: int, kind: str, time_us: int) -> int | None:
+        """None before the first image kept: images are only made while a browser watches."""
         images = self.images.get((robot_id, kind), [])
         index = bisect.bisect_right(images, time_us, key=lambda s: s[0]) - 1
-        return images[max(index, 0)][0] if images else None
+        return images[index][0] if index >= 0 else None
 
     def image_message(self, robot_id: int, kind: str, image_us: int):
         images = self.images[(robot_id, kind)]
