@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import subprocess
+from pathlib import Path
 
 import pytest
 from mcap.writer import Writer
@@ -65,8 +66,13 @@ def test_every_kind_of_bad_file_has_its_own_clear_error(good, tmp_path):
 
 
 def test_the_commands_say_what_is_wrong_without_a_traceback(good, tmp_path):
-    for path, text in broken_files(good, tmp_path).items():
-        for command in (["export", str(path), "--csv", str(tmp_path / "out.csv")],):
-            result = subprocess.run(eyesim_command(*command), capture_output=True, text=True, cwd=tmp_path)
-            assert result.returncode == 2, (path, result.stderr)
-            assert text in result.stderr and "Traceback" not in result.stderr, result.stderr
+    files = broken_files(good, tmp_path)
+    commands = [["export", str(path), "--csv", str(tmp_path / "out.csv")] for path in files]
+    some = [path for path in files if path.name in ("truncated.mcap", "notes.mcap")]
+    commands += [[name, str(path), *extra] for path in some for name, *extra in
+                 (["plot", "-o", "p.png"], ["render", "-o", "v.mp4"], ["replay", "--viewer-port", "0"])]
+    for command in commands:
+        result = subprocess.run(eyesim_command(*command), capture_output=True, text=True, cwd=tmp_path)
+        text = files[Path(command[1])]
+        assert result.returncode == 2, (command, result.stderr)
+        assert text in result.stderr and "Traceback" not in result.stderr, result.stderr
