@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import json
+import math
+import re
 import subprocess
 
 import jsonschema
@@ -73,7 +75,7 @@ def test_the_recording_ends_with_the_lcd_the_run_ended_with(recorded):
         png = recording.image(1, "lcd", last)
     assert png["format"] == "png"
     saved = np.asarray(Image.open(recorded / "lcd" / "robot1-lcd.png").convert("RGB"))
-    assert np.array_equal(_decode_png(png["data"]), saved)
+    assert np.array_equal(_decode_image(png["data"]), saved)
 
 
 def test_deterministic_runs_record_the_same_poses_sensors_commands_and_lcds(recorded, tmp_path):
@@ -129,8 +131,9 @@ def test_replayed_poses_and_lcds_equal_the_live_run_at_chosen_times(recorded, tm
             assert snapshot["robots"][0]["pos"] + snapshot["robots"][0]["quat"] == pose
             if time_us % recording_lcd_period(recording) == 0:
                 image = recording.image(1, "lcd", recording.image_time(1, "lcd", time_us))
-                assert np.array_equal(_decode_png(image["data"]), screen), f"LCD at t={time_us / 1e6} s"
-        assert recording.events[-1][1]["event"] == "exited"
+                assert np.array_equal(_decode_image(image["data"]), screen), f"LCD at t={time_us / 1e6} s"
+        programs = [e for _, e in recording.events if e["type"] == "program"]
+        assert [e["event"] for e in programs] == ["started", "exited"] and programs[-1]["exit_code"] == 0
         texts = "".join(e["text"] for e in recording.events_until(1_020_000) if e["type"] == "console")
         assert "step 1\nstep 2\n" in texts and "step 4" not in texts
 
@@ -139,7 +142,56 @@ def recording_lcd_period(recording) -> int:
     return round(1e6 / float(recording.metadata["eyesim"]["lcd_rate_hz"]))
 
 
-def _decode_png(data: str) -> np.ndarray:
+def test_camera_images_and_lidar_scans_are_recorded_as_the_program_saw_them(tmp_path):
+    program = build("record_sensors", tmp_path)
+    result = run_headless("--program", f"1={program}", "--record", "sensors.mcap", cwd=tmp_path)
+    assert result.returncode == 0, result.stdout + result.stderr
+    camera = re.search(r"camera (\d+) (\d+) centre (\d+) (\d+) (\d+)", result.stdout)
+    lidar = re.search(r"lidar ahead (\d+) left (\d+)", result.stdout)
+    assert camera and lidar, result.stdout
+    with open(tmp_path / "sensors.mcap", "rb") as file:
+        messages = {c.topic: json.loads(m.data) for _, c, m in make_reader(file).iter_messages(
+            topics=["/robot/1/camera", "/robot/1/lidar"])}
+    image = messages["/robot/1/camera"]
+    assert image["format"] == "jpeg" and image["frame_id"] == "robot/1"
+    pixels = _decode_image(image["data"])
+    width, height = int(camera.group(1)), int(camera.group(2))
+    assert pixels.shape == (height, width, 3) == (240, 320, 3)
+    centre = pixels[height // 2, width // 2].astype(int)
+    assert np.abs(centre - [int(camera.group(k)) for k in (3, 4, 5)]).max() < 25  # JPEG is close, not exact
+    scan = messages["/robot/1/lidar"]
+    assert len(scan["ranges"]) == 360 and scan["start_angle"] == pytest.approx(math.pi)
+    assert scan["end_angle"] == pytest.approx(math.pi - math.radians(359))
+    assert round(scan["ranges"][180] * 1000) == int(lidar.group(1))  # ahead
+    assert round(scan["ranges"][90] * 1000) == int(lidar.group(2))  # at start_angle - 90 degrees: left
+
+
+def test_inputs_and_viewer_edits_are_recorded(tmp_path):
+    from eyesim import robot_input
+    from eyesim.web import place_command
+
+    sim = Simulation(load_scene(DEFAULT_SCENE), Clock(DETERMINISTIC))
+    sim.schedule(100_000, lambda s: s.press_key(1, 2))
+    sim.schedule(200_000, lambda s: robot_input.touch(s, 1, 100, 50))
+    sim.schedule(300_000, lambda s: robot_input.analog(s, 1, 2, 700))
+    # the viewer's command is checked, then queued: done at the next step boundary
+    sim.schedule(400_000, lambda s: place_command.place(s, {"type": "place", "robot": 1, "x": 1.5, "y": 1.0, "phi": 1.0}))
+    with Recorder(sim, tmp_path / "inputs.mcap"):
+        sim.run(until=1)
+    with open(tmp_path / "inputs.mcap", "rb") as file:
+        found = [(c.topic, m.log_time // 1000, json.loads(m.data)) for _, c, m in make_reader(file).iter_messages(
+            topics=["/robot/1/input", "/edits"])]
+    assert found == [
+        ("/robot/1/input", 100_000, {"robot": 1, "input": "key", "key": 2}),
+        ("/robot/1/input", 200_000, {"robot": 1, "input": "touch", "x": 100, "y": 50}),
+        ("/robot/1/input", 300_000, {"robot": 1, "input": "analog", "channel": 2, "value": 700}),
+        ("/edits", 402_000, {"edit": "place", "robot": 1, "x": 1.5, "y": 1.0, "phi": 1.0}),
+    ]
+    with Recording(tmp_path / "inputs.mcap") as recording:  # and the robot is where it was put
+        assert recording.snapshot_at(500_000)["robots"][0]["pos"][:2] == pytest.approx([1.5, 1.0], abs=1e-3)
+
+
+def _decode_image(data: str) -> np.ndarray:
     import base64
     import io
 
