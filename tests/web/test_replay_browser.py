@@ -160,3 +160,28 @@ def test_a_live_run_can_be_scrubbed_back_and_then_follows_the_present_again(brow
                                "window.eyesimViewer.robotPose(1).time > 2")
         assert viewer.errors == []
         page.close()
+
+
+def test_another_recording_can_be_opened_from_the_page(browser_context, replay, tmp_path):
+    from eyesim.clock import DETERMINISTIC, Clock
+    from eyesim.engine import Simulation
+    from eyesim.record import Recorder
+    from eyesim.scene import DEFAULT_SCENE, load_scene
+
+    sim = Simulation(load_scene(DEFAULT_SCENE), Clock(DETERMINISTIC))  # one robot, half a second
+    with Recorder(sim, tmp_path / "arena.mcap"):
+        sim.run(until=0.5)
+    (tmp_path / "notes.mcap").write_text("time_s,robot\n")
+    viewer = open_viewer(browser_context, replay)
+    page = viewer.page
+    page.wait_for_function("() => window.eyesimViewer.framesShown() >= 1")
+    assert viewer.state("robotIds") == [1, 2, 3]
+    page.set_input_files("#tl-file", str(tmp_path / "notes.mcap"))
+    page.wait_for_function("() => window.eyesimViewer.uploadStatus().includes('not an MCAP file')")
+    assert viewer.state("timeline")["end"] > 2  # still the tour
+    page.set_input_files("#tl-file", str(tmp_path / "arena.mcap"))
+    page.wait_for_function("() => window.eyesimViewer.uploadStatus() === 'showing arena.mcap'")
+    page.wait_for_function("() => window.eyesimViewer.robotIds().length === 1 && window.eyesimViewer.timeline().end === 0.5")
+    assert page.locator("#tl-title").inner_text() == "replay of arena.mcap"
+    assert viewer.errors == []
+    page.close()

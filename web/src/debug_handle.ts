@@ -76,6 +76,8 @@ export interface EyesimViewerDebug {
   lastVideo(): Promise<string | null>;
   /** the 3D view as a PNG data URL, or null without WebGL */
   screenshot(): string | null;
+  /** what sending a recording from the page ended with ("" before any) */
+  uploadStatus(): string;
   /** messages dropped as malformed or of an unknown type */
   ignoredMessages(): number;
 }
@@ -139,6 +141,7 @@ export function installDebugHandle(viewer: Viewer): void {
       return btoa(text);
     },
     screenshot: () => viewer.world.screenshot(),
+    uploadStatus: () => viewer.upload.status,
     ignoredMessages: () => viewer.ignoredMessages,
   };
   window.eyesimViewer = Object.freeze(handle);

@@ -17,6 +17,7 @@ import {
 } from "./protocol";
 import type { RobotPanel } from "./robot_panel";
 import { SceneWarnings } from "./scene_warnings";
+import { RecordingUpload } from "./recording_upload";
 import { download, timedName } from "./snapshot_files";
 import { TimelineBar, type TimelineState } from "./timeline_bar";
 import { Toolbar } from "./toolbar";
@@ -43,6 +44,7 @@ export class Viewer {
   readonly timeline: TimelineBar;
   readonly plots: PlotPanel;
   readonly video: VideoExport;
+  readonly upload: RecordingUpload;
   private readonly toolbar: Toolbar;
   private readonly videoButton: HTMLButtonElement;
   private lastScene: SceneMessage | null = null;
@@ -69,6 +71,7 @@ export class Viewer {
     this.videoButton = elements.timeline.querySelector<HTMLButtonElement>("#tl-video")!;
     this.videoButton.hidden = !VideoExport.supported();
     this.videoButton.addEventListener("click", () => this.toggleVideo());
+    this.upload = new RecordingUpload(elements.timeline);
     elements.toolbar.querySelector("#plots-toggle")?.addEventListener("click", () => this.plots.toggle());
     elements.toolbar.querySelector("#shot-3d")?.addEventListener("click", () => {
       const png = this.world.screenshot();
@@ -158,6 +161,7 @@ export class Viewer {
       case "timeline":
         this.timeline.showTimeline(message);
         this.replay = message.mode === "replay";
+        this.upload.setAvailable(this.replay);
         this.toolbar.setReplay(this.replay, message.name);
         this.panels.setEnabled(!this.replay && this.connection.state === "open");
         this.plots.setLive(message.mode === "live");
