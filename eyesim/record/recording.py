@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import bisect
 import json
-import math
 from collections import defaultdict
 from pathlib import Path
 
@@ -24,11 +23,6 @@ IMAGE_CHANNELS = ("lcd", "camera")
 
 class RecordingError(Exception):
     """The file is missing, not a recording, damaged or truncated: the message says which."""
-
-
-def _yaw(quat) -> float:
-    w, x, y, z = quat
-    return math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
 
 
 class Recording:
