@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import asyncio
 import json
 import re
 import subprocess
@@ -14,6 +13,7 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.programs import eyesim_command  # noqa: E402
+from support.viewer import run_async  # noqa: E402
 from support.recordings import record_tour  # noqa: E402
 
 from eyesim.record import Recording
@@ -27,7 +27,7 @@ def tour(tmp_path_factory):
 
 
 def frame(source, cursor, seconds):
-    return json.loads(asyncio.run(answer(source, cursor, {"type": "seek", "time": seconds})))
+    return json.loads(run_async(answer(source, cursor, {"type": "seek", "time": seconds})))
 
 
 def kinds(message):
@@ -64,19 +64,19 @@ def test_frames_going_forward_carry_what_changed_and_going_back_start_afresh(tou
 def test_signals_series_and_paths(tour):
     with Recording(tour) as recording:
         source, cursor = RecordingTimeline(recording), FrameCursor()
-        signals = json.loads(asyncio.run(answer(source, cursor, {"type": "signals"})))["signals"]
+        signals = json.loads(run_async(answer(source, cursor, {"type": "signals"})))["signals"]
         ids = {s["id"] for s in signals}
         assert {"robot/1/x", "robot/1/phi", "robot/1/v", "robot/1/encoder.2", "robot/2/psd.1", "robot/2/battery"} <= ids
-        series = json.loads(asyncio.run(answer(source, cursor, {"type": "series", "ids": ["robot/1/x", "robot/1/psd.1"]})))
+        series = json.loads(run_async(answer(source, cursor, {"type": "series", "ids": ["robot/1/x", "robot/1/psd.1"]})))
         x, psd = series["series"]
         assert len(x["times"]) == len(recording.pose_times) and x["values"][0] == recording.snapshot_at(0)["robots"][0]["pos"][0]
         assert psd["times"] == [r[0] / 1e6 for r in recording.psd[1]] and len(psd["values"]) == 4
-        paths = json.loads(asyncio.run(answer(source, cursor, {"type": "paths"})))["robots"]
+        paths = json.loads(run_async(answer(source, cursor, {"type": "paths"})))["robots"]
         assert [p["id"] for p in paths] == [1, 2, 3] and len(paths[0]["points"]) == 2 * len(paths[0]["times"]) > 40
         for bad, text in [({"type": "seek", "time": "soon"}, "not a number"), ({"type": "series", "ids": ["robot/9/x"]}, "no signal"),
                           ({"type": "series", "ids": "robot/1/x"}, "must be a list"), ({"type": "jump"}, "unknown message")]:
             with pytest.raises(ValueError, match=text):
-                asyncio.run(answer(source, cursor, bad))
+                run_async(answer(source, cursor, bad))
 
 
 def test_the_live_history_keeps_a_bounded_recent_past():
@@ -102,7 +102,7 @@ def test_replay_server_answers_the_viewer_and_refuses_changes(tour):
                                stderr=subprocess.PIPE, text=True)
     try:
         url = re.search(r"(http://\S+)", process.stdout.readline()).group(1)
-        messages = asyncio.run(_talk(url, [{"type": "pause"}, "not json", {"type": "seek", "time": 1.0}]))
+        messages = run_async(_talk(url, [{"type": "pause"}, "not json", {"type": "seek", "time": 1.0}]))
     finally:
         process.terminate()
         process.wait(timeout=10)
