@@ -76,6 +76,8 @@ class Simulation:
         call_time_ms = scene.settings.call_time
         self.call_time_us = DEFAULT_CALL_TIME_US if call_time_ms is None else round(call_time_ms * 1000)
         self._held: list = []  # realtime: heap of (due_us, seq, session, frame), replies held for the call time
+        # called as observer(robot, request, reply) after a request was answered at once (recorders)
+        self.request_observers: list = []
         self._build()
 
     # -- building ------------------------------------------------------------------------------
@@ -138,6 +140,7 @@ class Simulation:
         if robot is None:
             raise ValueError(f"no robot {robot_id}")
         robot.component(Keys).press(key)
+        self.events.input(robot_id, "key", key=key)
 
     # -- the loop --------------------------------------------------------------------------------
     def run(self, until: float | None = None) -> None:
@@ -156,6 +159,11 @@ class Simulation:
             self._running = False
             self._drain_inbox()  # actions queued while the loop was ending, e.g. a listener to remove
             self._publish(force=True)
+
+    def handle_queued(self) -> None:
+        """Handle what is still queued after the loop ended (the last console lines, program exits),
+        so observers such as recorders see them."""
+        self._drain_inbox()
 
     def _realtime_round(self) -> None:
         if self.clock.paused:  # calls are carried out; held replies wait: their time does not go on
@@ -320,6 +328,8 @@ class Simulation:
             session.local_time_us = request.time_us
             return
         self._answer(request, self._reply_frame(request, result))
+        for observer in self.request_observers:
+            observer(session.robot, request, result)
 
     def _reply_frame(self, request: Request, values: tuple) -> bytes:
         """The encoded reply; a value that does not fit its field becomes an error reply, never a

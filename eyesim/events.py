@@ -59,6 +59,14 @@ class EventBus:
     def sound(self, robot_id: int, sound: dict) -> None:
         self.emit({"type": "audio", "robot": robot_id, **sound})
 
+    def input(self, robot_id: int, kind: str, **values) -> None:
+        """Input from outside (key, touch, irtv, serial, digital, analog): for recorders, not browsers."""
+        self.emit({"type": "input", "robot": robot_id, "input": kind, **values})
+
+    def edit(self, **change) -> None:
+        """A change to the scene from outside (the viewer's `place`): for recorders, not browsers."""
+        self.emit({"type": "edit", **change})
+
     def io(self, robot) -> None:
         from eyesim.robot.components.analog_io import AnalogInputs
         from eyesim.robot.components.digital_io import LINES, DigitalLines

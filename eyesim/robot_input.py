@@ -33,23 +33,28 @@ def touch(sim, robot_id: int, x: int, y: int) -> None:
         keys.press(key)
     else:
         keys.touch(x, y)
+    sim.events.input(robot_id, "touch", x=x, y=y)
 
 
 def irtv(sim, robot_id: int, code: int) -> None:
     _part(sim, robot_id, IrReceiver, "IR receiver")[1].receive(code)
+    sim.events.input(robot_id, "irtv", code=code)
 
 
 def serial(sim, robot_id: int, interface: int, data: bytes) -> None:
     _part(sim, robot_id, SerialPorts, "serial interfaces")[1].deliver(interface, data)
+    sim.events.input(robot_id, "serial", interface=interface, text=data.decode("latin-1"))
 
 
 def digital(sim, robot_id: int, line: int, level: int | None) -> None:
     robot, lines = _part(sim, robot_id, DigitalLines, "digital I/O")
     lines.drive(line, level)
+    sim.events.input(robot_id, "digital", line=line, level=level)
     sim.events.io(robot)
 
 
 def analog(sim, robot_id: int, channel: int, value: int) -> None:
     robot, inputs = _part(sim, robot_id, AnalogInputs, "analog inputs")
     inputs.set_value(channel, value, sim.time_us)
+    sim.events.input(robot_id, "analog", channel=channel, value=value)
     sim.events.io(robot)

@@ -51,7 +51,11 @@ def register(subparsers) -> None:
     parser.add_argument("--call-time", type=float, metavar="MS",
                         help="ms of simulation time every ordinary RoBIOS call takes (default: the scene's CALLTIME, "
                              f"else {DEFAULT_CALL_TIME_US / 1000:g}; 0 = none beyond the protocol's 0.1 ms)")
-    parser.add_argument("--record", metavar="CSV", help="write every robot's true pose every 10 ms to CSV")
+    parser.add_argument("--record", action="append", default=[], metavar="FILE",
+                        help="record the run: FILE.mcap (poses, sensors, LCDs, console, ...; docs/recording.md) "
+                        "or FILE.csv (every robot's true pose every 10 ms); repeatable")
+    parser.add_argument("--record-rate", type=float, default=None, metavar="HZ",
+                        help="pose samples per simulated second in an .mcap recording (default 100)")
     parser.add_argument("--save-lcd", metavar="DIR", help="at the end, save each robot's LCD as DIR/robot<id>-lcd.png")
     parser.add_argument("--open", action="store_true", help="open the viewer in a web browser")
     parser.add_argument("--verbose", "-v", action="store_true", help="log connections and internal events")
@@ -205,12 +209,7 @@ def simulate(args) -> int:
     print(f"EyeSim: {len(sim.robots)} robot(s), programs connect to {args.host}:{server.port} "
           f"({mode} clock{'' if speed == 1 else f', speed {args.speed}'})", flush=True)
 
-    recorder = None
-    if args.record:
-        from eyesim.record import TrajectoryRecorder
-
-        recorder = TrajectoryRecorder(args.record)
-        sim.step_observers.append(recorder)
+    recorders = start_recorders(sim, args)
     launcher = Launcher(sim, args.host, server.port)
     for robot_id, path in sorted(programs.items()):
         launcher.start(robot_id, path)
@@ -224,12 +223,13 @@ def simulate(args) -> int:
     finally:
         launcher.stop_all(let_finish=5.0 if sim.stop_when_programs_done else 0.0)
         sim.shutdown_sessions()
+        sim.handle_queued()
         server.stop()
         if viewer is not None:
             viewer.stop()
         if io is not None:
             io.stop()
-        if recorder is not None:
+        for recorder in recorders:
             recorder.close()
         if robot_log is not None:
             robot_log.flush()
@@ -243,6 +243,31 @@ def simulate(args) -> int:
         for robot in sim.robots:
             print(status_line(robot, runs.get(robot.id)))
     return 1 if any(run.failed for run in launcher.runs) else 0
+
+
+def start_recorders(sim, args) -> list:
+    """One recorder per --record file: MCAP for .mcap, the trajectory CSV for anything else."""
+    from eyesim.record import Recorder, TrajectoryRecorder
+    from eyesim.record.mcap_recorder import DEFAULT_POSE_RATE
+
+    if args.record_rate is not None and not any(p.lower().endswith(".mcap") for p in args.record):
+        raise UsageError("--record-rate applies to .mcap recordings: add --record FILE.mcap")
+    recorders = []
+    try:
+        for path in args.record:
+            if path.lower().endswith(".mcap"):
+                rate = DEFAULT_POSE_RATE if args.record_rate is None else args.record_rate
+                recorders.append(Recorder(sim, path, pose_rate=rate))
+            else:
+                recorders.append(TrajectoryRecorder(path))
+                sim.step_observers.append(recorders[-1])
+    except (ValueError, OSError) as error:
+        for recorder in recorders:
+            recorder.close()
+        if isinstance(error, ValueError):
+            raise UsageError(f"--record-rate: {error}") from None
+        raise UsageError(f"--record: cannot write {error.filename}: {error.strerror}") from None
+    return recorders
 
 
 def _has_display() -> bool:

@@ -55,3 +55,4 @@ def _move(sim, kind: str, ident: int, x: float, y: float, phi: float) -> None:
     # Set upright at its height above the floor (a submarine keeps its depth, a toppled can stands up).
     z = max(target.pose()[2], 0.0)
     target.set_pose(x, y, z, phi)
+    sim.events.edit(edit="place", **{kind: ident}, x=x, y=y, phi=phi)

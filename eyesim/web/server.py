@@ -24,9 +24,12 @@ from aiohttp import WSMsgType, web
 from PIL import Image
 
 from eyesim.paths import STATIC_DIR
+from eyesim.protocol import generated as g
+from eyesim.record.sampling import robot_state
 from eyesim.robot.components.keys import KEYS
-from eyesim.web import mesh_message, place_command, robot_io_commands
+from eyesim.web import mesh_message, place_command, robot_io_commands, timeline
 from eyesim.web.access import AccessPolicy
+from eyesim.web.live_history import LiveHistory
 from eyesim.web.scene_message import scene_message
 
 log = logging.getLogger("eyesim.web")
@@ -34,6 +37,7 @@ CONSOLE_BACKLOG = 500  # console chunks per robot replayed to a browser that con
 CAMERA_VIEW_WIDTH = 320  # pixels: larger camera images are sent to the viewer scaled down by a whole factor
 MIN_SPEED, MAX_SPEED = 0.01, 1000.0  # realtime factors a browser may set ('max' for as fast as possible)
 MAX_COMMAND_BYTES = 64 * 1024  # a browser command is a small JSON object; larger ones close the socket
+RECORDER_ONLY = ("input", "edit")  # events for recordings (eyesim/record); browsers see their effects
 TEXTURE_TYPES = {"PNG": "image/png", "JPEG": "image/jpeg", "BMP": "image/bmp", "GIF": "image/gif"}
 
 
@@ -51,6 +55,10 @@ class Browser:
         self.events: deque = deque()  # (coalesce key or None, str or Future[str])
         self.snapshot: str | None = None
         self.wake = asyncio.Event()
+        # Looking back over the history (a `seek`): live snapshots and panel events wait until `live`.
+        self.reviewing = False
+        self.cursor = timeline.FrameCursor()
+        self.timeline_lock = asyncio.Lock()  # one frame at a time: the cursor follows what was sent
 
     def add_event(self, item, coalesce_key=None) -> None:
         if coalesce_key is not None:
@@ -98,6 +106,7 @@ class ViewerHub:
         self.latest_snapshot: str | None = None
         self.latest_status: str | None = None
         self._rate = (time.perf_counter(), 0.0, 1.0)  # wall, sim time, real-time factor
+        self.history = LiveHistory([r.id for r in sim.robots])
 
     # -- Listener interface, called on the simulation thread --------------------------------
     @property
@@ -105,31 +114,41 @@ class ViewerHub:
         return bool(self.browsers)
 
     def on_event(self, message: dict) -> None:
-        self.loop.call_soon_threadsafe(self._event, message)
+        self.loop.call_soon_threadsafe(self._event, message, self.sim.time_us)
 
     def on_snapshot(self, message: dict) -> None:
-        self.loop.call_soon_threadsafe(self._snapshot, message, self.sim.status())
+        states = [robot_state(robot) for robot in self.sim.robots]  # for the history's plots
+        self.loop.call_soon_threadsafe(self._snapshot, message, self.sim.status(), states)
+
+    def on_request(self, robot, request, reply) -> None:
+        """A request observer (engine): PSD readings, for the history's plots."""
+        if request.op.code == g.OP_PSD_GET:
+            reading = {"robot": robot.id, "psd": request.args[0], "distance_mm": reply[0]}
+            self.loop.call_soon_threadsafe(self.history.add_psd, robot.id, request.time_us, reading)
 
     # -- I/O loop ----------------------------------------------------------------------------
-    def _event(self, message: dict) -> None:
+    def _following(self) -> list[Browser]:
+        """The browsers showing the present (not looking back over the history)."""
+        return [browser for browser in self.browsers if not browser.reviewing]
+
+    def _event(self, message: dict, time_us: int) -> None:
         kind = message["type"]
-        if kind == "lcd":
-            robot, pixels = message["robot"], message["pixels"]
-            future = self.loop.run_in_executor(self.encoder, _lcd_message, robot, pixels)
-            self.lcd[robot] = future
-            for browser in self.browsers:
-                browser.add_event(future, coalesce_key=("lcd", robot))
+        if kind in RECORDER_ONLY:
             return
-        if kind == "camera":  # like the LCD: encoded off both threads, only the latest counts
+        if kind in ("lcd", "camera"):  # encoded off both threads, only the latest counts
             robot, pixels = message["robot"], message["pixels"]
-            future = self.loop.run_in_executor(self.encoder, _camera_message, robot, pixels)
-            self.cameras[robot] = future
-            for browser in self.browsers:
-                browser.add_event(future, coalesce_key=("camera", robot))
+            future = self.loop.run_in_executor(self.encoder, _lcd_message if kind == "lcd" else _camera_message,
+                                               robot, pixels)
+            (self.lcd if kind == "lcd" else self.cameras)[robot] = future
+            self.history.add_image(robot, kind, time_us, future)
+            for browser in self._following():
+                browser.add_event(future, coalesce_key=(kind, robot))
             return
         if kind == "reset":
             message = scene_message(self.sim, self._texture_url())
             self.sim.call(_publish_io)
+        else:
+            self.history.add_event(time_us, message)
         text = json.dumps(message)
         if kind == "menu":
             self.menus[message["robot"]] = text
@@ -141,24 +160,27 @@ class ViewerHub:
             self.serial.setdefault(message["robot"], deque(maxlen=CONSOLE_BACKLOG)).append(text)
         elif kind == "io":  # only the latest state matters
             self.io[message["robot"]] = text
-            for browser in self.browsers:
+            for browser in self._following():
                 browser.add_event(text, coalesce_key=("io", message["robot"]))
             return
-        for browser in self.browsers:
+        for browser in self.browsers if kind == "reset" else self._following():
             browser.add_event(text)
 
-    def _snapshot(self, message: dict, status: dict) -> None:
+    def _snapshot(self, message: dict, status: dict, states: list[dict]) -> None:
         wall, sim_time, rate = self._rate
         now = time.perf_counter()
         if now - wall >= 0.5:
             rate = (status["time"] - sim_time) / (now - wall)
             self._rate = (now, status["time"], rate)
         status["real_time_factor"] = round(rate, 3) if math.isfinite(rate) else None
+        self.history.add_snapshot(message, states)
+        status["history_start"] = self.history.start_us / 1e6
         text = json.dumps(message)
         status_text = json.dumps(status)
         self.latest_snapshot, self.latest_status = text, status_text
         for browser in self.browsers:
-            browser.set_snapshot(text)
+            if not browser.reviewing:
+                browser.set_snapshot(text)
             browser.add_event(status_text, coalesce_key=("status",))
 
     def _texture_url(self) -> str | None:
@@ -167,6 +189,15 @@ class ViewerHub:
 
     async def attach(self, browser: Browser) -> None:
         browser.add_event(json.dumps(scene_message(self.sim, self._texture_url())))
+        browser.add_event(json.dumps({"type": "timeline", "mode": "live"}))
+        self._present(browser)
+        self.browsers.add(browser)
+        # A browser that connects now needs the current LCD images even if nothing changes.
+        self.sim.call(lambda sim: sim.republish_lcd())
+        self.sim.call(_publish_io)  # and the I/O panels their state
+
+    def _present(self, browser: Browser) -> None:
+        """Queue what the robot panels and the world show now."""
         if self.latest_snapshot is not None:
             browser.set_snapshot(self.latest_snapshot)
             browser.add_event(self.latest_status, coalesce_key=("status",))
@@ -185,10 +216,24 @@ class ViewerHub:
                 browser.add_event(self.lcd[robot.id], coalesce_key=("lcd", robot.id))
             if robot.id in self.cameras:
                 browser.add_event(self.cameras[robot.id], coalesce_key=("camera", robot.id))
-        self.browsers.add(browser)
-        # A browser that connects now needs the current LCD images even if nothing changes.
-        self.sim.call(lambda sim: sim.republish_lcd())
-        self.sim.call(_publish_io)  # and the I/O panels their state
+
+    async def timeline_command(self, browser: Browser, message: dict) -> None:
+        """`seek`, `signals`, `series`, `paths` over the history, and `live` to follow the present again."""
+        async with browser.timeline_lock:
+            if message["type"] == "live":
+                browser.reviewing = False
+                browser.cursor = timeline.FrameCursor()
+                browser.add_event(json.dumps({"type": "frame", "time": self.sim.time, "clear": self.history.robot_ids,
+                                              "messages": []}))
+                self._present(browser)
+                return
+            if message["type"] == "seek":
+                browser.reviewing = True
+            try:
+                reply = await timeline.answer(self.history, browser.cursor, message)
+            except ValueError as error:
+                reply = json.dumps({"type": "error", "message": str(error)})
+            browser.add_event(reply)
 
     def detach(self, browser: Browser) -> None:
         self.browsers.discard(browser)
@@ -225,7 +270,7 @@ class ViewerHub:
         return None
 
 
-    def command_text(self, text: str) -> str | None:
+    def command_text(self, text: str, browser: Browser) -> str | None:
         """A command as the browser sent it: the error text for a bad one, else None."""
         try:
             data = json.loads(text, parse_constant=_reject_constant)
@@ -233,6 +278,9 @@ class ViewerHub:
             return f"not valid JSON: {error}"
         if not isinstance(data, dict):
             return "expected a JSON object"
+        if data.get("type") in timeline.TIMELINE_COMMANDS + ("live",):
+            self.loop.create_task(self.timeline_command(browser, data))
+            return None
         try:
             return self.command(data)
         except Exception:  # a bad value the checks missed: this browser gets an error, nobody else notices
@@ -273,6 +321,29 @@ def _camera_message(robot: int, pixels) -> str:
                        "jpeg": base64.b64encode(buffer.getvalue()).decode("ascii")})
 
 
+def viewer_url(host: str, port: int, access: AccessPolicy) -> str:
+    """The URL to print for the page (with the access token when one is needed)."""
+    host = socket.gethostname() if host in ("0.0.0.0", "::", "") else host
+    host = f"[{host}]" if ":" in host else host
+    return f"http://{host}:{port}/{access.url_suffix()}"
+
+
+async def static_file(request: web.Request) -> web.StreamResponse:
+    """The viewer's built page and assets (the live viewer's and the replay's)."""
+    relative = request.match_info["path"] or "index.html"
+    root = STATIC_DIR.resolve()
+    path = (root / relative).resolve()
+    if root not in path.parents and path != root:
+        raise web.HTTPNotFound()
+    if not path.is_file():
+        if relative == "index.html":
+            return web.Response(status=500, text="The viewer assets are missing from this install: "
+                                                 "run `make viewer` in the EyeSim source tree.")
+        raise web.HTTPNotFound()
+    # Bundle file names are fixed: make browsers revalidate so an upgrade shows at once.
+    return web.FileResponse(path, headers={"Cache-Control": "no-cache"})
+
+
 class ViewerServer:
     def __init__(self, sim, io_thread, host: str = "127.0.0.1", port: int = 8080, token: str | None = None):
         self.sim = sim
@@ -285,13 +356,12 @@ class ViewerServer:
 
     @property
     def url(self) -> str:
-        host = socket.gethostname() if self.host in ("0.0.0.0", "::", "") else self.host
-        host = f"[{host}]" if ":" in host else host
-        return f"http://{host}:{self.port}/{self.access.url_suffix()}"
+        return viewer_url(self.host, self.port, self.access)
 
     def start(self) -> None:
         self.io.run(self._start())
         self.sim.events.subscribe(self.hub)
+        self.sim.call(lambda sim: sim.request_observers.append(self.hub.on_request))
 
     async def _start(self) -> None:
         self.hub = ViewerHub(self.sim, asyncio.get_running_loop())
@@ -299,7 +369,7 @@ class ViewerServer:
         app.router.add_get("/ws", self._websocket)
         app.router.add_get("/scene/floor-texture", self._floor_texture)
         app.router.add_get("/scene/mesh/{kind}/{id}", self._mesh)
-        app.router.add_get("/{path:.*}", self._static)
+        app.router.add_get("/{path:.*}", static_file)
         self._runner = web.AppRunner(app, access_log=None)
         await self._runner.setup()
         site = web.TCPSite(self._runner, self.host, self.port)
@@ -309,22 +379,10 @@ class ViewerServer:
     def stop(self) -> None:
         if self.hub is not None and self.hub in self.sim.events.listeners:
             self.sim.events.unsubscribe(self.hub)
+        if self.hub is not None and self.hub.on_request in self.sim.request_observers:
+            self.sim.request_observers.remove(self.hub.on_request)
         if self._runner is not None:
             self.io.run(self._runner.cleanup())
-
-    async def _static(self, request: web.Request) -> web.StreamResponse:
-        relative = request.match_info["path"] or "index.html"
-        root = STATIC_DIR.resolve()
-        path = (root / relative).resolve()
-        if root not in path.parents and path != root:
-            raise web.HTTPNotFound()
-        if not path.is_file():
-            if relative == "index.html":
-                return web.Response(status=500, text="The viewer assets are missing from this install: "
-                                                     "run `make viewer` in the EyeSim source tree.")
-            raise web.HTTPNotFound()
-        # Bundle file names are fixed: make browsers revalidate so an upgrade shows at once.
-        return web.FileResponse(path, headers={"Cache-Control": "no-cache"})
 
     async def _floor_texture(self, request: web.Request) -> web.StreamResponse:
         """Only the image the scene names, and only if it is an image: a scene file is not allowed
@@ -356,7 +414,7 @@ class ViewerServer:
         try:
             async for message in ws:
                 if message.type == WSMsgType.TEXT:
-                    error = self.hub.command_text(message.data)
+                    error = self.hub.command_text(message.data, browser)
                 elif message.type == WSMsgType.BINARY:
                     error = "binary messages are not understood: send JSON text"
                 else:

@@ -24,6 +24,12 @@ export class CameraView {
     this.caption.textContent = `camera ${message.width} x ${message.height}`;
   }
 
+  /** Hides the camera until the next image (the timeline jumped back). */
+  clear(): void {
+    this.element.hidden = true;
+    this.image.removeAttribute("src");
+  }
+
   /** Images decoded so far (for tests). */
   get imagesShown(): number {
     return this.updates;

@@ -33,6 +33,12 @@ export class ConsoleView {
     if (following) box.scrollTop = box.scrollHeight;
   }
 
+  /** Empties the console (the timeline jumped back). */
+  clear(): void {
+    this.element.replaceChildren();
+    this.length = 0;
+  }
+
   text(): string {
     return this.element.textContent ?? "";
   }

@@ -6,6 +6,7 @@ import type { Pose } from "./interpolation";
 import { meshBox, meshCount } from "./mesh_loader";
 import type { IoMessage, Quat, SceneWarning, StatusMessage, Vec3 } from "./protocol";
 import type { ProgramState } from "./robot_panel";
+import type { TimelineState } from "./timeline_bar";
 import type { Viewer } from "./viewer";
 import type { WorldCounts } from "./world_view";
 
@@ -63,6 +64,20 @@ export interface EyesimViewerDebug {
   /** how many camera images have loaded into the robot's panel */
   cameraImages(robot: number): number | null;
   status(): StatusMessage | null;
+  /** the timeline: live, review (looking back) or replay, the shown time and the range */
+  timeline(): TimelineState;
+  /** timeline frames shown so far */
+  framesShown(): number;
+  /** what the plot panel draws: signal ids and their number of points */
+  plotted(): { id: string; points: number }[];
+  /** the last video made with the Video button: its size in bytes, or null */
+  lastVideoSize(): number | null;
+  /** the last video as base64 (for tests that check its frames) */
+  lastVideo(): Promise<string | null>;
+  /** the 3D view as a PNG data URL, or null without WebGL */
+  screenshot(): string | null;
+  /** what sending a recording from the page ended with ("" before any) */
+  uploadStatus(): string;
   /** messages dropped as malformed or of an unknown type */
   ignoredMessages(): number;
 }
@@ -113,6 +128,20 @@ export function installDebugHandle(viewer: Viewer): void {
     tracePoints: (robot) => viewer.overlays.tracePoints(robot),
     cameraImages: (robot) => viewer.panels.find(robot)?.camera.imagesShown ?? null,
     status: () => (viewer.status ? structuredClone(viewer.status) : null),
+    timeline: () => viewer.timeline.current,
+    framesShown: () => viewer.framesShown,
+    plotted: () => viewer.plots.plottedSeries(),
+    lastVideoSize: () => viewer.video.last?.size ?? null,
+    lastVideo: async () => {
+      const video = viewer.video.last;
+      if (!video) return null;
+      const bytes = new Uint8Array(await video.arrayBuffer());
+      let text = "";
+      for (let i = 0; i < bytes.length; i += 0x8000) text += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+      return btoa(text);
+    },
+    screenshot: () => viewer.world.screenshot(),
+    uploadStatus: () => viewer.upload.status,
     ignoredMessages: () => viewer.ignoredMessages,
   };
   window.eyesimViewer = Object.freeze(handle);

@@ -23,7 +23,12 @@ export interface DragHost {
   world(): BuiltWorld | null;
   scene(): SceneMessage | null;
   requestRender(): void;
+  /** a click on a robot or object (without dragging it); also how a read-only view picks things */
+  picked(target: DragTarget): void;
 }
+
+/** A press that moves less than this (CSS pixels) before its release is a click. */
+const CLICK_DISTANCE = 3;
 
 /** Shift+drag turns the thing by one degree per pixel of sideways mouse motion (right = clockwise). */
 const TURN_PER_PIXEL = Math.PI / 180;
@@ -64,6 +69,9 @@ function wrapAngle(angle: number): number {
 export class DragToPlace {
   private readonly raycaster = new Raycaster();
   private drag: Drag | null = null;
+  /** Watching a recording or the past: things can be clicked (picked) but not moved. */
+  readOnly = false;
+  private startClientY = 0;
 
   constructor(
     private readonly host: DragHost,
@@ -141,8 +149,13 @@ export class DragToPlace {
     if (!target || !world || !floor) return;
     const model = (target.kind === "robot" ? world.robots : world.objects).get(target.id);
     if (!model) return;
+    if (this.readOnly) {
+      this.host.picked(target);
+      return;
+    }
     event.stopPropagation();
     event.preventDefault();
+    this.startClientY = event.clientY;
     this.host.canvas.setPointerCapture(event.pointerId);
     this.host.controls.enabled = false;
     this.host.canvas.style.cursor = "grabbing";
@@ -182,6 +195,8 @@ export class DragToPlace {
     const drag = this.drag;
     if (!drag || drag.releasedAt !== null || event.pointerId !== drag.pointer) return;
     event.stopPropagation();
+    const click = Math.hypot(event.clientX - drag.startClientX, event.clientY - this.startClientY) < CLICK_DISTANCE;
+    if (click) this.host.picked(drag.target);
     if (event.type === "pointerup") this.follow(drag, event);
     this.sendPlace(drag);
     drag.releasedAt = performance.now();

@@ -56,6 +56,17 @@ export class LcdView {
     this.image.src = `data:image/png;base64,${png}`;
   }
 
+  /** A blank LCD with no menu labels (the timeline jumped back to before the program drew). */
+  clear(): void {
+    this.image.removeAttribute("src");
+    this.showMenu({ labels: ["", "", "", ""], visible: true, rotated: false });
+  }
+
+  /** The LCD as a PNG data URL (what it shows), or null before the first image. */
+  pngDataUrl(): string | null {
+    return this.image.getAttribute("src");
+  }
+
   showMenu({ labels, visible, rotated }: Pick<MenuMessage, "labels" | "visible" | "rotated">): void {
     this.menuVisible = visible;
     this.rotated = rotated;

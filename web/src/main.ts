@@ -12,7 +12,9 @@ function byId(id: string): HTMLElement {
 
 const viewer = new Viewer({
   toolbar: byId("toolbar"),
+  timeline: byId("timeline"),
   world: byId("world"),
+  plots: byId("plots"),
   panels: byId("robots"),
 });
 installDebugHandle(viewer);

@@ -1,7 +1,7 @@
 // Drawn over the world when the scene asks: sensor rays (settings VIS) and robot paths (TRACE).
 
 import { BufferGeometry, Float32BufferAttribute, Group, Line, LineBasicMaterial, LineSegments } from "three";
-import type { BodyPose, SceneSettings, SensorRays } from "./protocol";
+import type { BodyPose, PathsMessage, SceneSettings, SensorRays } from "./protocol";
 
 /** Colours of the rays: PSD beams red, lidar beams green. */
 const RAY_COLORS = { psd: 0xe53935, lidar: 0x2e9e44 } as const;
@@ -14,6 +14,8 @@ const TRACE_HEIGHT = 0.002;
 
 interface Trace {
   points: number[];
+  /** when each point was reached (s of simulation time), so the timeline can cut the path there */
+  times: number[];
   line: Line;
 }
 
@@ -40,22 +42,46 @@ export class Overlays {
     this.traces.clear();
   }
 
-  /** Applies a snapshot; says whether anything drawn changed. */
-  update(robots: BodyPose[], rays: SensorRays[] | undefined): boolean {
+  /** Applies a snapshot; says whether anything drawn changed. `extend`: add to the paths (live). */
+  update(robots: BodyPose[], rays: SensorRays[] | undefined, time: number, extend = true): boolean {
     let changed = false;
     if (this.settings.vis) {
       this.showRays(rays ?? []);
       changed = true;
     }
-    if (this.settings.trace) {
-      for (const robot of robots) changed = this.extendTrace(robot) || changed;
+    if (this.settings.trace && extend) {
+      for (const robot of robots) changed = this.extendTrace(robot, time) || changed;
     }
     return changed;
   }
 
-  /** Number of points in a robot's path (for tests). */
+  /** Replaces the paths with whole recorded ones (the timeline's `paths`); drawn up to `cutAt`'s time. */
+  loadPaths(paths: PathsMessage["robots"]): void {
+    if (!this.settings.trace) return;
+    for (const path of paths) {
+      const trace = this.traceOf(path.id);
+      trace.points = [];
+      for (let i = 0; i + 1 < path.points.length; i += 2) trace.points.push(path.points[i], path.points[i + 1], TRACE_HEIGHT);
+      trace.times = [...path.times];
+      this.rebuild(trace);
+    }
+  }
+
+  /** Draws each path only up to `time` (s): where the robots had been by then. */
+  cutAt(time: number): void {
+    for (const trace of this.traces.values()) {
+      let count = trace.times.length;
+      while (count > 0 && trace.times[count - 1] > time) count--;
+      trace.line.geometry.setDrawRange(0, count);
+    }
+  }
+
+  /** Number of points of a robot's path drawn now (for tests). */
   tracePoints(robot: number): number {
-    return (this.traces.get(robot)?.points.length ?? 0) / 3;
+    const trace = this.traces.get(robot);
+    if (!trace) return 0;
+    const range = trace.line.geometry.drawRange;
+    return Math.min(trace.points.length / 3, range.count === Infinity ? Infinity : range.start + range.count);
   }
 
   /** Number of ray segments drawn (for tests). */
@@ -88,21 +114,34 @@ export class Overlays {
     }
   }
 
-  private extendTrace(robot: BodyPose): boolean {
-    let trace = this.traces.get(robot.id);
+  private traceOf(robot: number): Trace {
+    let trace = this.traces.get(robot);
     if (!trace) {
-      trace = { points: [], line: new Line(new BufferGeometry(), new LineBasicMaterial({ color: TRACE_COLOR })) };
-      this.traces.set(robot.id, trace);
+      trace = { points: [], times: [], line: new Line(new BufferGeometry(), new LineBasicMaterial({ color: TRACE_COLOR })) };
+      this.traces.set(robot, trace);
       this.group.add(trace.line);
     }
+    return trace;
+  }
+
+  private extendTrace(robot: BodyPose, time: number): boolean {
+    const trace = this.traceOf(robot.id);
     const [x, y] = robot.pos;
     const n = trace.points.length;
     if (n >= 3 && Math.hypot(x - trace.points[n - 3], y - trace.points[n - 2]) < TRACE_STEP) return false;
     trace.points.push(x, y, TRACE_HEIGHT);
-    if (trace.points.length > MAX_TRACE_POINTS * 3) trace.points.splice(0, 3);
+    trace.times.push(time);
+    if (trace.points.length > MAX_TRACE_POINTS * 3) {
+      trace.points.splice(0, 3);
+      trace.times.shift();
+    }
+    this.rebuild(trace);
+    return true;
+  }
+
+  private rebuild(trace: Trace): void {
     trace.line.geometry.dispose();
     trace.line.geometry = new BufferGeometry();
     trace.line.geometry.setAttribute("position", new Float32BufferAttribute(trace.points, 3));
-    return true;
   }
 }

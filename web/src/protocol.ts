@@ -223,6 +223,58 @@ export interface StatusMessage {
   speed: number | "max";
   clock: string;
   real_time_factor: number;
+  /** the oldest time of the live run's history the viewer can scrub back to */
+  history_start?: number;
+}
+
+/** What the timeline scrubs: the live run (its recent history) or a recording. */
+export interface TimelineMessage {
+  type: "timeline";
+  mode: "live" | "replay";
+  /** the recording's file name (replay) */
+  name?: string;
+  start?: number;
+  end?: number;
+}
+
+/** The state at `time`: ordinary messages, after emptying the panels of the robots in `clear`. */
+export interface FrameMessage {
+  type: "frame";
+  time: number;
+  start?: number;
+  end?: number;
+  clear: number[];
+  messages: ServerMessage[];
+}
+
+export interface SignalInfo {
+  id: string;
+  robot: number;
+  name: string;
+  label: string;
+  unit: string;
+}
+
+export interface SignalsMessage {
+  type: "signals";
+  signals: SignalInfo[];
+}
+
+export interface Series {
+  id: string;
+  times: number[];
+  values: number[];
+}
+
+export interface SeriesMessage {
+  type: "series";
+  series: Series[];
+}
+
+/** Each robot's path: flat [x, y, x, y, ...] points with the time each was reached. */
+export interface PathsMessage {
+  type: "paths";
+  robots: { id: number; times: number[]; points: number[] }[];
 }
 
 /** The server's answer to a malformed or unknown command from the browser. */
@@ -243,7 +295,12 @@ export type ServerMessage =
   | AudioMessage
   | SerialMessage
   | IoMessage
-  | CameraMessage;
+  | CameraMessage
+  | TimelineMessage
+  | FrameMessage
+  | SignalsMessage
+  | SeriesMessage
+  | PathsMessage;
 
 /** Soft keys KEY1..KEY4 as RoBIOS numbers them. */
 export type KeyCode = 1 | 2 | 4 | 8;
@@ -261,7 +318,12 @@ export type BrowserCommand =
   | { type: "digital"; robot: number; line: number; level: number | null }
   | { type: "analog"; robot: number; channel: number; value: number }
   | { type: "place"; robot: number; x: number; y: number; phi: number }
-  | { type: "place"; object: number; x: number; y: number; phi: number };
+  | { type: "place"; object: number; x: number; y: number; phi: number }
+  | { type: "seek"; time: number }
+  | { type: "live" }
+  | { type: "signals" }
+  | { type: "series"; ids: string[] }
+  | { type: "paths" };
 
 class MalformedMessage extends Error {}
 
@@ -575,14 +637,80 @@ function parseFields(m: Fields): ServerMessage | null {
         exit_code: exitCode === null ? null : num(exitCode, "exit_code"),
       };
     }
-    case "status":
-      return {
+    case "status": {
+      const status: StatusMessage = {
         type: "status",
         time: num(m.time, "time"),
         paused: flag(m.paused, "paused"),
         speed: m.speed === "max" ? "max" : positive(m.speed, "speed"),
         clock: text(m.clock, "clock"),
         real_time_factor: num(m.real_time_factor, "real_time_factor"),
+      };
+      if (m.history_start !== undefined) status.history_start = num(m.history_start, "history_start");
+      return status;
+    }
+    case "timeline": {
+      const message: TimelineMessage = { type: "timeline", mode: oneOf(m.mode, ["live", "replay"] as const, "mode") };
+      if (m.name !== undefined) message.name = text(m.name, "name");
+      if (m.start !== undefined) message.start = num(m.start, "start");
+      if (m.end !== undefined) message.end = num(m.end, "end");
+      return message;
+    }
+    case "frame": {
+      if (!Array.isArray(m.messages)) throw new MalformedMessage("messages must be a list");
+      const inner: ServerMessage[] = [];
+      for (const item of m.messages) {
+        const parsed = parseFields(record(item, "messages[]"));
+        if (parsed && parsed.type !== "frame") inner.push(parsed);
+      }
+      const clear = m.clear ?? [];
+      if (!Array.isArray(clear)) throw new MalformedMessage("clear must be a list of robot ids");
+      const frame: FrameMessage = {
+        type: "frame",
+        time: num(m.time, "time"),
+        clear: clear.map((id, i) => num(id, `clear[${i}]`)),
+        messages: inner,
+      };
+      if (m.start !== undefined) frame.start = num(m.start, "start");
+      if (m.end !== undefined) frame.end = num(m.end, "end");
+      return frame;
+    }
+    case "signals":
+      return {
+        type: "signals",
+        signals: items(m.signals, "signals", (s, what) => ({
+          id: text(s.id, `${what}.id`),
+          robot: num(s.robot, `${what}.robot`),
+          name: text(s.name, `${what}.name`),
+          label: text(s.label, `${what}.label`),
+          unit: text(s.unit, `${what}.unit`),
+        })),
+      };
+    case "series":
+      return {
+        type: "series",
+        series: items(m.series, "series", (s, what) => {
+          const times = s.times as unknown[];
+          if (!Array.isArray(times)) throw new MalformedMessage(`${what}.times must be a list`);
+          return {
+            id: text(s.id, `${what}.id`),
+            times: numbers(times, times.length, `${what}.times`),
+            values: numbers(s.values, times.length, `${what}.values`),
+          };
+        }),
+      };
+    case "paths":
+      return {
+        type: "paths",
+        robots: items(m.robots, "robots", (r, what) => {
+          const times = r.times as unknown[];
+          if (!Array.isArray(times)) throw new MalformedMessage(`${what}.times must be a list`);
+          return {
+            id: num(r.id, `${what}.id`),
+            times: numbers(times, times.length, `${what}.times`),
+            points: numbers(r.points, times.length * 2, `${what}.points`),
+          };
+        }),
       };
     case "error":
       return { type: "error", message: text(m.message, "message") };

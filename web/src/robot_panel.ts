@@ -7,6 +7,7 @@ import { element } from "./dom";
 import { LcdView } from "./lcd_view";
 import type { BrowserCommand, ConsoleMessage, ProgramMessage, RobotInfo } from "./protocol";
 import { RobotIoView } from "./robot_io_view";
+import { download } from "./snapshot_files";
 
 export type ProgramState = Pick<ProgramMessage, "event" | "name" | "exit_code">;
 
@@ -26,7 +27,9 @@ export class RobotPanel {
   private readonly name = element("h2", "robot-name");
   private readonly type = element("span", "robot-type");
   private readonly state = element("span", "program-state");
+  private readonly saveLcd = element("button", "save-lcd", "Save LCD");
   private program: ProgramState | null = null;
+  private robotName = "";
 
   constructor(robot: RobotInfo, send: (command: BrowserCommand) => void) {
     this.element.dataset.robot = String(robot.id);
@@ -38,7 +41,13 @@ export class RobotPanel {
     const header = element("header", "robot-header");
     const title = element("div", "robot-title");
     title.append(this.name, this.type);
-    header.append(title, this.state);
+    this.saveLcd.type = "button";
+    this.saveLcd.title = "Download the LCD as a PNG image";
+    this.saveLcd.addEventListener("click", () => {
+      const png = this.lcd.pngDataUrl();
+      if (png) download(png, `${this.robotName}-${robot.id}-lcd.png`);
+    });
+    header.append(title, this.state, this.saveLcd);
     this.element.append(header, this.lcd.element, this.camera.element, this.console.element, this.io.element);
     this.describeRobot(robot);
     this.showProgram(null);
@@ -46,6 +55,7 @@ export class RobotPanel {
 
   describeRobot(robot: RobotInfo): void {
     this.name.textContent = robot.name;
+    this.robotName = robot.name;
     this.type.textContent = `#${robot.id} ${robot.type}`;
     this.element.setAttribute("aria-label", `robot ${robot.name}`);
   }
@@ -55,6 +65,14 @@ export class RobotPanel {
     const { text, kind } = describe(program);
     this.state.textContent = text;
     this.state.dataset.kind = kind;
+  }
+
+  /** Back to how the panel starts (the timeline jumped back): the frame then brings what was there. */
+  clear(): void {
+    this.lcd.clear();
+    this.camera.clear();
+    this.console.clear();
+    this.showProgram(null);
   }
 
   appendConsole(message: ConsoleMessage): void {

@@ -23,6 +23,7 @@ export class Toolbar {
   private readonly rate: HTMLElement;
   private readonly clock: HTMLElement;
   private readonly connection: HTMLElement;
+  private replay = false;
   /** Shows a speed the server reports that is not one of the choices (e.g. "max"). */
   private readonly otherSpeed = document.createElement("option");
   private paused = false;
@@ -50,6 +51,7 @@ export class Toolbar {
     this.pause.textContent = status.paused ? "Resume" : "Pause";
     this.pause.classList.toggle("paused", status.paused);
     this.showSpeed(status.speed);
+    if (this.replay) return;
     this.time.textContent = `t = ${status.time.toFixed(2)} s`;
     this.rate.textContent = `${status.real_time_factor.toFixed(2)}× real time`;
     this.clock.textContent = status.paused ? `${status.clock}, paused` : status.clock;
@@ -58,7 +60,16 @@ export class Toolbar {
   showConnection(state: ConnectionState): void {
     this.connection.textContent = CONNECTION_TEXT[state];
     this.connection.dataset.state = state;
-    for (const control of [this.pause, this.speed, this.reset]) control.disabled = state !== "open";
+    for (const control of [this.pause, this.speed, this.reset]) control.disabled = state !== "open" || this.replay;
+  }
+
+  /** A replay has no simulation to pause, speed up or reset: those controls go. */
+  setReplay(replay: boolean, name?: string): void {
+    this.replay = replay;
+    for (const control of [this.pause, this.speed.parentElement ?? this.speed, this.reset, this.time, this.rate]) {
+      control.hidden = replay;
+    }
+    this.clock.textContent = replay ? `replay${name ? ` of ${name}` : ""}` : this.clock.textContent;
   }
 
   private showSpeed(speed: number | "max"): void {

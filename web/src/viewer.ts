@@ -1,4 +1,4 @@
-// The viewer: routes the simulator's messages to the 3D view, toolbar and robot panels.
+// The viewer: routes the simulator's messages to the 3D view, toolbar, timeline, plots and robot panels.
 
 import { AudioPlayer } from "./audio_player";
 import { ViewerConnection, type ConnectionState } from "./connection";
@@ -6,21 +6,29 @@ import { SnapshotBuffer } from "./interpolation";
 import { Overlays } from "./overlays";
 import { HelpOverlay } from "./help";
 import { PanelList } from "./panel_list";
+import { PlotPanel } from "./plot_panel";
 import {
   parseServerMessage,
   type BrowserCommand,
+  type FrameMessage,
   type SceneMessage,
   type ServerMessage,
   type StatusMessage,
 } from "./protocol";
 import type { RobotPanel } from "./robot_panel";
 import { SceneWarnings } from "./scene_warnings";
+import { RecordingUpload } from "./recording_upload";
+import { download, timedName } from "./snapshot_files";
+import { TimelineBar, type TimelineState } from "./timeline_bar";
 import { Toolbar } from "./toolbar";
+import { VideoExport } from "./video_export";
 import { WorldView } from "./world_view";
 
 export interface ViewerElements {
   toolbar: HTMLElement;
+  timeline: HTMLElement;
   world: HTMLElement;
+  plots: HTMLElement;
   panels: HTMLElement;
 }
 
@@ -33,19 +41,42 @@ export class Viewer {
   readonly audio = new AudioPlayer();
   readonly warnings: SceneWarnings;
   readonly help: HelpOverlay;
+  readonly timeline: TimelineBar;
+  readonly plots: PlotPanel;
+  readonly video: VideoExport;
+  readonly upload: RecordingUpload;
   private readonly toolbar: Toolbar;
+  private readonly videoButton: HTMLButtonElement;
   private lastScene: SceneMessage | null = null;
   private lastStatus: StatusMessage | null = null;
   private ignored = 0;
+  private replay = false;
+  private frames = 0;
+  private pathsWanted = false;
 
   constructor(elements: ViewerElements) {
     const send = (command: BrowserCommand) => this.connection.send(command);
     this.toolbar = new Toolbar(elements.toolbar, send);
     this.panels = new PanelList(elements.panels, send);
     this.warnings = new SceneWarnings(elements.toolbar);
-    this.world = new WorldView(elements.world, send);
+    this.world = new WorldView(elements.world, send, (target) => {
+      if (target.kind === "robot") this.plots.pickRobot(target.id);
+    });
     this.help = new HelpOverlay(elements.world);
     this.world.addOverlay(this.overlays.group);
+    this.timeline = new TimelineBar(elements.timeline, send);
+    this.timeline.onChange((state) => this.followTimeline(state));
+    this.plots = new PlotPanel(elements.plots, send);
+    this.video = new VideoExport((video) => download(video, timedName("replay", this.timeline.current.time, "webm")));
+    this.videoButton = elements.timeline.querySelector<HTMLButtonElement>("#tl-video")!;
+    this.videoButton.hidden = !VideoExport.supported();
+    this.videoButton.addEventListener("click", () => this.toggleVideo());
+    this.upload = new RecordingUpload(elements.timeline);
+    elements.toolbar.querySelector("#plots-toggle")?.addEventListener("click", () => this.plots.toggle());
+    elements.toolbar.querySelector("#shot-3d")?.addEventListener("click", () => {
+      const png = this.world.screenshot();
+      if (png) download(png, timedName("3d", this.timeline.current.time, "png"));
+    });
     this.connection = new ViewerConnection({
       onMessage: (frame) => this.receive(frame),
       onState: (state) => this.showConnection(state),
@@ -54,7 +85,10 @@ export class Viewer {
 
   start(): void {
     this.connection.connect();
-    const frame = () => {
+    let last = performance.now();
+    const frame = (now: number) => {
+      this.timeline.tick(now - last);
+      last = now;
       const poses = this.snapshots.posesAt(performance.now());
       if (poses) this.world.applyPoses(poses);
       this.world.render();
@@ -76,6 +110,11 @@ export class Viewer {
     return this.ignored;
   }
 
+  /** Timeline frames shown so far. */
+  get framesShown(): number {
+    return this.frames;
+  }
+
   private receive(frame: unknown): void {
     const message = parseServerMessage(frame);
     if (!message) {
@@ -90,6 +129,11 @@ export class Viewer {
     }
   }
 
+  /** Looking at a recording or the past, rather than following a live run. */
+  private get reviewing(): boolean {
+    return this.timeline.current.mode !== "live";
+  }
+
   private handle(message: ServerMessage): void {
     switch (message.type) {
       case "scene":
@@ -99,10 +143,12 @@ export class Viewer {
         this.world.showScene(message);
         this.overlays.reset(message.settings);
         this.warnings.show(message.warnings);
+        this.plots.reset();
+        if (this.reviewing) this.requestPaths();
         break;
       case "snapshot":
         this.snapshots.push(message, performance.now());
-        if (this.overlays.update(message.robots, message.rays)) this.world.requestRender();
+        if (this.overlays.update(message.robots, message.rays, message.time, !this.reviewing)) this.world.requestRender();
         for (const robot of message.robots) {
           if (robot.battery !== undefined) this.panels.find(robot.id)?.io.showBattery(robot.battery);
         }
@@ -110,6 +156,29 @@ export class Viewer {
       case "status":
         this.lastStatus = message;
         this.toolbar.showStatus(message);
+        this.timeline.showStatus(message);
+        break;
+      case "timeline":
+        this.timeline.showTimeline(message);
+        this.replay = message.mode === "replay";
+        this.upload.setAvailable(this.replay);
+        this.toolbar.setReplay(this.replay, message.name);
+        this.panels.setEnabled(!this.replay && this.connection.state === "open");
+        this.plots.setLive(message.mode === "live");
+        break;
+      case "frame":
+        this.showFrame(message);
+        break;
+      case "signals":
+        this.plots.showSignals(message.signals);
+        break;
+      case "series":
+        this.plots.showSeries(message.series);
+        break;
+      case "paths":
+        this.overlays.loadPaths(message.robots);
+        this.overlays.cutAt(this.reviewing ? this.timeline.current.time : Infinity);
+        this.world.requestRender();
         break;
       case "lcd":
         this.panelOf(message.robot)?.lcd.showImage(message.png);
@@ -141,6 +210,51 @@ export class Viewer {
     }
   }
 
+  /** The state at a time of the timeline: panels afresh where asked, then the messages as usual. */
+  private showFrame(frame: FrameMessage): void {
+    for (const robot of frame.clear) this.panels.find(robot)?.clear();
+    for (const message of frame.messages) {
+      if (message.type === "snapshot") this.snapshots.clear(); // show this moment now, not blended
+      this.handle(message);
+    }
+    this.frames++;
+    this.timeline.frameArrived(frame);
+    this.overlays.cutAt(this.reviewing ? this.timeline.current.time : Infinity);
+    this.world.requestRender();
+  }
+
+  private followTimeline(state: TimelineState): void {
+    const reviewing = state.mode !== "live";
+    this.world.setReadOnly(state.mode === "replay" || state.mode === "review");
+    this.plots.setTime(state.time);
+    if (reviewing && !this.pathsWanted) this.requestPaths();
+    if (!reviewing) this.pathsWanted = false;
+    if (this.video.recording && !state.playing) {
+      this.video.stop();
+      this.videoButton.textContent = "Record video";
+    }
+  }
+
+  private requestPaths(): void {
+    if (this.lastScene?.settings.trace) this.pathsWanted = this.connection.send({ type: "paths" });
+  }
+
+  /** Records the 3D view while the timeline plays (from the start when at the end); again stops. */
+  private toggleVideo(): void {
+    if (this.video.recording) {
+      this.timeline.setPlaying(false);
+      return;
+    }
+    const canvas = this.world.canvas;
+    const state = this.timeline.current;
+    if (!canvas || state.mode === "live") return;
+    if (state.time >= state.end) this.timeline.seek(state.start);
+    if (this.video.start(canvas)) {
+      this.videoButton.textContent = "Stop video";
+      this.timeline.setPlaying(true);
+    }
+  }
+
   private panelOf(robot: number): RobotPanel | null {
     const panel = this.panels.find(robot);
     if (!panel) console.warn(`EyeSim viewer: a message for robot ${robot}, which is not in the scene`);
@@ -149,6 +263,7 @@ export class Viewer {
 
   private showConnection(state: ConnectionState): void {
     this.toolbar.showConnection(state);
-    this.panels.setEnabled(state === "open");
+    this.timeline.setEnabled(state === "open");
+    this.panels.setEnabled(state === "open" && !this.replay);
   }
 }

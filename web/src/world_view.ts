@@ -101,6 +101,7 @@ export class WorldView {
   constructor(
     private readonly container: HTMLElement,
     send: (command: BrowserCommand) => void,
+    picked: (target: DragTarget) => void = () => {},
   ) {
     this.scene.background = new Color(0xdde3ea);
     this.scene.add(new HemisphereLight(0xffffff, 0x8a8f96, 2.2));
@@ -128,6 +129,7 @@ export class WorldView {
           world: () => this.world,
           scene: () => this.sceneMessage,
           requestRender: () => (this.needsRender = true),
+          picked,
         },
         send,
       );
@@ -187,6 +189,24 @@ export class WorldView {
     }
     // What is being dragged is drawn where the pointer has it, not where the (late) snapshots do.
     if (this.dragging?.applyPreview(poses)) this.needsRender = true;
+  }
+
+  /** Watching a recording or the past: clicks pick robots, nothing can be dragged. */
+  setReadOnly(readOnly: boolean): void {
+    if (this.dragging) this.dragging.readOnly = readOnly;
+  }
+
+  /** The 3D canvas (for video capture), or null without WebGL. */
+  get canvas(): HTMLCanvasElement | null {
+    return this.display?.renderer.domElement ?? null;
+  }
+
+  /** The 3D view as a PNG data URL, drawn afresh (the canvas keeps no picture between frames). */
+  screenshot(): string | null {
+    if (!this.display) return null;
+    this.needsRender = true;
+    this.render();
+    return this.display.renderer.domElement.toDataURL("image/png");
   }
 
   /** What the pointer is dragging now, or null. */

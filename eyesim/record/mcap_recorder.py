@@ -1,0 +1,284 @@
+"""Recording a run into an MCAP file (docs/recording.md), as an observer of the simulation.
+
+The recorder watches from outside: a step observer samples poses, robot state and LCDs on
+simulation time; a request observer sees the sensor readings, camera images and commands the
+programs asked for; an event listener gets console lines, program exits, menus, inputs and scene
+edits. The simulation thread only copies values; a writer thread encodes (JSON, PNG, JPEG) and
+writes, in the order things happened, so a deterministic run gives the same recording."""
+
+from __future__ import annotations
+
+import base64
+import dataclasses
+import io
+import json
+import math
+import queue
+import threading
+from pathlib import Path
+
+from mcap.writer import CompressionType, Writer
+from PIL import Image
+
+from eyesim import __version__
+from eyesim.protocol import generated as g
+from eyesim.record import sampling, schemas
+from eyesim.robot.components.camera import Camera
+from eyesim.robot.components.lcd import Lcd
+from eyesim.robot.components.lidar import LidarScanner
+from eyesim.robot.sensor_rays import sensor_rays
+from eyesim.web import mesh_message
+from eyesim.web.scene_message import scene_message
+
+DEFAULT_POSE_RATE = 100.0  # Hz of simulation time: the CSV's 10 ms rows
+DEFAULT_LCD_RATE = 30.0  # Hz: at most this many LCD images per robot and simulated second
+QUEUE_LENGTH = 512  # messages waiting for the writer; beyond it the simulation waits (nothing is lost)
+JPEG_QUALITY = 85
+FLOOR_TEXTURE = "floor-texture"  # attachment names; meshes are "mesh/<kind>/<id>"
+COMMAND_GROUPS = ("vw", "motor", "servo")
+VIEWER_EVENTS = ("menu", "console", "program", "serial", "io", "audio", "reset")
+_CAMERA_OPS = (g.OP_CAM_GET, g.OP_CAM_GET_GRAY)
+
+
+def _is_command(op) -> bool:
+    """Setters of the drive, motor and servo groups: what the program told its robot to do."""
+    return op.group in COMMAND_GROUPS and bool(op.request) and not op.blocking and op.reply == (("result", "i32"),)
+
+
+def _json(value) -> bytes:
+    return json.dumps(value, separators=(",", ":")).encode()
+
+
+def _image_message(time_us: int, frame: str, pixels, image_format: str) -> bytes:
+    buffer = io.BytesIO()
+    if image_format == "png":
+        Image.fromarray(pixels).save(buffer, format="PNG", compress_level=6)
+    else:
+        Image.fromarray(pixels).save(buffer, format="JPEG", quality=JPEG_QUALITY)
+    return _json({"timestamp": schemas.stamp(time_us), "frame_id": frame, "format": image_format,
+                  "data": base64.b64encode(buffer.getvalue()).decode("ascii")})
+
+
+def period_us(rate: float, step_us: int, what: str) -> int:
+    """A sampling period in whole physics steps, for a rate in Hz; ValueError for a bad rate."""
+    if not (isinstance(rate, (int, float)) and math.isfinite(rate) and rate > 0):
+        raise ValueError(f"{what} {rate!r}: expected a rate in Hz above 0")
+    steps = round(1e6 / rate / step_us)
+    if steps < 1:
+        raise ValueError(f"{what} {rate:g} Hz: at most {1e6 / step_us:g} Hz (one sample per physics step)")
+    return steps * step_us
+
+
+class Recorder:
+    """Records `sim` into the MCAP file `path` from now until `close()` (or the end of a `with`).
+
+    `pose_rate`: samples per simulated second of every pose and robot state (default 100: the
+    CSV's rows); `lcd_rate`: at most this many LCD images per robot and simulated second."""
+
+    wants_lcd = False  # LCDs are sampled on simulation time, not at the viewer's publish ticks
+
+    def __init__(self, sim, path: str | Path, pose_rate: float = DEFAULT_POSE_RATE,
+                 lcd_rate: float = DEFAULT_LCD_RATE):
+        self.sim = sim
+        self.path = Path(path)
+        self.pose_period_us = period_us(pose_rate, sim.step_us, "pose rate")
+        self.lcd_period_us = period_us(lcd_rate, sim.step_us, "LCD rate")
+        self._file = open(self.path, "wb")
+        self._writer = Writer(self._file, compression=CompressionType.ZSTD)
+        self._channels: dict[str, int] = {}
+        self._sequence: dict[int, int] = {}
+        self._lcd_versions: dict[int, int] = {}
+        self._next_lcd_us = sim.time_us
+        self._queue: queue.Queue = queue.Queue(QUEUE_LENGTH)
+        self._failure: BaseException | None = None
+        self._closed = False
+        self._start_file()
+        self._thread = threading.Thread(target=self._write_loop, name="eyesim-recorder", daemon=True)
+        self._thread.start()
+        self._sample_lcds(sim)
+        sim.step_observers.append(self)
+        sim.request_observers.append(self.on_request)
+        sim.events.subscribe(self)
+
+    def __enter__(self) -> "Recorder":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    # -- the file's start: schemas, channels, metadata, attachments, the scene ----------------------
+    def _start_file(self) -> None:
+        sim = self.sim
+        self._writer.start(profile=schemas.PROFILE, library=f"{schemas.LIBRARY} {__version__}")
+        schema_ids = {name: self._writer.register_schema(name, "jsonschema", schemas.schema_bytes(name))
+                      for name in schemas.SCHEMAS}
+        topics = [schemas.SCENE, schemas.TRANSFORMS, schemas.EVENTS, schemas.LOG, schemas.EDITS]
+        if sim.scene.settings.vis:
+            topics.append(schemas.RAYS)
+        topics += [schemas.robot_topic(r.id, c) for r in sim.robots for c in schemas.ROBOT_CHANNELS]
+        for topic in topics:
+            self._channels[topic] = self._writer.register_channel(topic, "json", schema_ids[schemas.schema_of(topic)])
+        self._writer.add_metadata("eyesim", {
+            "version": __version__, "start_time_s": repr(sim.time), "step_s": repr(sim.step_us / 1e6),
+            "pose_rate_hz": repr(1e6 / self.pose_period_us), "lcd_rate_hz": repr(1e6 / self.lcd_period_us),
+            "clock": sim.clock.mode})
+        texture = sim.scene.world.floor_texture
+        has_texture = bool(texture) and Path(texture).is_file()
+        if has_texture:
+            self._writer.add_attachment(0, sim.time_us * 1000, FLOOR_TEXTURE, "image/" + Path(texture).suffix[1:].lower(),
+                                        Path(texture).read_bytes())
+        for kind, things in (("robot", sim.robots), ("object", sim.objects)):
+            for thing in things:
+                if mesh_message.has_mesh(sim, thing.body):
+                    self._writer.add_attachment(0, sim.time_us * 1000, f"mesh/{kind}/{thing.id}", "application/json",
+                                                _json(mesh_message.mesh_message(sim.world.model, thing.body)))
+        viewer_scene = scene_message(sim, "/scene/floor-texture" if has_texture else None)
+        description = json.loads(json.dumps(dataclasses.asdict(sim.scene), default=str))
+        self._add(schemas.SCENE, sim.time_us, _json({"viewer": viewer_scene, "description": description}))
+
+    # -- observers, on the simulation thread --------------------------------------------------------
+    def __call__(self, sim) -> None:
+        """After every physics step."""
+        now = sim.time_us
+        if now % self.pose_period_us == 0:
+            transforms = sampling.transforms(sim)
+            self._put(schemas.TRANSFORMS, now, lambda: _json(transforms))
+            for robot in sim.robots:
+                state = sampling.robot_state(robot)
+                self._put(schemas.robot_topic(robot.id, "state"), now, lambda state=state: _json(state))
+            if sim.scene.settings.vis:
+                rays = sensor_rays(sim.robots)
+                self._put(schemas.RAYS, now, lambda: _json({"rays": rays}))
+        if now >= self._next_lcd_us:
+            self._sample_lcds(sim)
+
+    def _sample_lcds(self, sim) -> None:
+        now = sim.time_us
+        self._next_lcd_us = now + self.lcd_period_us
+        for robot in sim.robots:
+            lcd = robot.component(Lcd)
+            if lcd is None or self._lcd_versions.get(robot.id) == lcd.version:
+                continue
+            self._lcd_versions[robot.id] = lcd.version
+            pixels = lcd.screen().copy()
+            frame = schemas.robot_frame(robot.id)
+            self._put(schemas.robot_topic(robot.id, "lcd"), now, lambda p=pixels, f=frame: _image_message(now, f, p, "png"))
+
+    def on_request(self, robot, request, reply) -> None:
+        """A request the simulator answered at once: keep the readings and commands worth seeing."""
+        op, now = request.op, request.time_us
+        if op.code == g.OP_PSD_GET:
+            reading = {"robot": robot.id, "psd": request.args[0], "distance_mm": reply[0]}
+        elif op.code == g.OP_PSD_GET_RAW:
+            reading = {"robot": robot.id, "psd": request.args[0], "raw": reply[0]}
+        elif op.code == g.OP_LIDAR_GET:
+            self._put(schemas.robot_topic(robot.id, "lidar"), now, _laser_scan(robot, now, reply[1]))
+            return
+        elif op.code in _CAMERA_OPS:
+            camera = robot.component(Camera)
+            if camera is not None and camera.image is not None:
+                pixels, frame = camera.image.copy(), schemas.robot_frame(robot.id)
+                self._put(schemas.robot_topic(robot.id, "camera"), now,
+                          lambda: _image_message(now, frame, pixels, "jpeg"))
+            return
+        elif _is_command(op):
+            args = {name: value for (name, _), value in zip(op.request, request.args)}
+            self._put(schemas.robot_topic(robot.id, "command"), now,
+                      _json({"robot": robot.id, "op": op.name, "args": args}))
+            return
+        else:
+            return
+        self._put(schemas.robot_topic(robot.id, "psd"), now, _json(reading))
+
+    def on_event(self, message: dict) -> None:
+        kind, now = message["type"], self.sim.time_us
+        if kind == "input":
+            values = {k: v for k, v in message.items() if k != "type"}
+            self._put(schemas.robot_topic(message["robot"], "input"), now, _json(values))
+        elif kind == "edit":
+            self._put(schemas.EDITS, now, _json({k: v for k, v in message.items() if k != "type"}))
+        elif kind in VIEWER_EVENTS:
+            self._put(schemas.EVENTS, now, _json(message))
+            line = _log_line(message)
+            if line is not None:
+                level, text = line
+                self._put(schemas.LOG, now, _json({"timestamp": schemas.stamp(now), "level": level, "message": text,
+                                                   "name": f"robot {message['robot']}", "file": "", "line": 0}))
+
+    def on_snapshot(self, message: dict) -> None:
+        pass  # poses are sampled on simulation time (see __call__), not at wall-clock publish ticks
+
+    # -- the end ------------------------------------------------------------------------------------
+    def close(self) -> None:
+        """Stops observing, writes what the LCDs show now, and finishes the file (its index)."""
+        if self._closed:
+            return
+        self._closed = True
+        sim = self.sim
+        if self in sim.step_observers:
+            sim.step_observers.remove(self)
+        if self.on_request in sim.request_observers:
+            sim.request_observers.remove(self.on_request)
+        if self in sim.events.listeners:
+            sim.events.unsubscribe(self)
+        self._sample_lcds(sim)
+        self._queue.put(None)
+        self._thread.join()
+        try:
+            if self._failure is None:
+                self._writer.finish()
+        finally:
+            self._file.close()
+        if self._failure is not None:
+            raise OSError(f"writing {self.path} failed: {self._failure}") from self._failure
+
+    # -- writing ------------------------------------------------------------------------------------
+    def _put(self, topic: str, time_us: int, payload) -> None:
+        """Queue a message: `payload` is bytes, or a function that makes them on the writer thread."""
+        if self._failure is None:
+            self._queue.put((topic, time_us, payload))
+
+    def _write_loop(self) -> None:
+        while (item := self._queue.get()) is not None:
+            if self._failure is not None:
+                continue  # drain, so the simulation never blocks on a full queue
+            topic, time_us, payload = item
+            try:
+                self._add(topic, time_us, payload if isinstance(payload, bytes) else payload())
+            except Exception as error:  # a full disk: reported by close(), the run goes on
+                self._failure = error
+
+    def _add(self, topic: str, time_us: int, data: bytes) -> None:
+        channel = self._channels[topic]
+        sequence = self._sequence.get(channel, 0)
+        self._sequence[channel] = sequence + 1
+        self._writer.add_message(channel, log_time=time_us * 1000, data=data, publish_time=time_us * 1000,
+                                 sequence=sequence)
+
+
+def _laser_scan(robot, time_us: int, distances_mm: list[int]) -> bytes:
+    """foxglove.LaserScan of a LIDARGet: beams counter-clockwise from the first, in the robot's frame,
+    the scan plane turned about y by the tilt."""
+    scanner = robot.component(LidarScanner)
+    points = len(distances_mm)
+    step = math.radians(scanner.field) / points
+    start = (points // 2) * step  # beam 0 is the most counter-clockwise (docs/api/lidar.md)
+    tilt = math.radians(scanner.tilt)
+    return _json({"timestamp": schemas.stamp(time_us), "frame_id": schemas.robot_frame(robot.id),
+                  "pose": {"position": {"x": 0.0, "y": 0.0, "z": float(scanner.mount[2])},
+                           "orientation": {"x": 0.0, "y": math.sin(tilt / 2), "z": 0.0, "w": math.cos(tilt / 2)}},
+                  "start_angle": start, "end_angle": start - (points - 1) * step,
+                  "ranges": [d / 1000 for d in distances_mm], "intensities": []})
+
+
+def _log_line(message: dict) -> tuple[int, str] | None:
+    """Console output and program starts and exits as foxglove.Log lines."""
+    if message["type"] == "console":
+        level = schemas.LOG_ERROR if message["stream"] == "stderr" else schemas.LOG_INFO
+        return level, message["text"].rstrip("\n")
+    if message["type"] == "program":
+        if message["event"] == "started":
+            return schemas.LOG_INFO, f"program {message['name']} started"
+        code = message["exit_code"]
+        return (schemas.LOG_INFO if code == 0 else schemas.LOG_ERROR), f"program {message['name']} exited with code {code}"
+    return None

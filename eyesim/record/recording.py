@@ -1,0 +1,240 @@
+"""Reading an EyeSim MCAP recording: checked on opening, indexed for seeking (docs/recording.md).
+
+Opening reads the small messages once (poses, robot state, events) into arrays and lists; LCD and
+camera images stay in the file and are fetched by time through the MCAP chunk index, so seeking
+anywhere costs one chunk read. Anything wrong with the file raises RecordingError with a sentence
+that says what."""
+
+from __future__ import annotations
+
+import bisect
+import json
+from collections import defaultdict
+from pathlib import Path
+
+import numpy as np
+from mcap.reader import SeekingReader
+
+from eyesim.record import schemas
+
+MAGIC = b"\x89MCAP0\r\n"
+IMAGE_CHANNELS = ("lcd", "camera")
+
+
+class RecordingError(Exception):
+    """The file is missing, not a recording, damaged or truncated: the message says which."""
+
+
+class Recording:
+    """An EyeSim recording opened for reading. Times are simulation microseconds."""
+
+    def __init__(self, path: str | Path):
+        self.path = Path(path)
+        self._file = _open(self.path)
+        try:
+            self._reader = SeekingReader(self._file, validate_crcs=True)
+            self._load()
+        except RecordingError:
+            self._file.close()
+            raise
+        except Exception as error:  # MCAP's, zstandard's, JSON's errors have no common base class
+            self._file.close()
+            raise RecordingError(f"{self.path} is damaged and cannot be read ({error.__class__.__name__}: {error})") from None
+
+    def close(self) -> None:
+        self._file.close()
+
+    def __enter__(self) -> "Recording":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    # -- loading ------------------------------------------------------------------------------------
+    def _load(self) -> None:
+        summary = self._reader.get_summary()
+        if summary is None or summary.statistics is None:
+            raise RecordingError(f"{self.path} has no index: the recording was not finished "
+                                 "(the simulator was killed?) or the file is truncated")
+        topics = {channel.topic for channel in summary.channels.values()}
+        if schemas.SCENE not in topics:
+            raise RecordingError(f"{self.path} is an MCAP file but not an EyeSim recording (it has no {schemas.SCENE} channel)")
+        self.metadata = {m.name: dict(m.metadata) for m in self._reader.iter_metadata()}
+        self.scene: dict | None = None
+        self.description: dict | None = None
+        self.pose_times: list[int] = []
+        self._frames: dict[str, int] = {}
+        poses: list[list[float]] = []
+        self.states: dict[int, list[tuple[int, dict]]] = defaultdict(list)
+        self.rays: list[tuple[int, list]] = []
+        self.events: list[tuple[int, dict]] = []
+        self.inputs: list[tuple[int, dict]] = []
+        self.edits: list[tuple[int, dict]] = []
+        self.commands: list[tuple[int, dict]] = []
+        self.psd: dict[int, list[tuple[int, dict]]] = defaultdict(list)
+        self.lidar: dict[int, list[int]] = defaultdict(list)
+        self.images: dict[tuple[int, str], list[int]] = defaultdict(list)  # (robot, lcd|camera) -> times
+        for _, channel, message in self._reader.iter_messages():
+            topic, time_us = channel.topic, message.log_time // 1000
+            parts = topic.split("/")
+            robot_channel = parts[3] if len(parts) == 4 and parts[1] == "robot" else None
+            if robot_channel in IMAGE_CHANNELS:
+                self.images[(int(parts[2]), robot_channel)].append(time_us)
+                continue
+            if robot_channel == "lidar":
+                self.lidar[int(parts[2])].append(time_us)
+                continue
+            data = _decode(self.path, topic, time_us, message.data)
+            if topic == schemas.SCENE and self.scene is None:
+                self.scene, self.description = data["viewer"], data["description"]
+            elif topic == schemas.TRANSFORMS:
+                poses.append(self._pose_row(data))
+                self.pose_times.append(time_us)
+            elif topic == schemas.RAYS:
+                self.rays.append((time_us, data["rays"]))
+            elif topic == schemas.EVENTS:
+                self.events.append((time_us, data))
+            elif topic == schemas.EDITS:
+                self.edits.append((time_us, data))
+            elif robot_channel == "state":
+                self.states[int(parts[2])].append((time_us, data))
+            elif robot_channel == "psd":
+                self.psd[int(parts[2])].append((time_us, data))
+            elif robot_channel == "command":
+                self.commands.append((time_us, data))
+            elif robot_channel == "input":
+                self.inputs.append((time_us, data))
+        if self.scene is None:
+            raise RecordingError(f"{self.path} is an MCAP file but not an EyeSim recording (its {schemas.SCENE} channel is empty)")
+        self.poses = np.array(poses, dtype=np.float64).reshape(len(poses), len(self._frames), 7)
+        self._event_times = [t for t, _ in self.events]
+        self._ray_times = [t for t, _ in self.rays]
+        self.start_us = round(float(self.metadata.get("eyesim", {}).get("start_time_s", "0")) * 1e6)
+        self.end_us = max(self.start_us, summary.statistics.message_end_time // 1000)
+        self.robot_ids = [r["id"] for r in self.scene["robots"]]
+
+    def _pose_row(self, data: dict) -> list[float]:
+        """One sample's poses as a flat row (x, y, z, qw, qx, qy, qz per frame, frames in a fixed order)."""
+        row = [0.0] * (7 * max(len(self._frames), len(data["transforms"])))
+        for transform in data["transforms"]:
+            index = self._frames.setdefault(transform["child_frame_id"], len(self._frames))
+            if 7 * index >= len(row):
+                raise RecordingError(f"{self.path}: the frames of {schemas.TRANSFORMS} change during the recording")
+            t, q = transform["translation"], transform["rotation"]
+            row[7 * index:7 * index + 7] = [t["x"], t["y"], t["z"], q["w"], q["x"], q["y"], q["z"]]
+        return row
+
+    # -- poses --------------------------------------------------------------------------------------
+    @property
+    def duration_s(self) -> float:
+        return (self.end_us - self.start_us) / 1e6
+
+    def pose_index(self, time_us: int) -> int | None:
+        """The last pose sample at or before `time_us` (the first one before it starts); None: no samples."""
+        if not self.pose_times:
+            return None
+        return max(0, bisect.bisect_right(self.pose_times, time_us) - 1)
+
+    def pose(self, frame: str, index: int) -> tuple[list[float], list[float]] | None:
+        """(pos [x, y, z], quat [w, x, y, z]) of a frame (schemas.robot_frame(...) etc.) in sample `index`."""
+        column = self._frames.get(frame)
+        if column is None:
+            return None
+        values = self.poses[index, column]
+        return values[:3].tolist(), values[3:].tolist()
+
+    def robot_track(self, robot_id: int) -> tuple[list[int], np.ndarray]:
+        """Sample times and (N, 7) poses of a robot over the whole recording: x, y, z, qw, qx, qy, qz."""
+        column = self._frames.get(schemas.robot_frame(robot_id))
+        return (self.pose_times, self.poses[:, column]) if column is not None else ([], np.zeros((0, 7)))
+
+    def snapshot_at(self, time_us: int) -> dict | None:
+        """The viewer's `snapshot` message as it was at `time_us`, or None before any pose sample."""
+        index = self.pose_index(time_us)
+        if index is None:
+            return None
+        sample_us = self.pose_times[index]
+        robots = []
+        for robot_id in self.robot_ids:
+            pose = self.pose(schemas.robot_frame(robot_id), index)
+            if pose is not None:
+                entry = {"id": robot_id, "pos": pose[0], "quat": pose[1]}
+                state = self._latest(self.states.get(robot_id, ()), sample_us)
+                if state is not None and state.get("battery") is not None:
+                    entry["battery"] = round(state["battery"], 3)
+                robots.append(entry)
+        objects = [{"id": o["id"], "pos": p[0], "quat": p[1]} for o in self.scene["objects"]
+                   if (p := self.pose(schemas.object_frame(o["id"]), index)) is not None]
+        bodies = [{"id": b["id"], "pos": p[0], "quat": p[1]} for b in self.scene["bodies"]
+                  if (p := self.pose(schemas.body_frame(b["id"]), index)) is not None]
+        snapshot = {"type": "snapshot", "time": time_us / 1e6, "robots": robots, "objects": objects, "bodies": bodies}
+        if self.scene["settings"].get("vis"):
+            at = bisect.bisect_right(self._ray_times, time_us) - 1
+            snapshot["rays"] = self.rays[at][1] if at >= 0 else []
+        return snapshot
+
+    @staticmethod
+    def _latest(samples, time_us: int):
+        """The value of the last (time, value) at or before time_us in a time-sorted list."""
+        index = bisect.bisect_right(samples, time_us, key=lambda s: s[0]) - 1
+        return samples[index][1] if index >= 0 else None
+
+    # -- events and images ---------------------------------------------------------------------------
+    def events_until(self, time_us: int) -> list[dict]:
+        """Viewer events (console, menu, program, ...) up to and including `time_us`, in order."""
+        return [e for _, e in self.events[:bisect.bisect_right(self._event_times, time_us)]]
+
+    def image_time(self, robot_id: int, kind: str, time_us: int) -> int | None:
+        """The time of the robot's last LCD or camera image at or before `time_us`."""
+        times = self.images.get((robot_id, kind), [])
+        index = bisect.bisect_right(times, time_us) - 1
+        return times[index] if index >= 0 else None
+
+    def image(self, robot_id: int, kind: str, time_us: int) -> dict:
+        """The foxglove.CompressedImage message the robot's `kind` (lcd/camera) channel has at exactly time_us."""
+        topic = schemas.robot_topic(robot_id, kind)
+        try:
+            for _, _, message in self._reader.iter_messages(topics=[topic], starting_at=time_us * 1000,
+                                                            ending_at=time_us * 1000, reverse=True):
+                return _decode(self.path, topic, time_us, message.data)
+        except Exception as error:  # as above
+            raise RecordingError(f"{self.path} is damaged at t={time_us / 1e6:g} s: {error}") from None
+        raise RecordingError(f"{self.path} has no {kind} image of robot {robot_id} at t={time_us / 1e6:g} s")
+
+    def attachment(self, name: str) -> bytes | None:
+        """An attachment's data (the floor texture, a robot's or object's mesh), or None."""
+        for attachment in self._reader.iter_attachments():
+            if attachment.name == name:
+                return attachment.data
+        return None
+
+
+def _open(path: Path):
+    try:
+        file = open(path, "rb")
+    except IsADirectoryError:
+        raise RecordingError(f"{path} is a directory, not a recording") from None
+    except OSError as error:
+        raise RecordingError(f"cannot read {path}: {error.strerror}") from None
+    head = file.read(len(MAGIC))
+    if head != MAGIC:
+        file.close()
+        what = "empty" if not head else "not an MCAP file"
+        raise RecordingError(f"{path} is {what}: expected a recording made with `eyesim run --record FILE.mcap`")
+    file.seek(-len(MAGIC), 2)
+    if file.read(len(MAGIC)) != MAGIC:
+        file.close()
+        raise RecordingError(f"{path} is truncated: the recording was not finished (the simulator was killed?) "
+                             "or the file was cut short")
+    file.seek(0)
+    return file
+
+
+def _decode(path: Path, topic: str, time_us: int, data: bytes):
+    try:
+        value = json.loads(data)
+    except ValueError:
+        raise RecordingError(f"{path} is damaged: the message on {topic} at t={time_us / 1e6:g} s is not JSON") from None
+    if not isinstance(value, dict):
+        raise RecordingError(f"{path} is damaged: the message on {topic} at t={time_us / 1e6:g} s is not a JSON object")
+    return value

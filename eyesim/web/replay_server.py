@@ -1,0 +1,166 @@
+"""`eyesim replay`: the viewer page over a recording instead of a live simulation.
+
+The browser gets the recorded `scene`, a `timeline` message saying this is a replay, and then a
+`frame` for every time it asks for (`seek`); plots ask for `signals` and `series`, the paths for
+`paths` (docs/viewer-channel.md). The floor texture and .obj models come from the recording's
+attachments. Commands that would change a live run get an error. The page may send another
+recording (`POST /recording`): every open page then shows that one."""
+
+from __future__ import annotations
+
+import asyncio
+import json
+import logging
+import tempfile
+from pathlib import Path
+
+from aiohttp import WSMsgType, web
+
+from eyesim.record.recording import Recording, RecordingError
+from eyesim.web import timeline
+from eyesim.web.access import AccessPolicy
+from eyesim.web.server import MAX_COMMAND_BYTES, TEXTURE_TYPES, _reject_constant, static_file, viewer_url
+
+log = logging.getLogger("eyesim.web")
+MAX_UPLOAD_BYTES = 4 * 1024**3  # a recording sent from the page (hours of cameras are a few GB)
+
+
+class ReplayServer:
+    def __init__(self, recording, host: str = "127.0.0.1", port: int = 8080, token: str | None = None):
+        self.recording = recording
+        self.source = timeline.RecordingTimeline(recording)
+        self.host = host
+        self.port = port
+        self.access = AccessPolicy(host, token)
+        self._runner: web.AppRunner | None = None
+        self._pages: dict[web.WebSocketResponse, timeline.FrameCursor] = {}
+        self._uploads = tempfile.TemporaryDirectory(prefix="eyesim-replay-")
+        self._uploaded = 0
+
+    @property
+    def url(self) -> str:
+        return viewer_url(self.host, self.port, self.access)
+
+    async def start(self) -> None:
+        app = web.Application(middlewares=[self.access.middleware], client_max_size=MAX_UPLOAD_BYTES)
+        app.router.add_get("/ws", self._websocket)
+        app.router.add_post("/recording", self._open)
+        app.router.add_get("/scene/floor-texture", self._floor_texture)
+        app.router.add_get("/scene/mesh/{kind}/{id}", self._mesh)
+        app.router.add_get("/{path:.*}", static_file)
+        self._runner = web.AppRunner(app, access_log=None)
+        await self._runner.setup()
+        site = web.TCPSite(self._runner, self.host, self.port)
+        await site.start()
+        self.port = site._server.sockets[0].getsockname()[1]
+
+    async def stop(self) -> None:
+        if self._runner is not None:
+            await self._runner.cleanup()
+        if self.recording.path.parent.parent == Path(self._uploads.name):
+            self.recording.close()
+        self._uploads.cleanup()
+
+    async def _open(self, request: web.Request) -> web.Response:
+        """Another recording, sent by the page: checked, then shown on every open page."""
+        name = Path(request.query.get("name", "recording.mcap")).name or "recording.mcap"
+        self._uploaded += 1
+        folder = Path(self._uploads.name) / str(self._uploaded)
+        folder.mkdir()
+        path = folder / name
+        with open(path, "wb") as file:
+            async for chunk in request.content.iter_chunked(1 << 20):
+                file.write(chunk)
+        try:
+            recording = await asyncio.get_running_loop().run_in_executor(None, Recording, path)
+        except RecordingError as error:
+            return web.Response(status=400, text=str(error).replace(str(path), name))
+        previous, self.recording = self.recording, recording
+        self.source = timeline.RecordingTimeline(recording)
+        if previous.path.parent.parent == Path(self._uploads.name):
+            previous.close()
+        for ws in list(self._pages):
+            self._pages[ws] = timeline.FrameCursor()
+            await self._introduce(ws, self._pages[ws])
+        return web.Response(text=f"showing {name}")
+
+    async def _introduce(self, ws: web.WebSocketResponse, cursor: timeline.FrameCursor) -> None:
+        """The scene, the timeline and the first frame of the recording shown now."""
+        source = self.source
+        await ws.send_str(json.dumps(self.recording.scene))
+        await ws.send_str(json.dumps({"type": "timeline", "mode": "replay", "name": self.recording.path.name,
+                                      "start": source.start_us / 1e6, "end": source.end_us / 1e6}))
+        await ws.send_str(await cursor.frame(source, source.start_us))
+
+    async def _floor_texture(self, request: web.Request) -> web.StreamResponse:
+        data = self.recording.attachment("floor-texture")
+        kind = _image_kind(data) if data else None
+        if kind is None:
+            raise web.HTTPNotFound()
+        return web.Response(body=data, content_type=kind)
+
+    async def _mesh(self, request: web.Request) -> web.StreamResponse:
+        kind, number = request.match_info["kind"], request.match_info["id"]
+        if kind not in ("robot", "object") or not (number.isascii() and number.isdigit() and len(number) <= 9):
+            raise web.HTTPNotFound()
+        data = self.recording.attachment(f"mesh/{kind}/{int(number)}")
+        if data is None:
+            raise web.HTTPNotFound()
+        return web.Response(body=data, content_type="application/json")
+
+    async def _websocket(self, request: web.Request) -> web.WebSocketResponse:
+        ws = web.WebSocketResponse(heartbeat=20, max_msg_size=MAX_COMMAND_BYTES)
+        await ws.prepare(request)
+        self._pages[ws] = timeline.FrameCursor()
+        try:
+            await self._introduce(ws, self._pages[ws])
+            async for message in ws:
+                if message.type == WSMsgType.TEXT:
+                    reply = await self._answer(self._pages[ws], message.data)
+                elif message.type == WSMsgType.BINARY:
+                    reply = _error("binary messages are not understood: send JSON text")
+                else:
+                    continue
+                await ws.send_str(reply)
+        finally:
+            del self._pages[ws]
+        return ws
+
+    async def _answer(self, cursor: timeline.FrameCursor, text: str) -> str:
+        try:
+            data = json.loads(text, parse_constant=_reject_constant)
+        except (ValueError, RecursionError) as error:
+            return _error(f"not valid JSON: {error}")
+        if not isinstance(data, dict):
+            return _error("expected a JSON object")
+        if data.get("type") not in timeline.TIMELINE_COMMANDS:
+            return _error(f"{data.get('type')!r}: this is a replay of {self.recording.path.name}; "
+                          "it can be watched, not changed")
+        try:
+            return await timeline.answer(self.source, cursor, data)
+        except ValueError as error:
+            return _error(str(error))
+
+
+def _error(text: str) -> str:
+    return json.dumps({"type": "error", "message": text})
+
+
+def _image_kind(data: bytes) -> str | None:
+    """The Content-Type of a PNG, JPEG, BMP or GIF image, by its first bytes."""
+    signatures = {b"\x89PNG": "PNG", b"\xff\xd8\xff": "JPEG", b"BM": "BMP", b"GIF8": "GIF"}
+    for magic, name in signatures.items():
+        if data.startswith(magic):
+            return TEXTURE_TYPES[name]
+    return None
+
+
+async def serve(recording, host: str, port: int, on_ready) -> None:
+    """Serves the replay until cancelled; `on_ready(server)` once it listens."""
+    server = ReplayServer(recording, host, port)
+    await server.start()
+    on_ready(server)
+    try:
+        await asyncio.Event().wait()
+    finally:
+        await server.stop()

@@ -1,0 +1,184 @@
+"""The viewer's timeline (docs/viewer-channel.md, "Timeline"): the state at any time of a recording
+or of the live run's recent history, sent as a `frame` of ordinary viewer messages.
+
+A source (RecordingTimeline here, LiveHistory for a live run) answers what things were like at a
+time; a FrameCursor per browser remembers what that browser was sent, so playing forward sends
+only what changed and a jump back starts the robot panels afresh."""
+
+from __future__ import annotations
+
+import base64
+import bisect
+import inspect
+import io
+import json
+import math
+import reprlib
+from collections import defaultdict
+
+from PIL import Image
+
+from eyesim.record import signals
+
+LATEST_KINDS = ("menu", "program", "io")  # only the last one before a time matters
+STREAM_KINDS = ("console", "serial")  # everything before a time matters
+STREAM_BACKLOG = 500  # chunks per robot sent when a panel starts afresh (the console keeps 50,000 characters)
+PATH_STEP = 0.005  # m: a path gets a point once the robot moved this far (as the viewer's TRACE)
+
+
+class EventIndex:
+    """The viewer events of a timeline by kind and robot, in time order."""
+
+    def __init__(self):
+        self._latest: dict[tuple[str, int], list[tuple[int, dict]]] = defaultdict(list)
+        self._streams: dict[tuple[str, int], list[tuple[int, dict]]] = defaultdict(list)
+
+    def add(self, time_us: int, message: dict) -> None:
+        kind = message.get("type")
+        if kind in LATEST_KINDS:
+            self._latest[(kind, message["robot"])].append((time_us, message))
+        elif kind in STREAM_KINDS:
+            self._streams[(kind, message["robot"])].append((time_us, message))
+
+    def latest(self, kind: str, robot_id: int, time_us: int) -> dict | None:
+        events = self._latest.get((kind, robot_id), [])
+        index = bisect.bisect_right(events, time_us, key=lambda e: e[0]) - 1
+        return events[index][1] if index >= 0 else None
+
+    def stream(self, kind: str, robot_id: int, after_us: float, until_us: int) -> list[dict]:
+        """The events after `after_us` up to and including `until_us`."""
+        events = self._streams.get((kind, robot_id), [])
+        first = bisect.bisect_right(events, after_us, key=lambda e: e[0])
+        return [e for _, e in events[first:bisect.bisect_right(events, until_us, key=lambda e: e[0])]]
+
+    def forget_before(self, time_us: int) -> None:
+        """Drops what no time from `time_us` on needs (bounded live history)."""
+        for events in self._latest.values():
+            keep = max(0, bisect.bisect_right(events, time_us, key=lambda e: e[0]) - 1)
+            del events[:keep]
+        for events in self._streams.values():
+            del events[:bisect.bisect_left(events, time_us, key=lambda e: e[0])]
+
+
+class RecordingTimeline:
+    """A recording (eyesim.record.Recording) as a timeline source."""
+
+    def __init__(self, recording):
+        self.recording = recording
+        self.robot_ids = recording.robot_ids
+        self.start_us, self.end_us = recording.start_us, recording.end_us
+        self.states, self.psd = recording.states, recording.psd
+        self.events = EventIndex()
+        for time_us, message in recording.events:
+            self.events.add(time_us, message)
+        self._images: dict[tuple, str] = {}
+
+    def snapshot_at(self, time_us: int) -> dict | None:
+        return self.recording.snapshot_at(time_us)
+
+    def robot_track(self, robot_id: int):
+        return self.recording.robot_track(robot_id)
+
+    def image_time(self, robot_id: int, kind: str, time_us: int) -> int | None:
+        return self.recording.image_time(robot_id, kind, time_us)
+
+    def image_message(self, robot_id: int, kind: str, image_us: int) -> str:
+        key = (robot_id, kind, image_us)
+        if key not in self._images:
+            if len(self._images) > 256:
+                self._images.clear()
+            image = self.recording.image(robot_id, kind, image_us)
+            if kind == "lcd":
+                message = {"type": "lcd", "robot": robot_id, "png": image["data"]}
+            else:
+                width, height = Image.open(io.BytesIO(base64.b64decode(image["data"]))).size
+                message = {"type": "camera", "robot": robot_id, "width": width, "height": height, "jpeg": image["data"]}
+            self._images[key] = json.dumps(message)
+        return self._images[key]
+
+
+class FrameCursor:
+    """What one browser has been sent of a timeline."""
+
+    def __init__(self):
+        self.time_us: int | None = None
+        self.sent: dict[tuple[str, int], object] = {}
+
+    async def frame(self, source, time_us: int) -> str:
+        """The `frame` message for `time_us` (clamped to the source's range)."""
+        time_us = min(max(time_us, source.start_us), source.end_us)
+        afresh = self.time_us is None or time_us < self.time_us
+        if afresh:
+            self.sent.clear()
+        after_us = -math.inf if afresh else self.time_us
+        self.time_us = time_us
+        messages: list[str] = []
+        for robot_id in source.robot_ids:
+            await self._robot(source, robot_id, after_us, time_us, messages)
+        snapshot = source.snapshot_at(time_us)
+        if snapshot is not None:
+            messages.append(json.dumps(snapshot))
+        clear = json.dumps(list(source.robot_ids) if afresh else [])
+        return (f'{{"type":"frame","time":{time_us / 1e6!r},"start":{source.start_us / 1e6!r},'
+                f'"end":{source.end_us / 1e6!r},"clear":{clear},"messages":[{",".join(messages)}]}}')
+
+    async def _robot(self, source, robot_id: int, after_us: float, time_us: int, messages: list[str]) -> None:
+        for kind in LATEST_KINDS:  # a panel that starts afresh (`clear`) has none of these
+            event = source.events.latest(kind, robot_id, time_us)
+            if event is not None and self.sent.get((kind, robot_id)) is not event:
+                self.sent[(kind, robot_id)] = event
+                messages.append(json.dumps(event))
+        for kind in STREAM_KINDS:
+            chunks = source.events.stream(kind, robot_id, after_us, time_us)
+            messages.extend(json.dumps(chunk) for chunk in chunks[-STREAM_BACKLOG:])
+        for kind in ("lcd", "camera"):
+            shown = source.image_time(robot_id, kind, time_us)
+            if shown is not None and self.sent.get((kind, robot_id)) != shown:
+                self.sent[(kind, robot_id)] = shown
+                text = source.image_message(robot_id, kind, shown)
+                messages.append(await text if inspect.isawaitable(text) else text)
+
+
+def paths(source) -> dict:
+    """The `paths` message: each robot's path, a point whenever it moved PATH_STEP, with its time."""
+    robots = []
+    for robot_id in source.robot_ids:
+        times, poses = source.robot_track(robot_id)
+        kept_times, points = [], []
+        last = None
+        for time_us, (x, y) in zip(times, poses[:, :2].tolist()):
+            if last is None or math.hypot(x - last[0], y - last[1]) >= PATH_STEP:
+                last = (x, y)
+                kept_times.append(time_us / 1e6)
+                points += [round(x, 4), round(y, 4)]
+        robots.append({"id": robot_id, "times": kept_times, "points": points})
+    return {"type": "paths", "robots": robots}
+
+
+async def answer(source, cursor: FrameCursor, message: dict) -> str:
+    """The reply to a timeline command (seek, signals, series, paths); ValueError for a bad one."""
+    kind = message.get("type")
+    if kind == "seek":
+        seconds = message.get("time")
+        if isinstance(seconds, bool) or not isinstance(seconds, (int, float)) or not math.isfinite(seconds):
+            raise ValueError(f"seek: time {reprlib.repr(seconds)} is not a number of seconds")
+        return await cursor.frame(source, round(seconds * 1e6))
+    if kind == "signals":
+        return json.dumps({"type": "signals", "signals": signals.catalogue(source)})
+    if kind == "series":
+        ids = message.get("ids")
+        if not isinstance(ids, list) or not all(isinstance(i, str) for i in ids) or len(ids) > 32:
+            raise ValueError("series: ids must be a list of up to 32 signal ids")
+        found = []
+        for signal_id in ids:
+            values = signals.series(source, signal_id)
+            if values is None:
+                raise ValueError(f"series: no signal {reprlib.repr(signal_id)}")
+            found.append({"id": signal_id, "times": values[0], "values": values[1]})
+        return json.dumps({"type": "series", "series": found})
+    if kind == "paths":
+        return json.dumps(paths(source))
+    raise ValueError(f"unknown message type {kind!r}")
+
+
+TIMELINE_COMMANDS = ("seek", "signals", "series", "paths")
