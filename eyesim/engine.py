@@ -20,6 +20,7 @@ import heapq
 import itertools
 import logging
 import queue
+import reprlib
 import struct
 import time
 import traceback
@@ -308,6 +309,8 @@ class Simulation:
         try:
             if op.code == g.OP_HELLO:
                 result = self._hello(request)
+            elif op.code == g.OP_THREADS and session.robot is not None:
+                result = self._threads(session)
             elif session.robot is None:
                 raise commands.CommandError("the first request must be the HELLO handshake", g.ERR_NO_HANDSHAKE)
             else:
@@ -346,7 +349,7 @@ class Simulation:
         """Simulation time an answered call takes: the call time, or the op's own cost when that is
         larger (camera images). Blocking calls cost only what they wait (OSWait(n) exactly n ms),
         so waits and timers stay exact; the handshake costs nothing."""
-        if op.blocking or op.code == g.OP_HELLO:
+        if op.blocking or op.group == "session":  # the handshake and the library's notices
             return op.cost_us
         return max(op.cost_us, self.call_time_us)
 
@@ -394,6 +397,15 @@ class Simulation:
         log.info("%s connected", session.name)
         return (g.VERSION, robot.id, robot.name)
 
+    def _threads(self, session: Session) -> tuple:
+        """The library says a second thread of the program makes calls (THREADS, sent once)."""
+        if self.clock.deterministic:
+            log.warning("robot %d (%s): RoBIOS calls come from more than one thread of the program; their "
+                        "order follows the operating system's scheduling, so this deterministic run may not "
+                        "repeat exactly (docs/running.md#time)", session.robot.id,
+                        session.program or "program")
+        return (0,)
+
     def _choose_robot(self, selector: str):
         taken = {s.robot.id for s in self.sessions if s.robot is not None and not s.closed}
         names = ", ".join(f"{r.id} {r.name}" for r in self.robots) or "none"
@@ -404,12 +416,14 @@ class Simulation:
             if not free:
                 raise commands.CommandError(f"every robot already runs a program (robots: {names})", g.ERR_NO_ROBOT)
             return free[0]
-        if selector.isdigit():
-            candidates = [self.robot_by_id(int(selector))] if self.robot_by_id(int(selector)) else []
+        if selector.isascii() and selector.isdigit():  # not '²', which isdigit() but int() refuses
+            robot = self.robot_by_id(int(selector)) if len(selector) <= 9 else None
+            candidates = [robot] if robot else []
         else:
             candidates = [r for r in self.robots if r.name.lower() == selector.lower()]
         if not candidates:
-            raise commands.CommandError(f"no robot {selector!r} in the scene (robots: {names})", g.ERR_NO_ROBOT)
+            raise commands.CommandError(f"no robot {reprlib.repr(selector)} in the scene (robots: {names})",
+                                        g.ERR_NO_ROBOT)
         free = [r for r in candidates if r.id not in taken]
         if not free:
             raise commands.CommandError(f"robot {selector!r} already runs a program", g.ERR_NO_ROBOT)

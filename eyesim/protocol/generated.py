@@ -22,6 +22,7 @@ ERR_SHUTDOWN = 9
 ERROR_PAYLOAD = (('code', 'i32'), ('message', 'str'))
 
 OP_HELLO = 1
+OP_THREADS = 2
 OP_LCD_PRINTF = 257
 OP_LCD_SET_PRINTF = 258
 OP_LCD_CLEAR = 259
@@ -125,6 +126,7 @@ OP_SIM_GET_OBJECT_COUNT = 4102
 
 OPS = {
     1: OpSpec('HELLO', 1, 'session', 0, False, (('version', 'u32'), ('robot', 'str'), ('program', 'str'), ('pid', 'u32')), (('version', 'u32'), ('robot_id', 'i32'), ('robot_name', 'str'))),
+    2: OpSpec('THREADS', 2, 'session', 0, False, (), (('result', 'i32'),)),
     257: OpSpec('LCD_PRINTF', 257, 'lcd', 100, False, (('text', 'str'),), (('result', 'i32'),)),
     258: OpSpec('LCD_SET_PRINTF', 258, 'lcd', 100, False, (('row', 'i32'), ('column', 'i32'), ('text', 'str')), (('result', 'i32'),)),
     259: OpSpec('LCD_CLEAR', 259, 'lcd', 100, False, (), (('result', 'i32'),)),

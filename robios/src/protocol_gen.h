@@ -25,6 +25,7 @@
 typedef enum { ES_T_END = 0, ES_T_I32 = 1, ES_T_U32 = 2, ES_T_F64 = 3, ES_T_STR = 4, ES_T_BYTES = 5, ES_T_I32S = 6 } es_type;
 
 #define ES_OP_HELLO 1
+#define ES_OP_THREADS 2
 #define ES_OP_LCD_PRINTF 257
 #define ES_OP_LCD_SET_PRINTF 258
 #define ES_OP_LCD_CLEAR 259
@@ -137,6 +138,7 @@ typedef struct {
 
 static const es_op_layout ES_OP_LAYOUTS[] = {
     {1, "HELLO", 4, {ES_T_U32, ES_T_STR, ES_T_STR, ES_T_U32}, 3, {ES_T_U32, ES_T_I32, ES_T_STR}},
+    {2, "THREADS", 0, {ES_T_END}, 1, {ES_T_I32}},
     {257, "LCD_PRINTF", 1, {ES_T_STR}, 1, {ES_T_I32}},
     {258, "LCD_SET_PRINTF", 3, {ES_T_I32, ES_T_I32, ES_T_STR}, 1, {ES_T_I32}},
     {259, "LCD_CLEAR", 0, {ES_T_END}, 1, {ES_T_I32}},
@@ -238,7 +240,7 @@ static const es_op_layout ES_OP_LAYOUTS[] = {
     {4101, "SIM_GET_ROBOT_COUNT", 0, {ES_T_END}, 1, {ES_T_I32}},
     {4102, "SIM_GET_OBJECT_COUNT", 0, {ES_T_END}, 1, {ES_T_I32}},
 };
-#define ES_OP_COUNT 101
+#define ES_OP_COUNT 102
 static const es_type ES_ERROR_LAYOUT[] = {ES_T_I32, ES_T_STR};
 
 #endif

@@ -669,11 +669,32 @@ static int take_reply(const char *function, uint16_t op, uint8_t *body, uint32_t
     return 0;
 }
 
+/* The simulator is told, once, when a second thread of the program makes calls: in a deterministic
+ * run the order of two threads' calls is the OS scheduler's, so the run may not repeat. The first
+ * caller is the program's own thread; the library's threads (timer callbacks) do not count. */
+static void note_calling_thread(void)
+{
+#if defined(__linux__)
+    static atomic_long first_caller;
+    static atomic_bool told;
+    long id = thread_id();
+    long none = 0;
+    if (!id || atomic_compare_exchange_strong(&first_caller, &none, id) || none == id || is_library_thread(id))
+        return;
+    if (!atomic_exchange(&told, true)) {
+        es_value reply[1];
+        es_call("THREADS", ES_OP_THREADS, NULL, reply);
+    }
+#endif
+}
+
 int es_call(const char *function, uint16_t op, const es_value *args, es_value *results)
 {
     if (program_ending())
         return -1;
     pthread_once(&connect_once, connect_to_simulator);
+    if (op != ES_OP_THREADS)
+        note_calling_thread();
     free(kept_reply);
     kept_reply = NULL;
 
