@@ -38,7 +38,7 @@
 typedef struct waiter {
     uint32_t request_id;
     pthread_cond_t ready;
-    uint8_t *body; /* the reply's frame body, handed over by the reader thread */
+    uint8_t *body; /* the reply's frame body, handed over by whichever thread read it */
     uint32_t len;
     struct waiter *next;
 } waiter;
@@ -51,8 +51,9 @@ static int sock = -1;
 static char address[300]; /* "host:port", for messages */
 
 static pthread_mutex_t send_lock = PTHREAD_MUTEX_INITIALIZER; /* whole frames, one at a time */
-static pthread_mutex_t wait_lock = PTHREAD_MUTEX_INITIALIZER; /* guards waiters, connection_dead */
+static pthread_mutex_t wait_lock = PTHREAD_MUTEX_INITIALIZER; /* guards waiters, reading, connection_dead */
 static waiter *waiters;
+static bool reading;         /* a caller is reading replies from the socket for everyone */
 static bool connection_dead; /* set only once the program is exiting anyway */
 
 static atomic_uint last_request_id;
@@ -67,7 +68,6 @@ static uint32_t reported[REPORTED_ERRORS_MAX];
 static unsigned reported_count;
 
 static _Thread_local uint8_t *kept_reply; /* backs text/array results until the thread's next call */
-static _Thread_local bool reader_thread;  /* the thread that delivers replies can never wait for one */
 static atomic_bool connected;             /* the handshake is done */
 
 static atomic_long library_tids[LIBRARY_THREADS_MAX]; /* kernel ids of the library's threads (0 = free) */
@@ -272,15 +272,18 @@ static void report_error(const char *function, const es_value *fields)
         fprintf(stderr, "eyesim: %s: %.*s\n", function, (int)message->n, (const char *)message->p);
 }
 
-/* ---- The reader thread ------------------------------------------------------------------------- */
+/* ---- Reading replies ---------------------------------------------------------------------------
+ * No thread of its own reads the socket: a caller waiting for its reply reads, for everyone, while
+ * no other caller does (one reader at a time), and hands each reply to its waiter. A single-threaded
+ * program thus gets its reply with no thread wake-up in between; with several threads calling, the
+ * reader passes the role on when its own reply has come. */
 
-/* Hands a reply to the caller waiting for its request id. Anything else is dropped; an error
- * nobody asked for (the simulator complaining about the connection) is still shown. */
+/* Hands a reply to the caller waiting for its request id (wait_lock held). Anything else is dropped;
+ * an error nobody asked for (the simulator complaining about the connection) is still shown. */
 static void deliver(uint8_t *body, uint32_t len)
 {
     es_header header;
     es_decode_header(body, len, &header); /* cannot fail: read_frame checked the length */
-    pthread_mutex_lock(&wait_lock);
     waiter *w = waiters;
     while (w && (w->request_id != header.request_id || w->body))
         w = w->next;
@@ -288,10 +291,8 @@ static void deliver(uint8_t *body, uint32_t len)
         w->body = body;
         w->len = len;
         pthread_cond_signal(&w->ready);
-    }
-    pthread_mutex_unlock(&wait_lock);
-    if (w)
         return;
+    }
     es_value fields[8];
     unsigned count;
     if (header.kind == ES_KIND_ERROR && es_decode_message(body, len, &header, fields, &count) == ES_CODEC_OK)
@@ -299,24 +300,35 @@ static void deliver(uint8_t *body, uint32_t len)
     free(body);
 }
 
-static void *read_replies(void *unused)
+/* Called with wait_lock held by a caller whose reply has not come and while nobody reads: reads one
+ * frame (the lock let go meanwhile) and delivers it. */
+static void read_one_reply(void)
 {
-    (void)unused;
-    reader_thread = true;
-    for (;;) {
-        uint8_t *body;
-        uint32_t len;
-        int rc = read_frame(-1, &body, &len);
-        if (rc == READ_BAD_LENGTH && !atomic_load(&exiting))
-            es_fatal(ES_EXIT_PROTOCOL, "the simulator at %s sent a malformed frame; the program ends", address);
-        if (rc == READ_NO_MEMORY)
-            es_fatal(ES_EXIT_PROTOCOL, "out of memory reading a reply from the simulator");
-        if (rc) {
-            connection_lost(read_error(rc));
-            return NULL;
-        }
+    reading = true;
+    pthread_mutex_unlock(&wait_lock);
+    uint8_t *body;
+    uint32_t len;
+    int rc = read_frame(-1, &body, &len);
+    if (rc == READ_BAD_LENGTH && !atomic_load(&exiting))
+        es_fatal(ES_EXIT_PROTOCOL, "the simulator at %s sent a malformed frame; the program ends", address);
+    if (rc == READ_NO_MEMORY)
+        es_fatal(ES_EXIT_PROTOCOL, "out of memory reading a reply from the simulator");
+    if (rc)
+        connection_lost(read_error(rc)); /* returns only while the program is exiting anyway */
+    pthread_mutex_lock(&wait_lock);
+    reading = false;
+    if (!rc)
         deliver(body, len);
-    }
+}
+
+/* A reader whose own reply came lets another waiting caller take over reading (wait_lock held). */
+static void pass_on_reading(void)
+{
+    for (waiter *w = waiters; w; w = w->next)
+        if (!w->body) {
+            pthread_cond_signal(&w->ready);
+            return;
+        }
 }
 
 /* ---- The library's threads ---------------------------------------------------------------------- */
@@ -410,6 +422,17 @@ static bool program_threads_alive(void)
     return alive;
 }
 
+/* The simulator closed the connection while no call reads it (the program computes): the program
+ * ends now, as it would at its next call. A caller that reads sees the end itself. */
+static bool simulator_hung_up(void)
+{
+    pthread_mutex_lock(&wait_lock);
+    bool idle = !reading;
+    pthread_mutex_unlock(&wait_lock);
+    struct pollfd p = {.fd = sock, .events = POLLRDHUP};
+    return idle && poll(&p, 1, 0) == 1 && (p.revents & (POLLRDHUP | POLLHUP)) && !atomic_load(&exiting);
+}
+
 /* A process ends when its last thread ends; the library's threads would keep it alive for ever
  * after a main that ends with pthread_exit (the multitasking examples do). This thread ends the
  * program once only library threads are left, as the last thread's pthread_exit would have: exit(0),
@@ -422,17 +445,16 @@ static void *watch_program(void *unused)
         sleep_ms(WATCH_INTERVAL_MS);
         if (!program_threads_alive())
             exit(0);
+        if (simulator_hung_up())
+            connection_lost("connection closed");
     }
 }
 #endif
 
 static void start_library_threads(void)
 {
-    int rc = es_start_library_thread(read_replies);
-    if (rc)
-        es_fatal(ES_EXIT_PROTOCOL, "cannot start the thread that reads replies (%s)", strerror(rc));
 #if defined(__linux__)
-    rc = es_start_library_thread(watch_program);
+    int rc = es_start_library_thread(watch_program);
     if (rc)
         fprintf(stderr, "eyesim: cannot start the thread that ends the program with its own threads (%s)\n",
                 strerror(rc));
@@ -632,7 +654,7 @@ static void connect_to_simulator(void)
 
 bool es_may_wait_in_simulation(void)
 {
-    return atomic_load(&connected) && !reader_thread && !atomic_load(&exiting);
+    return atomic_load(&connected) && !atomic_load(&exiting);
 }
 
 static bool has_variable_fields(const es_type *types, unsigned count)
@@ -726,15 +748,25 @@ int es_call(const char *function, uint16_t op, const es_value *args, es_value *r
     }
     es_buf_free(&frame);
 
-    /* Other threads' calls go on meanwhile: only this caller sleeps until its reply is routed here. */
+    /* Read replies while nobody else does, else sleep until the reader hands this one over (or
+     * passes the reading on). Other threads' calls go on meanwhile. */
     pthread_mutex_lock(&wait_lock);
-    while (!dead && !me.body && !connection_dead)
-        pthread_cond_wait(&me.ready, &wait_lock);
+    bool was_reader = false;
+    while (!dead && !me.body && !connection_dead) {
+        if (reading) {
+            pthread_cond_wait(&me.ready, &wait_lock);
+        } else {
+            was_reader = true;
+            read_one_reply();
+        }
+    }
     for (waiter **link = &waiters; *link; link = &(*link)->next)
         if (*link == &me) {
             *link = me.next;
             break;
         }
+    if (was_reader && !reading)
+        pass_on_reading();
     pthread_mutex_unlock(&wait_lock);
     pthread_cond_destroy(&me.ready);
 

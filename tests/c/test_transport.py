@@ -148,6 +148,32 @@ def test_simulator_closing_mid_run_ends_the_program(compiler, fake_sim):
     assert f"eyesim: lost the connection to the simulator at 127.0.0.1:{fake_sim.port}" in err
 
 
+COMPUTE_FOREVER = r"""
+#include "eyebot.h"
+int main(void)
+{
+    volatile unsigned long n = 0;
+    PSDGet(PSD_FRONT);
+    for (;;) /* computes, never calls again */
+        n++;
+}
+"""
+
+
+def test_simulator_closing_ends_a_program_that_makes_no_call(compiler, fake_sim):
+    """No thread of the library reads replies; the library's watcher notices the hang-up instead."""
+    proc = subprocess.Popen([str(compiler.build(COMPUTE_FOREVER, name="compute_forever"))], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, env=fake_sim.env())
+    try:
+        assert fake_sim.wait_for(lambda: fake_sim.count("PSD_GET") == 1)
+        fake_sim.close_clients()
+        _, err = proc.communicate(timeout=10)
+    finally:
+        proc.kill()
+    assert proc.returncode == EXIT_CONNECTION_LOST
+    assert len(eyesim_lines(err)) == 1 and "lost the connection" in err
+
+
 def test_simulator_closing_ends_the_program_while_threads_are_blocked(compiler, fake_sim):
     fake_sim.script.update(KEY_GET=fake_sim.HOLD, VW_WAIT=fake_sim.HOLD)
     proc = subprocess.Popen([str(compiler.build(BLOCKED_THREADS, name="blocked_threads"))],
@@ -372,5 +398,6 @@ def test_many_threads_get_their_own_replies(compiler, fake_sim):
     )
     ran = run(compiler.build(HAMMER, name="hammer"), fake_sim.env(), timeout=60)
     assert (ran.returncode, ran.stdout, ran.stderr) == (0, "wrong 0\n", "")
-    ids = [r.request_id for r in fake_sim.requests]
+    ids = [r.request_id for r in fake_sim.requests if r.op != "THREADS"]
     assert len(ids) == 8 * 300 and len(set(ids)) == len(ids)
+    assert fake_sim.count("THREADS") == 1  # the library said once that several threads call
