@@ -63,6 +63,7 @@ class VwController(Component):
         self.max_turn = max_turn  # rad/s
         self.metres_per_tick = 2 * math.pi * drive.radius / drive.ticks_per_rev
         self.half_track = drive.track / 2
+        self.turn_accel = LINEAR_ACCEL / self.half_track  # rad/s^2 of the ramp
         self.reset()
 
     def reset(self) -> None:
@@ -187,26 +188,35 @@ class VwController(Component):
         self.odometry = [x, y, phi]
 
     # -- control loop ------------------------------------------------------------------------
+    # These run for every driving robot at every step: locals instead of repeated attribute
+    # look-ups, and the ramp written out (docs/performance.md, "Where a step's time goes").
     def before_step(self, dt: float) -> None:
         if not self.engaged:
             return
         if self.manoeuvre is not None:
             self._plan()
-        half_track = self.half_track
-        v = self.v = _ramp(self.v, self.target_v, LINEAR_ACCEL * dt)
-        w = self.w = _ramp(self.w, self.target_w, LINEAR_ACCEL / half_track * dt)
-        r = self.drive.radius
+        v, w, target_v, target_w = self.v, self.w, self.target_v, self.target_w
+        v = _ramp(v, target_v, LINEAR_ACCEL * dt)
+        w = _ramp(w, target_w, self.turn_accel * dt)
+        self.v, self.w = v, w
+        half_track, r = self.half_track, self.drive.radius
         left, right = self.drive.wheels
         left.set_speed((v - w * half_track) / r)
         right.set_speed((v + w * half_track) / r)
-        if self.manoeuvre is None and v == self.target_v and w == self.target_w:
+        if self.manoeuvre is None and v == target_v and w == target_w:
             # Steady: the wheels keep these speeds on their own until the next command.
             self.engaged = False
             self.driving = v != 0.0 or w != 0.0
 
     def _plan(self) -> None:
         m = self.manoeuvre
-        distance, rotation = self._progress()
+        if self._last_left is None:
+            distance, rotation = self._progress()
+        else:  # _progress() written out, with the ticks after_step read
+            per_tick = self.metres_per_tick
+            left = (self._last_left - m.start_ticks[0]) * per_tick
+            right = (self._last_right - m.start_ticks[1]) * per_tick
+            distance, rotation = (left + right) / 2, (right - left) / self.drive.track
         remaining = m.length - m.sign * (rotation if m.on_the_spot else distance)
         if remaining <= m.tolerance:
             if m.on_the_spot or m.rotation == 0:
@@ -230,13 +240,14 @@ class VwController(Component):
             self.w = self.v * m.curvature - HEADING_GAIN * heading_error
 
     def after_step(self, dt: float) -> None:
-        wheels = self.drive.wheels
-        left, right = wheels[0].raw_ticks(), wheels[1].raw_ticks()
+        left_wheel, right_wheel = self.drive.wheels
+        left, right = left_wheel.raw_ticks(), right_wheel.raw_ticks()
         last_left, last_right = self._last_left, self._last_right
         if left != last_left or right != last_right:
             self._last_left, self._last_right = left, right
             if last_left is not None:
-                self._integrate((left - last_left) * self.metres_per_tick, (right - last_right) * self.metres_per_tick)
+                per_tick = self.metres_per_tick
+                self._integrate((left - last_left) * per_tick, (right - last_right) * per_tick)
         if self.driving:
             self._window_time += dt
             if self._window_start is None or self._window_time >= STALL_WINDOW:
@@ -289,9 +300,12 @@ class VwController(Component):
 
 
 def _ramp(current: float, target: float, step: float) -> float:
+    """`current` moved towards `target` by at most `step` (comparisons, not min/max: cheaper)."""
     if target > current:
-        return min(target, current + step)
-    return max(target, current - step)
+        moved = current + step
+        return target if target < moved else moved
+    moved = current - step
+    return target if target > moved else moved
 
 
 def create(context) -> list[Component]:
