@@ -3,6 +3,7 @@ and each limit just past it, is refused with an error naming the limit at its fi
 hang, a MemoryError or a traceback; crowds of bodies are spread or refused; a large legal world
 loads and builds. Files are generated here; time bounds are only generous guards against hangs."""
 
+import json
 import math
 import time
 import tracemalloc
@@ -140,6 +141,17 @@ def test_a_maze_past_the_wall_limit_is_refused(tmp_path):
     rows = [bars if n % 2 == 0 else "" for n in range(201)]
     error = refusal(write(tmp_path, "big.maz", rows))
     assert error.message == "more than 20000 walls, the limit for a world"
+
+
+def test_a_json_world_past_the_wall_limit_is_refused_before_its_schema_is_checked(tmp_path):
+    walls = [{"x1": i % 300 * 10, "y1": i // 300 * 10, "x2": i % 300 * 10 + 5, "y2": i // 300 * 10}
+             for i in range(limits.MAX_WALLS + 1)]
+    path = tmp_path / "walls.json"
+    path.write_text(json.dumps({"format": "eyesim.world", "version": 1, "walls": walls}))
+    start = time.perf_counter()
+    error = refusal(path)
+    assert time.perf_counter() - start < 10  # a guard: validating 100 000 walls took 11 s
+    assert (error.location.line, error.message) == (1, "more than 20000 walls, the limit for a world")
 
 
 def test_robots_past_the_limit_are_refused_at_the_first_one_too_many(tmp_path):
