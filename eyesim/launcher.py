@@ -65,7 +65,12 @@ class Launcher:
     def start(self, robot_id: int, path: str | Path) -> ProgramRun:
         run = ProgramRun(robot_id, Path(path))
         self.runs.append(run)
-        if not run.path.is_file():
+        try:
+            found = run.path.is_file()
+        except OSError as error:  # a name the file system refuses (too long), not just a missing file
+            found = False
+            path = f"{str(path)[:80]}... ({error.strerror})" if len(str(path)) > 80 else f"{path} ({error.strerror})"
+        if not found:
             run.error = f"program not found: {path}"
             self._print(run, "stderr", f"eyesim: {run.error}\n")
             return run

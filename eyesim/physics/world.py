@@ -17,6 +17,13 @@ DEFAULT_FLOOR = 2.0  # m, floor side for a world with neither a size nor walls
 FLOOR_FRICTION = 1.0
 MARKER_RADIUS = 0.025  # m, as the viewer draws them
 MARKER_THICKNESS = 0.0005  # m: flat on the floor, only there to be seen (by cameras)
+# MuJoCo's arena (contacts, constraints and its working memory) is sized from the scene: its own
+# default grows with the square of the bodies (1.8 GB for 1000 cans, 6.4 GB for 2000), which
+# can fail to allocate. A contact with its constraints takes about 3 kB (measured), so this is
+# room for about 30 contacts per body; bodies start apart (scene/placement.py), so a scene
+# that runs out has piled things up, and MuJoCo then drops contacts with a warning.
+ARENA_BASE = 16 * 1024 * 1024  # bytes: the model's own working memory and a few contacts
+ARENA_PER_BODY = 96 * 1024  # bytes
 
 
 @dataclass(frozen=True)
@@ -146,6 +153,8 @@ class PhysicsWorld:
     scene's water volume (physics/water.py) or None."""
 
     def __init__(self, spec: mujoco.MjSpec, water=None):
+        if spec.memory < 0:  # not chosen by the caller
+            spec.memory = ARENA_BASE + ARENA_PER_BODY * len(spec.bodies)
         self.model = spec.compile()
         self.data = mujoco.MjData(self.model)
         self.water = water

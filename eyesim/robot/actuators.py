@@ -55,6 +55,7 @@ class WheelMotor:
         model, data = world.model, world.data
         self.model, self.data = model, data
         self.actuator = world.actuator_id(self.name)
+        self._ctrl = data.ctrl  # the array itself: `data.ctrl` builds a new view at every access
         if self.transmission == mujoco.mjtTrn.mjTRN_JOINT:
             joint = model.actuator_trnid[self.actuator][0]
             self._angles, self._angle_index = data.qpos, int(model.jnt_qposadr[joint])
@@ -73,7 +74,7 @@ class WheelMotor:
         self._integral = 0.0
         self._last_error = 0.0
         self._set_gain(SPEED_GAIN)
-        self.data.ctrl[self.actuator] = 0.0
+        self._ctrl[self.actuator] = 0.0
 
     def _set_gain(self, gain: float) -> None:
         self.model.actuator_gainprm[self.actuator, 0] = gain
@@ -108,7 +109,7 @@ class WheelMotor:
             self.closed_loop = self.needs_update = False
             self._set_gain(SPEED_GAIN)
         self.target = percent / 100 * self.max_speed
-        self.data.ctrl[self.actuator] = self.target
+        self._ctrl[self.actuator] = self.target
 
     def set_speed(self, speed: float) -> None:
         """Closed loop at `speed` rad/s, clipped to the no-load speed."""
@@ -119,7 +120,7 @@ class WheelMotor:
             self._set_gain(SPEED_GAIN * max(self.pid[0], 1) / DEFAULT_PID[0])
         limit = self.max_speed
         self.target = limit if speed > limit else -limit if speed < -limit else speed
-        self.data.ctrl[self.actuator] = self.target + self._integral
+        self._ctrl[self.actuator] = self.target + self._integral
 
     def set_ticks_per_second(self, ticks: int) -> None:
         """Closed loop at an encoder speed (MOTORSpeed); ValueError beyond the no-load speed."""
@@ -150,7 +151,7 @@ class WheelMotor:
         self._integral = max(-self.max_speed, min(self.max_speed, self._integral))
         derivative = self.pid[2] * DERIVATIVE_UNIT * (error - self._last_error) / dt
         self._last_error = error
-        self.data.ctrl[self.actuator] = self.target + self._integral + derivative
+        self._ctrl[self.actuator] = self.target + self._integral + derivative
 
 
 # -- servos ----------------------------------------------------------------------------------------

@@ -16,6 +16,7 @@ from pathlib import Path
 
 import jsonschema
 
+from eyesim.scene import limits
 from eyesim.scene.description import Location, Marker, ObjectPlacement, ObjectType, Pose, RobotType, Settings, World
 from eyesim.scene.diagnostics import Diagnostics, quoted
 from eyesim.scene.jsonpos import json_positions
@@ -142,6 +143,8 @@ def parse_json(text: str, source: str, diagnostics: Diagnostics, expected: tuple
         diagnostics.error(Location(source, 1, 1),
                           f"expected a JSON object with \"format\" one of {names}, found {found}", "json")
         return None, None
+    if _too_many(data, source, diagnostics):
+        return kind, None
     positions = _Positions(text, source)
     validator = jsonschema.Draft202012Validator(schema(kind))
     errors = sorted(validator.iter_errors(data), key=lambda e: list(e.absolute_path))
@@ -154,6 +157,23 @@ def parse_json(text: str, source: str, diagnostics: Diagnostics, expected: tuple
             if key in data:
                 where[key] = positions.value([key])
     return kind, _READERS[kind](data, source, positions, diagnostics)
+
+
+def _too_many(data: dict, source: str, diagnostics: Diagnostics) -> bool:
+    """Past a count limit (checked before the schema: validating 100 000 walls takes seconds)."""
+    where = Location(source, 1, 1)
+    counts = [("walls", limits.MAX_WALLS, "a world"), ("placements", limits.MAX_ROBOTS + limits.MAX_OBJECTS, "a scene"),
+              ("markers", limits.MAX_MARKERS, "a scene"), ("rows", limits.MAX_LINES, "a maze")]
+    if any(isinstance(data.get(key), list) and limits.too_many(len(data[key]), limit, key, where, diagnostics, scope)
+           for key, limit, scope in counts):
+        return True
+    rows = data.get("rows")
+    longest = max((len(row) for row in rows if isinstance(row, str)), default=0) if isinstance(rows, list) else 0
+    if longest > limits.MAX_LINE_CHARS:  # a maze row is a line of a .maz file
+        diagnostics.error(where, f"a maze row is {longest} characters long, more than {limits.MAX_LINE_CHARS}, the "
+                          "limit for a line of a scene file", limits.LIMIT)
+        return True
+    return False
 
 
 def _reject_constant(name: str):

@@ -11,7 +11,7 @@ import dataclasses
 import difflib
 from pathlib import Path
 
-from eyesim.scene import builtins, paths
+from eyesim.scene import builtins, limits, paths
 from eyesim.scene.description import (Collider, Diagnostic, Location, ObjectPlacement, ObjectType, Pose,
                                       RobotPlacement, RobotType, Scene, World)
 from eyesim.scene.diagnostics import Diagnostics, SceneError, quoted
@@ -51,7 +51,10 @@ def read_document(path: str | Path, diagnostics: Diagnostics, expected: tuple[st
                           f"({path.suffix})", "file-type")
         return None, None
     try:
-        text = decode(path.read_bytes())
+        data = limits.read_limited(path)
+        if limits.file_too_big(data, source, diagnostics):
+            return None, None
+        text = decode(data)
     except TextFileError as e:
         diagnostics.error(Location(source), str(e), "not-text")
         return None, None
@@ -60,6 +63,8 @@ def read_document(path: str | Path, diagnostics: Diagnostics, expected: tuple[st
         return None, None
     if kind == "json":
         return parse_json(text, source, diagnostics, expected or ("scene", "world", "maze", "robot", "object"), where)
+    if limits.lines_too_long(text, source, diagnostics):
+        return None, None
     return kind, PARSERS[kind](text, source, diagnostics, where)
 
 
@@ -74,6 +79,7 @@ class _SceneLoader:
         self.used_objects: dict[str, ObjectType] = {}
         self.loaded_files: dict[str, str] = {}  # definition file -> type name
         self.builtin_objects: dict[str, ObjectType | None] = {}
+        self.refused_references: set[str] = set()  # file names past the limits (reported)
 
     # -- files ---------------------------------------------------------------------------------
     def world(self, path: Path) -> World | None:
@@ -86,8 +92,14 @@ class _SceneLoader:
     def finish_world(self, document, path: Path, where: dict[str, Location]) -> World:
         """A parsed world or maze with its texture resolved and its object types known."""
         world = maze_world(document, str(path), self.diagnostics) if isinstance(document, MazeDocument) else document
+        # A .wld file stops at the line past a limit; a maze or JSON world is judged as a whole.
+        where_world = Location(str(path))
+        if (limits.too_many(len(world.walls), limits.MAX_WALLS, "walls", where_world, self.diagnostics, "a world")
+                | limits.too_many(len(world.objects), limits.MAX_OBJECTS, "objects", where_world, self.diagnostics)
+                | limits.too_many(len(world.markers), limits.MAX_MARKERS, "markers", where_world, self.diagnostics)):
+            return World(str(path))
         if world.floor_texture is not None:
-            found = paths.resolve(world.floor_texture, path)
+            found = self.resolve(world.floor_texture, path, where.get("floor_texture", Location(str(path))))
             if found is None:
                 self.missing(where.get("floor_texture", Location(str(path))), "floor texture", world.floor_texture,
                              path, "the floor is drawn in its plain colour")
@@ -118,20 +130,32 @@ class _SceneLoader:
     def with_model(self, definition, path: Path, where: dict[str, Location]):
         if definition.model is None:
             return definition
-        found = paths.resolve(definition.model, path)
+        found = self.resolve(definition.model, path, where.get("model", Location(str(path))))
         if found is None:
             shape = "its collider shapes" if definition.colliders else "a plain box"
             self.missing(where.get("model", Location(str(path))), "3-D model", definition.model, path,
                          f"drawn as {shape}")
         return dataclasses.replace(definition, model=str(found) if found else None)
 
+    def resolve(self, reference: str, referencing: Path, where: Location) -> Path | None:
+        """The file a reference names (paths.resolve), or None; a name past the limits is an
+        error here and not looked up (the file system would refuse it)."""
+        problem = limits.path_too_long(reference)
+        if problem is None:
+            return paths.resolve(reference, referencing)
+        self.diagnostics.error(where, f"file name {quoted(reference)} {problem}", limits.LIMIT)
+        self.refused_references.add(reference)
+        return None
+
     def missing(self, where: Location, what: str, reference: str, referencing: Path, fallback: str) -> None:
+        if reference in self.refused_references:
+            return  # its error says enough
         self.diagnostics.warning(where, f"{what} not found: {quoted(reference)} (looked as given, next to "
                                  f"{Path(referencing).name} and in the EyeSim home); {fallback}", "missing-file")
 
     # -- types ---------------------------------------------------------------------------------
     def define_robot(self, reference: str, where: Location, scene_file: Path) -> RobotType:
-        found = paths.resolve(reference, scene_file)
+        found = self.resolve(reference, scene_file, where)
         if found is not None and str(found) in self.loaded_files:
             return self.robot_types[self.loaded_files[str(found)].casefold()]
         robot = self.robot_file(found) if found is not None else None
@@ -157,7 +181,7 @@ class _SceneLoader:
         return robot
 
     def define_object(self, reference: str, where: Location, scene_file: Path) -> ObjectType:
-        found = paths.resolve(reference, scene_file)
+        found = self.resolve(reference, scene_file, where)
         if found is not None and str(found) in self.loaded_files:
             return self.object_types[self.loaded_files[str(found)].casefold()]
         obj = self.object_file(found) if found is not None else None
@@ -231,11 +255,21 @@ class _SceneLoader:
                                                placement.friction))
             else:
                 self.place_type(placement, where, scene_file, starts, robots, objects)
+            if (limits.too_many(len(robots), limits.MAX_ROBOTS, "robots", where, self.diagnostics)
+                    or limits.too_many(len(objects), limits.MAX_OBJECTS, "objects", where, self.diagnostics)):
+                return self.refused(scene_file, world)
         markers = world.markers + document.markers
+        if limits.too_many(len(markers), limits.MAX_MARKERS, "markers", Location(str(scene_file)), self.diagnostics):
+            return self.refused(scene_file, world)
         robots, objects = settle_placements(robots, objects, self.used_robots, self.used_objects, world.walls,
                                             self.diagnostics, str(scene_file))
         return Scene(str(scene_file), world, dict(self.used_robots), dict(self.used_objects), tuple(robots),
                      tuple(objects), markers, document.settings, self.diagnostics.warnings)
+
+    @staticmethod
+    def refused(scene_file: Path, world: World) -> Scene:
+        """What a scene past a limit leaves: its world (the error is reported already)."""
+        return Scene(str(scene_file), world)
 
     def scene_world(self, document: SimDocument, scene_file: Path) -> World:
         if document.world is None:
@@ -245,7 +279,7 @@ class _SceneLoader:
                                      "floor", "no-world")
             return World(str(scene_file))
         where = document.world.location or Location(str(scene_file))
-        found = paths.resolve(document.world.path, scene_file)
+        found = self.resolve(document.world.path, scene_file, where)
         if found is None:
             self.missing(where, "world file", document.world.path, scene_file, "using an empty world")
             return World(document.world.path)
@@ -278,7 +312,7 @@ class _SceneLoader:
         stem = Path(model.replace("\\", "/")).stem
         obj = self.object_type(stem)
         if obj is None:
-            found = paths.resolve(model, scene_file)
+            found = self.resolve(model, scene_file, where)
             if found is None:
                 self.missing(where, "3-D model", model, scene_file, f"object {quoted(stem)} becomes a 100 mm grey box")
             obj = ObjectType(stem, model, model=str(found) if found else None, colliders=(DEFAULT_OBJECT_COLLIDER,),
@@ -290,7 +324,7 @@ class _SceneLoader:
     def program(self, program: str | None, where: Location, scene_file: Path) -> str | None:
         if not program:
             return None
-        found = paths.resolve(program, scene_file)
+        found = self.resolve(program, scene_file, where)
         if found is None:
             self.missing(where, "program", program, scene_file, "the robot starts without it")
             return program

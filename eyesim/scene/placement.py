@@ -1,19 +1,33 @@
-"""Robots and objects placed overlapping a wall: real scene files do this (a 200 mm LabBot 20 mm
-from a wall). Built as placed, the physics would push them out violently, flinging them over the
-wall or lifting them. Each one is moved, on the floor plan, to the nearest pose clear of the walls,
-with a warning at its placement line (docs/scene.md: "Placements that overlap walls")."""
+"""Robots and objects placed overlapping a wall or each other: real scene files do this (a 200 mm
+LabBot 20 mm from a wall, a robot and a box on the same spot). Built as placed, the physics would
+push them apart violently, flinging them over walls or lifting them, and a crowd on one spot
+(300 robots) fills MuJoCo's contact memory and never gets going. So, on the floor plan:
+
+- a placement overlapping a wall moves the shortest way out of it;
+- one overlapping a body placed before it (fixed objects first, then robots, then objects, each
+  in file order) moves to the nearest free place on a grid of its own size round where it was
+  put, at most SEARCH_RINGS sizes away; when there is none the scene is refused (a limit);
+
+each with a warning at its placement line (docs/file-formats.md: "Placements that overlap").
+Walls and bodies are looked up through a grid of the floor, so a world of thousands of walls
+and bodies costs only what is near each placement."""
 
 from __future__ import annotations
 
 import math
+from collections import defaultdict
 from dataclasses import replace
 
 from eyesim.scene.description import Collider, Location, ObjectPlacement, ObjectType, Pose, RobotPlacement, RobotType, Wall
 from eyesim.scene.diagnostics import Diagnostics, quoted
+from eyesim.scene.limits import LIMIT
 
 CLEARANCE = 1.0  # mm left between a moved footprint and the wall
 DEFAULT_OBJECT_SIZE = 100.0  # mm: the box an object without colliders gets (physics/objects.py)
 ROUNDS = 8  # of pushing out: a footprint pushed off one wall can touch the next (a corner)
+SEARCH_RINGS = 5  # sizes round its spot a body may be moved off others: room for 120 more
+CELL = 500.0  # mm of the floor grid that finds what is near a footprint
+WIDE = 64  # cells: a longer wall (or a larger body) is looked at by every query instead
 
 
 def _robot_extent(robot_type: RobotType) -> tuple[float, float, float, float]:
@@ -81,13 +95,67 @@ def _push_out(pose: Pose, extent, wall: Wall) -> tuple[float, float]:
     return shift * nx, shift * ny
 
 
-def _settle(pose: Pose, extent, walls) -> tuple[Pose, Wall | None]:
+def _box(corners) -> tuple[float, float, float, float]:
+    xs, ys = [x for x, _ in corners], [y for _, y in corners]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def _wall_box(wall: Wall) -> tuple[float, float, float, float]:
+    reach = wall.thickness / 2  # built lengthened by this at both ends, and this thick either side
+    return (min(wall.x1, wall.x2) - reach, min(wall.y1, wall.y2) - reach,
+            max(wall.x1, wall.x2) + reach, max(wall.y1, wall.y2) + reach)
+
+
+class _Grid:
+    """Things by the grid cells their floor-plan box covers; `near(box)` gives those that may
+    overlap a box (each once, in the order they were added, so results never depend on hashing)."""
+
+    def __init__(self):
+        self.cells: dict[tuple[int, int], list[int]] = defaultdict(list)
+        self.wide: list[int] = []
+        self.things: list = []
+
+    @staticmethod
+    def _span(box):
+        x0, y0, x1, y1 = box
+        return math.floor(x0 / CELL), math.floor(y0 / CELL), math.floor(x1 / CELL), math.floor(y1 / CELL)
+
+    def add(self, box, thing) -> None:
+        index = len(self.things)
+        self.things.append(thing)
+        i0, j0, i1, j1 = self._span(box)
+        if (i1 - i0 + 1) * (j1 - j0 + 1) > WIDE:
+            self.wide.append(index)
+            return
+        for i in range(i0, i1 + 1):
+            for j in range(j0, j1 + 1):
+                self.cells[(i, j)].append(index)
+
+    def near(self, box) -> list:
+        i0, j0, i1, j1 = self._span(box)
+        if (i1 - i0 + 1) * (j1 - j0 + 1) > WIDE:
+            return list(self.things)
+        found = set(self.wide)
+        for i in range(i0, i1 + 1):
+            for j in range(j0, j1 + 1):
+                found.update(self.cells.get((i, j), ()))
+        return [self.things[k] for k in sorted(found)]
+
+
+def _walls_grid(walls) -> _Grid:
+    grid = _Grid()
+    for wall in walls:
+        grid.add(_wall_box(wall), wall)
+    return grid
+
+
+def _settle(pose: Pose, extent, walls: _Grid) -> tuple[Pose, Wall | None]:
     """The pose moved clear of all walls (as far as a few rounds manage), and the first wall it
     overlapped (None: it was clear)."""
     first = None
     for _ in range(ROUNDS):
         moved = False
-        for wall in walls:
+        for wall in walls.near(_box(_corners(pose, extent))):
             sx, sy = _push_out(pose, extent, wall)
             if sx or sy:
                 first = first or wall
@@ -98,27 +166,132 @@ def _settle(pose: Pose, extent, walls) -> tuple[Pose, Wall | None]:
     return pose, first
 
 
+def _separation(a, b) -> tuple[float, float] | None:
+    """None when two footprints (corner lists of rectangles) do not overlap (touching is not
+    overlapping), else the shortest shift of `a` that takes it off `b` (separating axes)."""
+    best = None
+    for corners in (a, b):
+        for k in range(4):
+            (x1, y1), (x2, y2) = corners[k], corners[(k + 1) % 4]
+            length = math.hypot(x2 - x1, y2 - y1)
+            nx, ny = (y1 - y2) / length, (x2 - x1) / length  # a side's normal
+            pa = [x * nx + y * ny for x, y in a]
+            pb = [x * nx + y * ny for x, y in b]
+            forward, backward = max(pb) - min(pa), max(pa) - min(pb)  # a's shift along +n / -n to clear b
+            if forward <= 0 or backward <= 0:
+                return None  # apart along this axis
+            shift = (forward, nx, ny) if forward < backward else (backward, -nx, -ny)
+            if best is None or shift[0] < best[0]:
+                best = shift
+    depth, nx, ny = best
+    return (depth + CLEARANCE) * nx, (depth + CLEARANCE) * ny
+
+
+class _Body:
+    """A placed footprint: what it is (for messages) and its corners on the floor plan."""
+
+    def __init__(self, kind: str, placement, corners):
+        self.kind, self.placement, self.corners, self.box = kind, placement, corners, _box(corners)
+
+    def describe(self) -> str:
+        line = f" (line {self.placement.location.line})" if self.placement.location and self.placement.location.line else ""
+        return f"{self.kind} {quoted(self.placement.type_name)}{line}"
+
+
+def _first_overlap(corners, bodies: _Grid) -> _Body | None:
+    x0, y0, x1, y1 = box = _box(corners)
+    for body in bodies.near(box):
+        bx0, by0, bx1, by1 = body.box
+        if bx0 < x1 and x0 < bx1 and by0 < y1 and y0 < by1 and _separation(corners, body.corners) is not None:
+            return body
+    return None
+
+
+def _clear_of_walls(pose: Pose, extent, walls: _Grid) -> bool:
+    return not any(_push_out(pose, extent, wall) != (0.0, 0.0) for wall in walls.near(_box(_corners(pose, extent))))
+
+
+def _ring_offsets() -> list[tuple[int, int]]:
+    """Grid steps round a spot, nearest first (ties in a fixed order)."""
+    steps = [(i, j) for i in range(-SEARCH_RINGS, SEARCH_RINGS + 1) for j in range(-SEARCH_RINGS, SEARCH_RINGS + 1)
+             if (i, j) != (0, 0)]
+    return sorted(steps, key=lambda s: (s[0] * s[0] + s[1] * s[1], s[1], s[0]))
+
+
+_OFFSETS = _ring_offsets()
+
+
+def _free_place(pose: Pose, extent, other: _Body, walls: _Grid, bodies: _Grid) -> Pose | None:
+    """A pose near `pose` that overlaps no wall and no placed body: pushed the shortest way off
+    `other` when that is clear, else the nearest place on a grid of the footprint's size round
+    `pose`, at most SEARCH_RINGS steps away; None when there is none. Moved poses are whole mm
+    (CLEARANCE keeps them clear)."""
+    def free(candidate: Pose) -> bool:
+        corners = _corners(candidate, extent)
+        return _first_overlap(corners, bodies) is None and _clear_of_walls(candidate, extent, walls)
+
+    sx, sy = _separation(_corners(pose, extent), other.corners)
+    pushed = replace(pose, x=float(round(pose.x + sx)), y=float(round(pose.y + sy)))
+    if free(pushed):
+        return pushed
+    x0, y0, x1, y1 = _box(_corners(Pose(0.0, 0.0, pose.phi), extent))
+    step_x, step_y = x1 - x0 + CLEARANCE, y1 - y0 + CLEARANCE
+    for i, j in _OFFSETS:
+        candidate = replace(pose, x=float(round(pose.x + i * step_x)), y=float(round(pose.y + j * step_y)))
+        if free(candidate):
+            return candidate
+    return None
+
+
 def settle_placements(robots: list[RobotPlacement], objects: list[ObjectPlacement],
                       robot_types: dict[str, RobotType], object_types: dict[str, ObjectType],
                       walls: tuple[Wall, ...], diagnostics: Diagnostics, scene_file: str):
-    """Robots and objects with every overlap with a wall moved out, and a warning for each."""
-    def settle(placement, kind: str, extent):
-        pose, wall = _settle(placement.pose, extent, walls)
-        if wall is None:
-            return placement
-        where = placement.location or Location(scene_file)
-        diagnostics.warning(where, f"{kind} {quoted(placement.type_name)} at ({placement.pose.x:g}, "
-                            f"{placement.pose.y:g}) overlaps the wall from ({wall.x1:g}, {wall.y1:g}) to "
-                            f"({wall.x2:g}, {wall.y2:g}): moved to ({pose.x:.0f}, {pose.y:.0f}), clear of the walls",
-                            "overlap")
-        return replace(placement, pose=pose)
+    """Robots and objects moved out of walls and out of each other, with a warning for each
+    move; an error (code 'limit') for a body that finds no free place nearby."""
+    wall_grid, bodies = _walls_grid(walls), _Grid()
 
-    settled_robots = []
-    for placement in robots:
-        settled_robots.append(settle(placement, "robot", _robot_extent(robot_types[placement.type_name])))
-    settled_objects = []
-    for placement in objects:
-        object_type = object_types[placement.type_name]
-        settled_objects.append(placement if object_type.fixed
-                               else settle(placement, "object", _box_extent(object_type.colliders)))
-    return settled_robots, settled_objects
+    def where(placement) -> Location:
+        return placement.location or Location(scene_file)
+
+    refused = False
+
+    def place(placement, kind: str, extent, movable: bool = True):
+        nonlocal refused
+        if refused:  # the scene is refused already: spare the searches
+            return None
+        pose, wall = _settle(placement.pose, extent, wall_grid) if movable else (placement.pose, None)
+        if wall is not None:
+            diagnostics.warning(where(placement), f"{kind} {quoted(placement.type_name)} at ({placement.pose.x:g}, "
+                                f"{placement.pose.y:g}) overlaps the wall from ({wall.x1:g}, {wall.y1:g}) to "
+                                f"({wall.x2:g}, {wall.y2:g}): moved to ({pose.x:.0f}, {pose.y:.0f}), clear of the "
+                                "walls", "overlap")
+        other = _first_overlap(_corners(pose, extent), bodies) if movable else None
+        if other is not None:
+            free = _free_place(pose, extent, other, wall_grid, bodies)
+            if free is None:
+                diagnostics.error(where(placement), f"{kind} {quoted(placement.type_name)} at ({pose.x:g}, "
+                                  f"{pose.y:g}) overlaps {other.describe()} and there is no free place within "
+                                  f"{SEARCH_RINGS} of its sizes: at most {len(_OFFSETS) + 1} bodies fit round one "
+                                  "spot, the limit for overlapping placements; spread them out", LIMIT)
+                refused = True
+                return None
+            diagnostics.warning(where(placement), f"{kind} {quoted(placement.type_name)} at ({pose.x:g}, {pose.y:g}) "
+                                f"overlaps {other.describe()}: moved to ({free.x:.0f}, {free.y:.0f}), clear of it",
+                                "overlap")
+            pose = free
+        bodies.add(_box(_corners(pose, extent)), _Body(kind, placement, _corners(pose, extent)))
+        return placement if pose == placement.pose else replace(placement, pose=pose)
+
+    def object_extent(placement):
+        return _box_extent(object_types[placement.type_name].colliders)
+
+    # Fixed objects never move: the others make room for them.
+    placed_objects = {i: place(p, "object", object_extent(p), movable=False)
+                      for i, p in enumerate(objects) if object_types[p.type_name].fixed}
+    settled_robots = [place(p, "robot", _robot_extent(robot_types[p.type_name])) for p in robots]
+    for i, p in enumerate(objects):
+        if i not in placed_objects:
+            placed_objects[i] = place(p, "object", object_extent(p))
+    settled_objects = [placed_objects[i] for i in range(len(objects))]
+    # None marks a body refused (its error is reported); the scene is not built then.
+    return [r for r in settled_robots if r is not None], [o for o in settled_objects if o is not None]

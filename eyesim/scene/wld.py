@@ -12,6 +12,7 @@ import math
 from eyesim.scene.description import Location, ObjectPlacement, Pose, Wall, World
 from eyesim.scene.diagnostics import Diagnostics, quoted
 from eyesim.scene.lexer import Line, format_number, number, quote_token, split_lines
+from eyesim.scene.limits import MAX_OBJECTS, MAX_WALLS, too_many
 
 KEYWORDS = ("width", "height", "floor", "push", "pop", "position", "floor_texture", "ball")
 DEFAULT_WALL = Wall(0, 0, 0, 0)
@@ -47,6 +48,8 @@ def parse_wld(text: str, source: str, diagnostics: Diagnostics, where: dict | No
     reader = _WorldReader(source, diagnostics)
     for line in split_lines(text, source, diagnostics, comment_chars=";#", strict=False):
         reader.statement(line)
+        if reader.refused:  # past a limit: the rest would only cost time
+            break
     if where is not None and reader.texture_at is not None:
         where["floor_texture"] = reader.texture_at
     return reader.world()
@@ -65,6 +68,7 @@ class _WorldReader:
         self.texture: str | None = None
         self.start: Pose | None = None
         self.texture_at: Location | None = None
+        self.refused = False
 
     def world(self) -> World:
         return World(self.source, self.width, self.height, tuple(self.walls), self.texture, self.start,
@@ -134,6 +138,10 @@ class _WorldReader:
         if (x1, y1) == (x2, y2):
             self.skip(line, "zero-length wall: start and end are the same point", 0, code="degenerate-wall")
             return
+        if len(self.walls) == MAX_WALLS:
+            too_many(MAX_WALLS + 1, MAX_WALLS, "walls", self.where(line), self.diagnostics, "a world")
+            self.refused = True
+            return
         self.walls.append(Wall(x1, y1, x2, y2, thickness, height, color))
 
     def size(self, line: Line, what: str) -> float | None:
@@ -188,6 +196,10 @@ class _WorldReader:
         values = self.numbers(line, (2,), "ball <x> <y>")
         if values is not None:
             x, y = self.frame.apply(values[0], values[1])
+            if len(self.balls) == MAX_OBJECTS:
+                too_many(MAX_OBJECTS + 1, MAX_OBJECTS, "objects", self.where(line), self.diagnostics)
+                self.refused = True
+                return
             self.balls.append(ObjectPlacement(BALL_TYPE, Pose(x, y, 0.0), self.where(line)))
 
     def kw_floor_texture(self, line: Line) -> None:

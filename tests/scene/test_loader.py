@@ -103,7 +103,7 @@ def test_programs_resolve_to_absolute_paths(tmp_path):
 
 def test_missing_references_fall_back_with_warnings(tmp_path):
     scene = make(tmp_path, "a.sim", "world nowhere.wld\nrobot bots/Rover.robi\nobject props/Cone.esObj\n"
-                                    "Rover 1 2 3\nCone 4 5 6\n")
+                                    "Rover 1 2 3\nCone 400 5 6\n")  # apart: an overlap would warn too
     loaded = load_scene(scene)
     assert loaded.world.walls == () and loaded.robot_types["Rover"].wheels.diameter == 54
     assert loaded.object_types["Cone"].colliders[0].kind == "box"

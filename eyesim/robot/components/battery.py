@@ -29,6 +29,8 @@ class Battery(Component):
         model = world.model
         self.actuators = [i for i in range(model.nu)
                           if (mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_ACTUATOR, i) or "").startswith(self.prefix)]
+        # The arrays themselves: `data.actuator_force` builds a new view at every access.
+        self._force, self._velocity = world.data.actuator_force, world.data.actuator_velocity
 
     def reset(self) -> None:
         self.energy_j = CAPACITY_J
@@ -41,8 +43,10 @@ class Battery(Component):
         if self.steps < SAMPLE_STEPS:
             return
         self.steps = 0
-        force, velocity = self.world.data.actuator_force, self.world.data.actuator_velocity
-        motors = sum(abs(float(force[i]) * float(velocity[i])) for i in self.actuators)
+        force, velocity = self._force, self._velocity
+        motors = 0.0
+        for i in self.actuators:
+            motors += abs(force.item(i) * velocity.item(i))
         used = (CONTROLLER_WATTS + motors / MOTOR_EFFICIENCY) * dt * SAMPLE_STEPS
         self.energy_j = max(0.0, self.energy_j - used)
 

@@ -23,6 +23,10 @@ STALL_WINDOW = 0.1  # s over which a wheel's progress is judged
 STALL_FRACTION = 0.25  # a wheel turning less than this share of its set speed is stalled
 STALL_MIN_TICKS = 4  # a window in which a wheel should turn fewer ticks says nothing
 STALL_END_WINDOWS = 3  # a manoeuvre stalled for this many windows in a row ends (VWWait returns)
+# Far from its end a manoeuvre cruises at its top speed and only the heading correction changes:
+# it is re-planned at the controller's rate (RoBIOS's VW timer: 100 Hz), not at every physics
+# step; within reach of its end it is planned at every step, so it stops as precisely as before.
+PLAN_PERIOD = 0.01  # s between plans while cruising
 
 
 class Manoeuvre:
@@ -52,6 +56,9 @@ class Manoeuvre:
         self.floor = MIN_APPROACH_SPEED * scale
         self.crawl = CRAWL_DISTANCE * scale
         self.braking = 2 * BRAKE_FRACTION * LINEAR_ACCEL * scale  # speed = sqrt(braking x remaining)
+        # Further than this from the end (followed unit), the plan is top speed until the next one:
+        # the braking distance from top speed, plus twice what a PLAN_PERIOD at top speed covers.
+        self.cruise_beyond = self.crawl + self.top_speed ** 2 / self.braking + 2 * self.top_speed * PLAN_PERIOD
 
 
 class VwController(Component):
@@ -63,6 +70,7 @@ class VwController(Component):
         self.max_turn = max_turn  # rad/s
         self.metres_per_tick = 2 * math.pi * drive.radius / drive.ticks_per_rev
         self.half_track = drive.track / 2
+        self.turn_accel = LINEAR_ACCEL / self.half_track  # rad/s^2 of the ramp
         self.reset()
 
     def reset(self) -> None:
@@ -80,6 +88,7 @@ class VwController(Component):
         self._window_time = 0.0  # s into the current stall window
         self._window_start: tuple | None = None  # ticks, wheel speed set points, wheel ground positions
         self._stalled_windows = 0  # in a row, during a manoeuvre
+        self._cruise_steps = 0  # steps the current plan still holds for (cruising far from the end)
         self.stuck = False  # the last manoeuvre ended stalled: VWStalled keeps saying so until the next command
 
     # -- geometry ----------------------------------------------------------------------------
@@ -142,6 +151,7 @@ class VwController(Component):
             self.stalled = 0
         self._stalled_windows = 0
         self._window_start = None
+        self._cruise_steps = 0
 
     def _start(self, distance: float, rotation: float, speed: float) -> None:
         self._new_command()
@@ -153,6 +163,7 @@ class VwController(Component):
 
     def _finish(self) -> None:
         self.manoeuvre = None
+        self._cruise_steps = 0
         self.target_v = self.target_w = 0.0
 
     def release(self) -> None:
@@ -187,26 +198,40 @@ class VwController(Component):
         self.odometry = [x, y, phi]
 
     # -- control loop ------------------------------------------------------------------------
+    # These run for every driving robot at every step: locals instead of repeated attribute
+    # look-ups, and the ramp written out (docs/performance.md, "Where a step's time goes").
     def before_step(self, dt: float) -> None:
         if not self.engaged:
             return
-        if self.manoeuvre is not None:
-            self._plan()
-        half_track = self.half_track
-        v = self.v = _ramp(self.v, self.target_v, LINEAR_ACCEL * dt)
-        w = self.w = _ramp(self.w, self.target_w, LINEAR_ACCEL / half_track * dt)
-        r = self.drive.radius
+        v, w, target_v, target_w = self.v, self.w, self.target_v, self.target_w
+        if self._cruise_steps > 0:
+            self._cruise_steps -= 1
+            if v == target_v and w == target_w:
+                return  # the wheels hold the speeds set last step, and the plan still holds
+        elif self.manoeuvre is not None:
+            self._plan(dt)
+            v, w, target_v, target_w = self.v, self.w, self.target_v, self.target_w
+        v = _ramp(v, target_v, LINEAR_ACCEL * dt)
+        w = _ramp(w, target_w, self.turn_accel * dt)
+        self.v, self.w = v, w
+        half_track, r = self.half_track, self.drive.radius
         left, right = self.drive.wheels
         left.set_speed((v - w * half_track) / r)
         right.set_speed((v + w * half_track) / r)
-        if self.manoeuvre is None and v == self.target_v and w == self.target_w:
+        if self.manoeuvre is None and v == target_v and w == target_w:
             # Steady: the wheels keep these speeds on their own until the next command.
             self.engaged = False
             self.driving = v != 0.0 or w != 0.0
 
-    def _plan(self) -> None:
+    def _plan(self, dt: float) -> None:
         m = self.manoeuvre
-        distance, rotation = self._progress()
+        if self._last_left is None:
+            distance, rotation = self._progress()
+        else:  # _progress() written out, with the ticks after_step read
+            per_tick = self.metres_per_tick
+            left = (self._last_left - m.start_ticks[0]) * per_tick
+            right = (self._last_right - m.start_ticks[1]) * per_tick
+            distance, rotation = (left + right) / 2, (right - left) / self.drive.track
         remaining = m.length - m.sign * (rotation if m.on_the_spot else distance)
         if remaining <= m.tolerance:
             if m.on_the_spot or m.rotation == 0:
@@ -217,6 +242,8 @@ class VwController(Component):
         # As fast as allowed, but slow enough to brake in what remains, never slower than a crawl.
         speed = max(min(m.top_speed, math.sqrt(m.braking * max(0.0, remaining - m.crawl))), m.floor)
         braking = speed < m.top_speed
+        if remaining > m.cruise_beyond:
+            self._cruise_steps = max(round(PLAN_PERIOD / dt) - 1, 0)
         if m.on_the_spot:
             self.target_v, self.target_w = 0.0, m.sign * speed
             if braking:  # braking must not wait for the ramp: the approach follows the plan directly
@@ -230,13 +257,14 @@ class VwController(Component):
             self.w = self.v * m.curvature - HEADING_GAIN * heading_error
 
     def after_step(self, dt: float) -> None:
-        wheels = self.drive.wheels
-        left, right = wheels[0].raw_ticks(), wheels[1].raw_ticks()
+        left_wheel, right_wheel = self.drive.wheels
+        left, right = left_wheel.raw_ticks(), right_wheel.raw_ticks()
         last_left, last_right = self._last_left, self._last_right
         if left != last_left or right != last_right:
             self._last_left, self._last_right = left, right
             if last_left is not None:
-                self._integrate((left - last_left) * self.metres_per_tick, (right - last_right) * self.metres_per_tick)
+                per_tick = self.metres_per_tick
+                self._integrate((left - last_left) * per_tick, (right - last_right) * per_tick)
         if self.driving:
             self._window_time += dt
             if self._window_start is None or self._window_time >= STALL_WINDOW:
@@ -289,9 +317,12 @@ class VwController(Component):
 
 
 def _ramp(current: float, target: float, step: float) -> float:
+    """`current` moved towards `target` by at most `step` (comparisons, not min/max: cheaper)."""
     if target > current:
-        return min(target, current + step)
-    return max(target, current - step)
+        moved = current + step
+        return target if target < moved else moved
+    moved = current - step
+    return target if target > moved else moved
 
 
 def create(context) -> list[Component]:
