@@ -256,6 +256,8 @@ class Simulation:
 
     def _deterministic_round(self) -> None:
         self._wait(0)
+        if self._stopping:  # the last program just ended: not one more step, so every run ends alike
+            return
         live = [s for s in self.sessions if s.robot is not None and not s.closed]
         now = time.perf_counter()
         waiting_for = [s for s in live if not s.queued and not s.blocked(now)]

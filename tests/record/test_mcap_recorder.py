@@ -17,7 +17,6 @@ from support.programs import build, eyesim_command, run_headless
 from eyesim.clock import DETERMINISTIC, Clock
 from eyesim.engine import Simulation
 from eyesim.launcher import Launcher
-from eyesim.net.io_thread import IoThread
 from eyesim.net.program_server import ProgramServer
 from eyesim.record import Recorder, Recording, schemas
 from eyesim.robot.components.lcd import Lcd
@@ -55,7 +54,8 @@ def test_the_recording_has_the_documented_channels_and_every_message_fits_its_sc
             jsonschema.validate(json.loads(message.data), json.loads(schema.data))
             counts[channel.topic] = counts.get(channel.topic, 0) + 1
     assert counts["/scene"] == 1
-    assert counts["/tf"] == counts["/robot/1/state"] == 200  # 2 s at 100 Hz
+    # 2.056 s at 100 Hz: four 500 ms waits and the calls' 4 ms call time each (docs/running.md#call-time)
+    assert counts["/tf"] == counts["/robot/1/state"] == 205
     assert counts["/robot/1/psd"] == 4 and counts["/robot/1/command"] == 5
     assert counts["/robot/1/lcd"] >= 5  # the start, four steps, "done"
     logs = [json.loads(m.data)["message"] for _, c, m in make_reader(open(recorded / "run.mcap", "rb")).iter_messages(topics=["/log"])]
@@ -105,9 +105,7 @@ def test_replayed_poses_and_lcds_equal_the_live_run_at_chosen_times(recorded, tm
             live[sim.time_us] = (pose, robot.component(Lcd).screen().copy())
 
     sim = Simulation(load_scene(DEFAULT_SCENE), Clock(DETERMINISTIC))
-    io = IoThread()
-    io.start()
-    server = ProgramServer(sim, io, "127.0.0.1", 0)
+    server = ProgramServer(sim, "127.0.0.1", 0)
     server.start()
     launcher = Launcher(sim, "127.0.0.1", server.port, echo=False)
     try:
@@ -123,7 +121,6 @@ def test_replayed_poses_and_lcds_equal_the_live_run_at_chosen_times(recorded, tm
         launcher.stop_all()
         sim.shutdown_sessions()
         server.stop()
-        io.stop()
     assert set(live) == chosen
 
     with Recording(tmp_path / "api.mcap") as recording:

@@ -32,7 +32,7 @@ def test_render_writes_one_frame_per_time_step_of_the_recording(tour):
         expected = frame_times(recording.start_us, recording.end_us, 30, 1.0)
         robot = recording.snapshot_at(expected[45])["robots"][0]
         view = TopView(recording.scene, 720)
-    assert len(expected) == 61 and f"{len(expected)} frames" in result.stdout  # 2.0013 s at 30 per second
+    assert len(expected) == 62 and f"{len(expected)} frames" in result.stdout  # 2.03 s at 30 per second
     frames, _ = imageio_ffmpeg.count_frames_and_secs(str(tour.parent / "tour.mp4"))
     assert frames == len(expected)
     reader = imageio_ffmpeg.read_frames(str(tour.parent / "tour.mp4"))
