@@ -227,9 +227,16 @@ class Simulation:
             request.time_us = max(self.time_us, session.local_time_us)
             self._execute(request)
             return
-        if not session.queued and not self.clock.deterministic:
-            self._ready.append(session)
         session.queued.append(request)
+        if not self.clock.deterministic:
+            self._take_turn(session)
+
+    def _take_turn(self, session: Session) -> None:
+        """Realtime: put the program in the round of programs to serve, if it has a request waiting
+        and is not still taking its last call's time (then its held reply's release does this)."""
+        if session.queued and not session.in_turn and not session.replies_held:
+            session.in_turn = True
+            self._ready.append(session)
 
     def _serve(self, rounds: int | None = None, deadline: float | None = None) -> None:
         """Realtime: carry out queued requests, one program's at a time in turn (a program that
@@ -238,11 +245,11 @@ class Simulation:
         remaining = len(self._ready) * rounds if rounds is not None else None
         while self._ready and remaining != 0:
             session = self._ready.popleft()
-            if session.closed or not session.queued:
+            session.in_turn = False
+            if session.closed:
                 continue
             self._take_request(session)
-            if session.queued:
-                self._ready.append(session)
+            self._take_turn(session)
             if remaining is not None:
                 remaining -= 1
             if deadline is not None and time.perf_counter() >= deadline:
@@ -366,6 +373,7 @@ class Simulation:
         # Realtime: the reply leaves once simulation time has gone on by the cost since the request.
         due = max(self._realtime_now_us(), request.time_us) + cost
         session.local_time_us = due  # the program's next call cannot be earlier
+        session.replies_held += 1  # its next request waits for this reply, as the program itself would
         heapq.heappush(self._held, (due, next(self._sequence), session, frame))
 
     def _realtime_now_us(self) -> int:
@@ -381,7 +389,9 @@ class Simulation:
         now = self._realtime_now_us()
         while self._held and self._held[0][0] <= now:
             _, _, session, frame = heapq.heappop(self._held)
+            session.replies_held -= 1
             self._send(session, frame)
+            self._take_turn(session)
 
     def _hello(self, request: Request) -> tuple:
         version, selector, program, pid = request.args

@@ -69,6 +69,8 @@ class Session:
     helper_threads: int = 0  # library threads that make calls too: 1 once the program uses timers
     last_request_wall: float = 0.0  # wall-clock time (perf_counter) of the latest request
     free_running: bool = False  # time goes on while its main thread busy-waits (see blocked)
+    in_turn: bool = False  # realtime: in the engine's round of programs to serve
+    replies_held: int = 0  # realtime: replies waiting for their call time to pass
 
     def note_request(self, now_wall: float) -> None:
         self.last_request_wall = now_wall

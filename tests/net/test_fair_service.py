@@ -106,3 +106,29 @@ def test_large_replies_piling_up_beyond_the_limit_close_the_connection(simulatio
     assert "replies unread; closing the connection" in caplog.text
     assert all(not c.backlog for c in sim.network.connections)
     assert reader.call("PSD_GET", 1)[0] > 0
+
+
+def test_with_a_call_time_a_pipelining_program_is_served_one_call_time_at_a_time(simulation):
+    """Its requests are carried out one call time apart, as one program calling in a loop would be:
+    not all at once with their replies parked (that would let it take any amount of work and memory)."""
+    sim, port = simulation
+    sim.call_time_us = 20_000  # 20 ms a call
+    greedy, modest = ProgramClient(port), ProgramClient(port)
+    greedy.hello("1")
+    modest.hello("2")
+    start_us = sim.time_us
+    _pipeline(greedy, "LIDAR_GET", 200)
+    time.sleep(0.3)
+    held = len(sim._held)
+    greedy.sock.settimeout(0.02)
+    replies = 0
+    try:
+        while True:  # what has come so far (a new reply comes every 20 ms: stop at the first gap)
+            greedy.receive()
+            replies += 1
+    except OSError:
+        pass
+    elapsed_ms = (sim.time_us - start_us) / 1000
+    assert held <= 2  # its current call (no heap of parked replies)
+    assert 5 <= replies <= elapsed_ms / 20 + 2, (replies, elapsed_ms)
+    assert modest.call("PSD_GET", 1)[0] > 0
