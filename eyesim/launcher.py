@@ -107,6 +107,7 @@ class Launcher:
         self.runs: list[ProgramRun] = []
         self._lock = threading.Lock()
         self._threads: list[threading.Thread] = []
+        self._run_threads: dict[int, list[threading.Thread]] = {}  # id(run) -> its output and exit threads
 
     def start(self, robot_id: int, path: str | Path, options: ProgramOptions = ProgramOptions()) -> ProgramRun:
         run = ProgramRun(robot_id, Path(path), options=options)
@@ -138,14 +139,29 @@ class Launcher:
             feeder = threading.Thread(target=self._feed, args=(run,), daemon=True)
             feeder.start()
             self._threads.append(feeder)
-        for stream in ("stdout", "stderr"):
-            thread = threading.Thread(target=self._forward, args=(run, stream), daemon=True)
+        threads = [threading.Thread(target=self._forward, args=(run, stream), daemon=True)
+                   for stream in ("stdout", "stderr")]
+        threads.append(threading.Thread(target=self._wait, args=(run,), daemon=True))
+        for thread in threads:
             thread.start()
-            self._threads.append(thread)
-        waiter = threading.Thread(target=self._wait, args=(run,), daemon=True)
-        waiter.start()
-        self._threads.append(waiter)
+        self._threads += threads
+        self._run_threads[id(run)] = threads
         return run
+
+    def settle(self, wait: float = 0.0) -> None:
+        """Let programs that are ending finish (up to `wait` s each), then take in everything
+        the ended ones printed and their exit codes."""
+        for run in self.runs:
+            if run.process is None:
+                continue
+            if wait > 0:
+                try:
+                    run.process.wait(timeout=wait)
+                except subprocess.TimeoutExpired:
+                    continue
+            if run.process.poll() is not None:
+                for thread in self._run_threads.get(id(run), ()):
+                    thread.join(timeout=2.0)
 
     def _feed(self, run: ProgramRun) -> None:
         data = run.options.stdin

@@ -302,6 +302,11 @@ class Simulation:
                 reason = "time"
             else:
                 reason = "programs"
+        # Programs whose connections closed are exiting: take in their exit codes and output.
+        self._launcher.settle(wait=5.0 if reason in ("programs", "watchdog") else 0.0)
+        for run in self._runs.values():
+            if not hasattr(run, "process") and reason == "programs" and run.thread is not None:
+                run.thread.join(timeout=5.0)
         return RunEnd(reason, self.time)
 
     def _watchdog(self, fired: threading.Event) -> None:
