@@ -11,6 +11,7 @@ SUBCOMMAND_MODULES = (
     "eyesim.run",
     "eyesim.toolchain",
     "eyesim.scene.cli",
+    "eyesim.grade.cli",
 )
 
 

@@ -23,8 +23,9 @@ class ProgramOptions:
     `stdin` (text or bytes) is written to the program's standard input, which is then closed;
     None gives it no input. `cwd` defaults to the program's directory; `env` adds to (and
     overrides) the environment. `cpu_seconds` and `memory_bytes` are resource limits of the
-    program's process (RLIMIT_CPU, RLIMIT_AS); with either, the program gets a process group of
-    its own so that stopping it also stops the processes it started."""
+    program's process (RLIMIT_CPU, RLIMIT_AS). With `own_group` the program gets a process group
+    of its own, so that stopping it also stops the processes it started; without, it stays in
+    ours (the grader kills a case's whole group at once)."""
 
     args: tuple[str, ...] = ()
     stdin: str | bytes | None = None
@@ -32,6 +33,7 @@ class ProgramOptions:
     env: dict[str, str] = field(default_factory=dict)
     cpu_seconds: float | None = None
     memory_bytes: int | None = None
+    own_group: bool = False
 
     @property
     def limited(self) -> bool:
@@ -128,7 +130,7 @@ class Launcher:
                 [*command_for(run.path), *options.args], cwd=options.cwd or run.path.parent, env=env,
                 stdin=subprocess.DEVNULL if options.stdin is None else subprocess.PIPE,
                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, preexec_fn=limits,
-                start_new_session=options.limited)
+                start_new_session=options.own_group)
         except OSError as error:
             run.error = f"cannot start {run.path}: {error.strerror}"
             self._print(run, "stderr", f"eyesim: {run.error}\n")
@@ -207,7 +209,7 @@ class Launcher:
         """Stop a program at once (a watchdog's last resort), with its process group if it has one."""
         if run.process is not None and run.process.poll() is None:
             run.stopped_by_us = True
-            if run.options.limited:
+            if run.options.own_group:
                 _kill_group(run.process.pid)
             else:
                 run.process.kill()
@@ -238,7 +240,7 @@ class Launcher:
                 except subprocess.TimeoutExpired:
                     run.process.kill()
                     run.process.wait()
-                if run.options.limited:
+                if run.options.own_group:
                     _kill_group(run.process.pid)  # whatever it started in its group
         for thread in self._threads:
             thread.join(timeout=grace)

@@ -125,8 +125,10 @@ def describe_exit(run) -> str:
         return "has no program"
     if run.error:
         return run.error
+    if run.stopped_by_us:
+        return "was still running at the end (stopped)"
     if run.exit_code is None:
-        return "was still running at the end (stopped)" if run.stopped_by_us else "is still running"
+        return "is still running"
     if run.exit_code < 0:
         try:
             name = signals.Signals(-run.exit_code).name
@@ -141,9 +143,9 @@ def describe_exit(run) -> str:
 def judge_exit_code(sim, robot, code: int = 0) -> Verdict:
     view = sim.robot(robot)
     run = view.program
-    evidence = {"exit_code": None if run is None else run.exit_code,
+    evidence = {"exit_code": view.exit_code,
                 "stopped": bool(run and run.stopped_by_us), "error": run.error if run else None}
-    ok = run is not None and run.exit_code == code and not run.error
+    ok = run is not None and view.exit_code == code and not run.error
     message = f"robot {view.id}'s program {describe_exit(run)}"
     if not ok:
         tail = view.stderr.strip().splitlines()[-5:]

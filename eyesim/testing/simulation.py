@@ -157,11 +157,13 @@ class Simulation:
 
     # -- programs --------------------------------------------------------------------------------
     def program(self, robot, program, *args: str, stdin: str | bytes | None = None, cwd=None,
-                env: dict | None = None, cpu_seconds: float | None = None, memory_bytes: int | None = None):
+                env: dict | None = None, cpu_seconds: float | None = None, memory_bytes: int | None = None,
+                own_group: bool = False):
         """Run a program for a robot when the simulation starts: an executable, a `.py` file
         (run with this Python) or a Python callable `program(robot_client)` (callable_program.py).
         Programs start with the first `run()`; their results are read from `robot(n)`.
-        `cpu_seconds` and `memory_bytes` limit the program's process (launcher.ProgramOptions)."""
+        `cpu_seconds` and `memory_bytes` limit the program's process; `own_group` gives it a
+        process group of its own, stopped as a whole (launcher.ProgramOptions)."""
         robot_id = self._robot(robot).id
         if robot_id in self._runs or any(r == robot_id for r, *_ in self._pending_programs):
             raise SimulationError(f"robot {robot_id} already has a program")
@@ -172,7 +174,7 @@ class Simulation:
             if not path.is_file():
                 raise SimulationError(f"program not found: {program}")
             options = ProgramOptions(tuple(str(a) for a in args), stdin, cwd, dict(env or {}), cpu_seconds,
-                                     memory_bytes)
+                                     memory_bytes, own_group)
             self._pending_programs.append((robot_id, path, options))
         if self._started:
             self._start_programs()
@@ -321,15 +323,20 @@ class Simulation:
         self.engine.stop()
 
     # -- the end ---------------------------------------------------------------------------------
+    def stop_programs(self) -> None:
+        """End the run for the programs: those still running are stopped (and not counted as
+        failed), and everything they printed is taken in. The world stays readable."""
+        self._launcher.stop_all(let_finish=0.0)
+        for run in self._runs.values():
+            if not hasattr(run, "process"):
+                stop_callable(run)
+
     def close(self) -> None:
         """Stop the programs still running (not counted as failed), the server and threads."""
         if self._closed:
             return
         self._closed = True
-        self._launcher.stop_all(let_finish=0.0)
-        for run in self._runs.values():
-            if not hasattr(run, "process"):
-                stop_callable(run)
+        self.stop_programs()
         self.engine.shutdown_sessions()
         self._server.stop()
         self._io.stop()

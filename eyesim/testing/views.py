@@ -107,7 +107,8 @@ class RobotView:
     def exit_code(self) -> int | None:
         """The program's exit status (negative: the signal that ended it); None while it runs,
         when it was stopped at the end of the run, or without a program."""
-        return self.program.exit_code if self.program else None
+        run = self.program
+        return None if run is None or run.stopped_by_us else run.exit_code
 
     @property
     def workdir(self) -> Path | None:
