@@ -1,7 +1,9 @@
 """Collisions from MuJoCo's contacts: who touched whom (robots, objects, walls), how often and when.
 
-A contact is an episode: two things start touching at a physics step and touch in every step
-until they part. Touching the floor and a robot's parts touching each other are not contacts."""
+A contact is an episode: two things start touching at a physics step and touch until they part
+for longer than REJOIN (a robot grinding along a wall loses and regains contact every few
+steps; that is one collision, not hundreds). Touching the floor and a robot's parts touching
+each other are not contacts."""
 
 from __future__ import annotations
 
@@ -11,6 +13,7 @@ import mujoco
 import numpy as np
 
 NOTHING = -1  # the floor, water and anything else that is not a robot, an object or a wall
+REJOIN = 0.1  # s: touching again this soon after parting continues the same episode
 
 
 @dataclass(frozen=True, order=True)
@@ -66,6 +69,7 @@ class ContactTracker:
                 self.things.append(Thing("wall", int(name[4:]) + 1))
         self.codes = codes
         self.touching: dict[tuple[int, int], Contact] = {}
+        self.parted: dict[tuple[int, int], Contact] = {}  # the last episode of pairs not touching now
         self.contacts: list[Contact] = []
 
     def __call__(self, sim) -> None:
@@ -77,11 +81,17 @@ class ContactTracker:
             if len(ends):
                 pairs = {(int(min(a, b)), int(max(a, b))) for a, b in ends}
         for pair in self.touching.keys() - pairs:
-            self.touching.pop(pair).end = sim.time
+            contact = self.touching.pop(pair)
+            contact.end = sim.time
+            self.parted[pair] = contact
         for pair in pairs - self.touching.keys():
-            contact = Contact(self.things[pair[0]], self.things[pair[1]], sim.time)
+            contact = self.parted.pop(pair, None)
+            if contact is not None and sim.time - contact.end <= REJOIN + 1e-9:
+                contact.end = None  # the same collision goes on
+            else:
+                contact = Contact(self.things[pair[0]], self.things[pair[1]], sim.time)
+                self.contacts.append(contact)
             self.touching[pair] = contact
-            self.contacts.append(contact)
 
     def of(self, thing: Thing, with_kind: str = "any") -> list[Contact]:
         """Episodes of `thing` touching something of a kind ('robot', 'object', 'wall' or 'any')."""
