@@ -198,6 +198,8 @@ class Simulation:
 
     def _deterministic_round(self) -> None:
         self._handle_inbox(block=None)
+        if self._stopping:  # e.g. the last program's connection closed just now: not one step more
+            return
         live = [s for s in self.sessions if s.robot is not None and not s.closed]
         now = time.perf_counter()
         waiting_for = [s for s in live if not s.queued and not s.blocked(now)]
