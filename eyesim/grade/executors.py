@@ -67,7 +67,7 @@ class DaskCluster:
                                              dashboard_address=None)
                 self.client = Client(self._cluster)
             else:
-                self.client = Client(address, timeout="20s")
+                self.client = Client(address, timeout="10s")  # refused connections are retried until then
         except ExecutorError:
             raise
         except (OSError, TimeoutError) as error:
