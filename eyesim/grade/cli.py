@@ -19,6 +19,8 @@ def register(subparsers) -> None:
     parser.add_argument("--workers", type=int, metavar="N", help="local case processes at once (default: one per core)")
     parser.add_argument("--cluster", metavar="ADDRESS",
                         help="run the cases on a Dask cluster: a scheduler address (tcp://host:8786) or local:N")
+    parser.add_argument("--case", action="append", default=[], metavar="NAME",
+                        help="grade only this case of the spec (repeatable)")
     parser.add_argument("--fresh", action="store_true", help="grade everything again, ignoring stored results")
     parser.add_argument("--require-pass", action="store_true",
                         help="exit with status 1 unless every check of every case passed (regression tests)")
@@ -37,6 +39,12 @@ def main(args) -> int:
             print(problem, file=sys.stderr)
         print(f"eyesim grade: {len(error.problems)} problem(s) in the grading spec", file=sys.stderr)
         return 2
+    if args.case:
+        unknown = [name for name in args.case if name not in {c.name for c in spec.cases}]
+        if unknown:
+            return _usage(f"no case {', '.join(map(repr, unknown))} in {args.spec} "
+                          f"(cases: {', '.join(c.name for c in spec.cases)})")
+        spec.cases = [c for c in spec.cases if c.name in args.case]
     if args.workers is not None and args.workers < 1:
         return _usage("--workers must be at least 1")
     if args.workers is not None and args.cluster:

@@ -109,8 +109,10 @@ def judge_lcd_text(sim, robot, text: str | None = None, regex: str | None = None
     view = sim.robot(robot)
     rows = view.lcd_text()
     where = rows if row is None else [rows[row][column or 0:] if row < len(rows) else ""]
+    if text is not None:
+        text_shown = text.rstrip()  # rows end at their last character: trailing blanks are not text
     found = any((re.search(regex, r) if regex is not None else
-                 (r.startswith(text) if column is not None else text in r)) for r in where)
+                 (r.startswith(text_shown) if column is not None else text_shown in r)) for r in where)
     wanted = f"/{regex}/" if regex is not None else repr(text)
     at = "" if row is None else f" at row {row}" + ("" if column is None else f", column {column}")
     evidence = {"lcd_text": rows}
