@@ -63,6 +63,7 @@ bench: $(INSTALLED)
 	$(BIN)/python bench/bench_stalled_client.py
 	$(BIN)/python bench/bench_sensors.py
 	$(BIN)/python bench/bench_realtime_factor.py
+	$(BIN)/python bench/bench_grading.py
 
 clean:
 	rm -rf $(VENV) build

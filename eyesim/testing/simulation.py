@@ -29,9 +29,12 @@ from eyesim.launcher import Launcher, ProgramOptions
 from eyesim.net.io_thread import IoThread
 from eyesim.net.program_server import ProgramServer
 from eyesim.protocol import generated as g
+from eyesim.robot.components.analog_io import CHANNELS, MAX_VALUE
+from eyesim.robot.components.digital_io import LINES
 from eyesim.robot.components.irtv import code_of
 from eyesim.robot.components.keys import KEY_NAMES
-from eyesim.robot.components.serial_ports import SerialPorts
+from eyesim.robot.components.lcd import HEIGHT, WIDTH
+from eyesim.robot.components.serial_ports import INTERFACES, SerialPorts
 from eyesim.scene.description import Scene
 from eyesim.testing.callable_program import start_callable, stop_callable
 from eyesim.testing.contacts import ContactTracker
@@ -221,6 +224,8 @@ class Simulation:
 
     def touch(self, robot, x: int, y: int, at: float) -> None:
         robot_id = self._robot(robot).id
+        if not (0 <= x < WIDTH and 0 <= y < HEIGHT):
+            raise SimulationError(f"touch at ({x}, {y}) is outside the {WIDTH}x{HEIGHT} LCD")
         self.at(at, lambda s: robot_input.touch(s, robot_id, x, y))
 
     def irtv(self, robot, button: str, at: float) -> None:
@@ -229,6 +234,8 @@ class Simulation:
 
     def serial(self, robot, interface: int, data: str | bytes, at: float) -> None:
         robot_id = self._robot(robot).id
+        if interface not in INTERFACES:
+            raise SimulationError(f"serial interface {interface} is not 0..20")
         data = data.encode("latin-1") if isinstance(data, str) else bytes(data)
         self.at(at, lambda s: robot_input.serial(s, robot_id, interface, data))
 
@@ -237,10 +244,15 @@ class Simulation:
 
     def digital(self, robot, line: int, level: int | None, at: float) -> None:
         robot_id = self._robot(robot).id
+        if not 1 <= line <= LINES or level not in (0, 1, None):
+            raise SimulationError(f"digital line {line} level {level}: lines are 1..{LINES}, levels 0, 1 or None")
         self.at(at, lambda s: robot_input.digital(s, robot_id, line, level))
 
     def analog(self, robot, channel: int, value: int, at: float) -> None:
         robot_id = self._robot(robot).id
+        if not (1 <= channel <= CHANNELS and 0 <= value <= MAX_VALUE):
+            raise SimulationError(f"analog channel {channel} value {value}: channels are 1..{CHANNELS}, "
+                                  f"values 0..{MAX_VALUE}")
         self.at(at, lambda s: robot_input.analog(s, robot_id, channel, value))
 
     @staticmethod

@@ -192,6 +192,10 @@ def test_objects_and_bad_selectors(eyesim_sim):
         sim.program(1, "/nonexistent/program")
     with pytest.raises(SimulationError, match="needs `until`"):
         sim.run()
+    with pytest.raises(SimulationError, match="touch at \\(480, 10\\) is outside the 480x320 LCD"):
+        sim.touch(1, 480, 10, at=1)
+    with pytest.raises(SimulationError, match="'KEY5' is not KEY1..KEY4"):
+        sim.key(1, "KEY5", at=1)
 
 
 def test_the_same_run_twice_gives_the_same_path(eyesim_sim, eyesim_cc):
