@@ -82,7 +82,7 @@ def main() -> None:
         # Baseline: the correct submission's case alone, as `eyesim run` runs it.
         good = tmp / "good"
         subprocess.run(eyesim("cc", "-O2", str(ROOT / "examples" / "programs" / "wall_follow.c"), "-o", str(good)),
-                       check=True)
+                       check=True, cwd=tmp)
         alone = min(timed(eyesim("run", "--headless", "--port", "0", str(ROOT / "examples" / "scenes" / "wall_follow.sim"),
                                  "--program", f"1={good}", "--key", f"1:KEY4@{args.seconds - 5:g}",
                                  "--until", f"{args.seconds:g}"), tmp) for _ in range(3))
