@@ -9,7 +9,8 @@ examples/grading/lab_submissions.py: correct, slow, not compiling, crashing, han
 without RoBIOS calls until the 1 s CPU limit), driving into walls, misnamed — 2 cases each. It is
 graded with 1 and 2 local workers and through a Dask cluster of 2 worker processes
 (`--cluster local:2`), each from scratch (`--fresh`), timing the whole command. The baseline is
-the same case run alone with `eyesim run --headless` (correct submission, best of 3), and each
+the same case run alone with `eyesim run --headless` (correct submission, best of 3, ending when
+the program ends at KEY4 as the graded case does), and each
 case's own time inside the grader (result `timing.case_seconds`, build and process start
 included) is compared with it.
 """
@@ -84,8 +85,8 @@ def main() -> None:
         subprocess.run(eyesim("cc", "-O2", str(ROOT / "examples" / "programs" / "wall_follow.c"), "-o", str(good)),
                        check=True, cwd=tmp)
         alone = min(timed(eyesim("run", "--headless", "--port", "0", str(ROOT / "examples" / "scenes" / "wall_follow.sim"),
-                                 "--program", f"1={good}", "--key", f"1:KEY4@{args.seconds - 5:g}",
-                                 "--until", f"{args.seconds:g}"), tmp) for _ in range(3))
+                                 "--program", f"1={good}", "--key", f"1:KEY4@{args.seconds - 5:g}"), tmp)
+                    for _ in range(3))  # ends when the program does, as the grader's case does
 
         runs = {}
         configurations = [("local, 1 worker", ["--workers", "1"]), ("local, 2 workers", ["--workers", "2"])]

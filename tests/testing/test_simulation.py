@@ -207,3 +207,25 @@ def test_the_same_run_twice_gives_the_same_path(eyesim_sim, eyesim_cc):
         paths.append(sim.robot(1).path)
     assert paths[0] == paths[1]
     assert math.hypot(paths[0][-1].x - paths[0][0].x, paths[0][-1].y - paths[0][0].y) > 300
+
+
+def test_the_last_camera_image_and_contacts_between_robots_are_read_back(eyesim_sim):
+    def look(robot):
+        robot.CAMInit(0)  # QQVGA
+        _, width, height, pixels = robot.CAMGet()
+        return width, height, len(pixels)
+
+    def ram(robot):
+        robot.VWSetSpeed(300, 0)
+        robot.OSWait(4000)
+
+    sim = eyesim_sim(arena(robots=((500, 1000, 0), (1200, 1000, 180))))
+    sim.program(1, look)
+    sim.program(2, ram)
+    sim.run(until=6)
+    assert sim.robot(1).program.value == (160, 120, 160 * 120 * 3)
+    assert sim.robot(1).camera_image().shape == (120, 160, 3)
+    assert sim.robot(2).camera_image() is None
+    [contact] = sim.robot(1).contacts("robot")
+    assert {str(contact.first), str(contact.second)} == {"robot 1", "robot 2"} and 1 < contact.start < 4
+    assert sim.robot(2).contacts("robot") == [contact] and sim.robot(1).contacts("wall") == []
