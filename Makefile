@@ -64,6 +64,7 @@ bench: $(INSTALLED)
 	$(BIN)/python bench/bench_sensors.py
 	$(BIN)/python bench/bench_realtime_factor.py
 	$(BIN)/python bench/bench_recording.py
+	$(BIN)/python bench/bench_grading.py
 
 clean:
 	rm -rf $(VENV) build

@@ -12,6 +12,7 @@ SUBCOMMAND_MODULES = (
     "eyesim.toolchain",
     "eyesim.scene.cli",
     "eyesim.record.cli",
+    "eyesim.grade.cli",
 )
 
 

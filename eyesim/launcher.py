@@ -3,13 +3,50 @@
 from __future__ import annotations
 
 import os
+import resource
+import signal
 import subprocess
 import sys
 import threading
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from eyesim import paths
+
+OUTPUT_LIMIT = 1 << 20  # characters of a program's output kept per stream (a runaway printf loop)
+
+
+@dataclass(frozen=True)
+class ProgramOptions:
+    """How a program starts beyond its path: arguments, input, directory, environment and limits.
+
+    `stdin` (text or bytes) is written to the program's standard input, which is then closed;
+    None gives it no input. `cwd` defaults to the program's directory; `env` adds to (and
+    overrides) the environment. `cpu_seconds` and `memory_bytes` are resource limits of the
+    program's process (RLIMIT_CPU, RLIMIT_AS). With `own_group` the program gets a process group
+    of its own, so that stopping it also stops the processes it started; without, it stays in
+    ours (the grader kills a case's whole group at once)."""
+
+    args: tuple[str, ...] = ()
+    stdin: str | bytes | None = None
+    cwd: str | Path | None = None
+    env: dict[str, str] = field(default_factory=dict)
+    cpu_seconds: float | None = None
+    memory_bytes: int | None = None
+    own_group: bool = False
+
+    @property
+    def limited(self) -> bool:
+        return self.cpu_seconds is not None or self.memory_bytes is not None
+
+
+def _apply_limits(cpu_seconds: float | None, memory_bytes: int | None) -> None:
+    """Runs in the child between fork and exec: only async-signal-safe work (setrlimit)."""
+    if cpu_seconds is not None:
+        soft = max(1, int(cpu_seconds + 0.999))
+        resource.setrlimit(resource.RLIMIT_CPU, (soft, soft + 1))  # SIGXCPU, then SIGKILL a second later
+    if memory_bytes is not None:
+        resource.setrlimit(resource.RLIMIT_AS, (memory_bytes, memory_bytes))
 
 
 @dataclass
@@ -20,6 +57,17 @@ class ProgramRun:
     exit_code: int | None = None
     stopped_by_us: bool = False
     error: str | None = None
+    options: ProgramOptions = ProgramOptions()
+    output: dict = field(default_factory=lambda: {"stdout": [], "stderr": []})  # text as it came
+    truncated: bool = False  # output beyond OUTPUT_LIMIT was dropped
+
+    def text(self, stream: str = "stdout") -> str:
+        return "".join(self.output[stream])
+
+    @property
+    def signal(self) -> int | None:
+        """The signal that ended the program (a crash, a limit), if one did."""
+        return -self.exit_code if self.exit_code is not None and self.exit_code < 0 else None
 
     @property
     def name(self) -> str:
@@ -61,9 +109,10 @@ class Launcher:
         self.runs: list[ProgramRun] = []
         self._lock = threading.Lock()
         self._threads: list[threading.Thread] = []
+        self._run_threads: dict[int, list[threading.Thread]] = {}  # id(run) -> its output and exit threads
 
-    def start(self, robot_id: int, path: str | Path) -> ProgramRun:
-        run = ProgramRun(robot_id, Path(path))
+    def start(self, robot_id: int, path: str | Path, options: ProgramOptions = ProgramOptions()) -> ProgramRun:
+        run = ProgramRun(robot_id, Path(path), options=options)
         self.runs.append(run)
         try:
             found = run.path.is_file()
@@ -74,28 +123,60 @@ class Launcher:
             run.error = f"program not found: {path}"
             self._print(run, "stderr", f"eyesim: {run.error}\n")
             return run
-        env = program_environment(self.host, self.port, robot_id)
+        env = dict(program_environment(self.host, self.port, robot_id), **options.env)
         robot_id_ = robot_id
         self.sim.call(lambda sim: sim.expected_programs.add(robot_id_))
         run.path = run.path.resolve()
+        limits = None
+        if options.limited:
+            limits = lambda: _apply_limits(options.cpu_seconds, options.memory_bytes)  # noqa: E731
         try:
-            run.process = subprocess.Popen(command_for(run.path), cwd=run.path.parent, env=env,
-                                           stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                                           stderr=subprocess.PIPE)
+            run.process = subprocess.Popen(
+                [*command_for(run.path), *options.args], cwd=options.cwd or run.path.parent, env=env,
+                stdin=subprocess.DEVNULL if options.stdin is None else subprocess.PIPE,
+                stdout=subprocess.PIPE, stderr=subprocess.PIPE, preexec_fn=limits,
+                start_new_session=options.own_group)
         except OSError as error:
             run.error = f"cannot start {run.path}: {error.strerror}"
             self._print(run, "stderr", f"eyesim: {run.error}\n")
             self.sim.call(lambda sim: sim.program_gone(robot_id_))
             return run
         self.sim.call(lambda sim: sim.events.program(robot_id_, "started", run.name, None))
-        for stream in ("stdout", "stderr"):
-            thread = threading.Thread(target=self._forward, args=(run, stream), daemon=True)
+        if options.stdin is not None:
+            feeder = threading.Thread(target=self._feed, args=(run,), daemon=True)
+            feeder.start()
+            self._threads.append(feeder)
+        threads = [threading.Thread(target=self._forward, args=(run, stream), daemon=True)
+                   for stream in ("stdout", "stderr")]
+        threads.append(threading.Thread(target=self._wait, args=(run,), daemon=True))
+        for thread in threads:
             thread.start()
-            self._threads.append(thread)
-        waiter = threading.Thread(target=self._wait, args=(run,), daemon=True)
-        waiter.start()
-        self._threads.append(waiter)
+        self._threads += threads
+        self._run_threads[id(run)] = threads
         return run
+
+    def settle(self, wait: float = 0.0) -> None:
+        """Let programs that are ending finish (up to `wait` s each), then take in everything
+        the ended ones printed and their exit codes."""
+        for run in self.runs:
+            if run.process is None:
+                continue
+            if wait > 0:
+                try:
+                    run.process.wait(timeout=wait)
+                except subprocess.TimeoutExpired:
+                    continue
+            if run.process.poll() is not None:
+                for thread in self._run_threads.get(id(run), ()):
+                    thread.join(timeout=2.0)
+
+    def _feed(self, run: ProgramRun) -> None:
+        data = run.options.stdin
+        try:
+            run.process.stdin.write(data.encode() if isinstance(data, str) else data)
+            run.process.stdin.close()
+        except OSError:
+            pass  # the program ended without reading all of it
 
     def _forward(self, run: ProgramRun, stream: str) -> None:
         pipe = getattr(run.process, stream)
@@ -104,6 +185,13 @@ class Launcher:
         pipe.close()
 
     def _print(self, run: ProgramRun, stream: str, text: str) -> None:
+        with self._lock:
+            kept = sum(map(len, run.output[stream]))
+            if kept + len(text) <= OUTPUT_LIMIT:
+                run.output[stream].append(text)
+            else:
+                run.output[stream].append(text[:max(0, OUTPUT_LIMIT - kept)])
+                run.truncated = True
         if self.echo:
             with self._lock:
                 target = sys.stdout if stream == "stdout" else sys.stderr
@@ -121,6 +209,15 @@ class Launcher:
             sim.program_gone(robot_id)
 
         self.sim.call(exited)
+
+    def kill(self, run: ProgramRun) -> None:
+        """Stop a program at once (a watchdog's last resort), with its process group if it has one."""
+        if run.process is not None and run.process.poll() is None:
+            run.stopped_by_us = True
+            if run.options.own_group:
+                _kill_group(run.process.pid)
+            else:
+                run.process.kill()
 
     @property
     def all_exited(self) -> bool:
@@ -148,6 +245,15 @@ class Launcher:
                 except subprocess.TimeoutExpired:
                     run.process.kill()
                     run.process.wait()
+                if run.options.own_group:
+                    _kill_group(run.process.pid)  # whatever it started in its group
         for thread in self._threads:
             thread.join(timeout=grace)
 
+
+
+def _kill_group(pgid: int) -> None:
+    try:
+        os.killpg(pgid, signal.SIGKILL)
+    except (ProcessLookupError, PermissionError):
+        pass
