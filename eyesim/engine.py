@@ -59,7 +59,7 @@ class Simulation:
         self.events = EventBus()
         self.inbox: queue.SimpleQueue = queue.SimpleQueue()  # actions from other threads
         # Program sockets are served on this thread: waiting for the next step means waiting on them.
-        self.network = ProgramSockets(self._deliver, self._connected, self._drop_session)
+        self.network = ProgramSockets(self._deliver, self._connected, self.drop_session)
         self._ready: deque[Session] = deque()  # realtime: programs with queued requests, served in turn
         self._running = False
         self.sessions: list[Session] = []
@@ -462,7 +462,8 @@ class Simulation:
         if not session.closed:
             session.connection.send(frame)
 
-    def _drop_session(self, session: Session) -> None:
+    def drop_session(self, session: Session) -> None:
+        """A program's connection ended (or is ended): forget it; the run may be over."""
         session.closed = True
         session.pending.clear()
         session.queued.clear()
@@ -488,7 +489,7 @@ class Simulation:
         self.network.close_all()
         for session in list(self.sessions):
             session.connection.close()
-            self._drop_session(session)
+            self.drop_session(session)
 
     # -- publishing ------------------------------------------------------------------------------
     def _publish(self, force: bool = False) -> None:

@@ -15,15 +15,18 @@ class NoConnection:
     def close(self) -> None:
         pass
 
+    def resume(self) -> None:
+        pass
+
 
 def test_no_step_is_taken_after_the_last_program_leaves():
     engine = Engine(arena(), Clock(DETERMINISTIC))
     session = Session(NoConnection(), robot=engine.robots[0])
     engine.sessions.append(session)
     engine.stop_when_programs_done = True
-    # The disconnect is already queued when the round starts (the program left while the
-    # simulation thread was busy): the run must stop where it is, as when the disconnect
-    # arrives while the loop waits for the program.
-    engine.disconnect(session)
+    # The end is already known when the round starts (the program left while the simulation
+    # thread was busy): the run must stop where it is, as when the end arrives while the loop
+    # waits for the program.
+    engine.call(lambda sim: sim.drop_session(session))
     engine.run(until=1.0)
     assert engine.time_us == 0
