@@ -46,6 +46,7 @@ DEFAULT_STEP_US = 2000  # physics step: 2 ms
 SNAPSHOT_PERIOD = 1 / 30  # wall seconds between published snapshots
 MAX_CATCH_UP_STEPS = 50  # realtime: steps taken in one go before looking at the queue again
 IDLE_WAIT = 0.05  # s the loop sleeps when nothing can happen (paused, waiting for programs)
+IDLE_POLL_STEPS = 50  # at --speed max with no program connected: look for new connections this often
 # Simulation time an ordinary call takes (docs/running.md#call-time): EyeSim answered in a few ms,
 # and lab programs that count loop iterations instead of time were written against that.
 DEFAULT_CALL_TIME_US = 4000
@@ -172,7 +173,10 @@ class Simulation:
             self._serve()
             return
         if self.clock.as_fast_as_possible:  # one step per round, each program served once in between
-            self._wait(0)
+            if self.sessions or self.steps % IDLE_POLL_STEPS == 0:
+                self._wait(0)
+            else:  # no program connected: only a new connection could come, and it can wait a little
+                self._drain_inbox()
             self._serve(rounds=1)
             self.step()
             self._release_held()
