@@ -19,7 +19,7 @@ from aiohttp import WSMsgType, web
 from eyesim.record.recording import Recording, RecordingError
 from eyesim.web import timeline
 from eyesim.web.access import AccessPolicy
-from eyesim.web.server import MAX_COMMAND_BYTES, TEXTURE_TYPES, _reject_constant, static_file, viewer_url
+from eyesim.web.server import MAX_COMMAND_BYTES, TEXTURE_TYPES, _reject_constant, serve_app, static_file, viewer_url
 
 log = logging.getLogger("eyesim.web")
 MAX_UPLOAD_BYTES = 4 * 1024**3  # a recording sent from the page (hours of cameras are a few GB)
@@ -48,11 +48,7 @@ class ReplayServer:
         app.router.add_get("/scene/floor-texture", self._floor_texture)
         app.router.add_get("/scene/mesh/{kind}/{id}", self._mesh)
         app.router.add_get("/{path:.*}", static_file)
-        self._runner = web.AppRunner(app, access_log=None)
-        await self._runner.setup()
-        site = web.TCPSite(self._runner, self.host, self.port)
-        await site.start()
-        self.port = site._server.sockets[0].getsockname()[1]
+        self._runner, self.port = await serve_app(app, self.host, self.port)
 
     async def stop(self) -> None:
         if self._runner is not None:

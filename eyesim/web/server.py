@@ -321,6 +321,15 @@ def _camera_message(robot: int, pixels) -> str:
                        "jpeg": base64.b64encode(buffer.getvalue()).decode("ascii")})
 
 
+async def serve_app(app: web.Application, host: str, port: int) -> tuple[web.AppRunner, int]:
+    """Serve `app` on host:port (0: any free port); returns its runner and the port it got."""
+    runner = web.AppRunner(app, access_log=None)
+    await runner.setup()
+    site = web.TCPSite(runner, host, port)
+    await site.start()
+    return runner, site._server.sockets[0].getsockname()[1]
+
+
 def viewer_url(host: str, port: int, access: AccessPolicy) -> str:
     """The URL to print for the page (with the access token when one is needed)."""
     host = socket.gethostname() if host in ("0.0.0.0", "::", "") else host
@@ -370,11 +379,7 @@ class ViewerServer:
         app.router.add_get("/scene/floor-texture", self._floor_texture)
         app.router.add_get("/scene/mesh/{kind}/{id}", self._mesh)
         app.router.add_get("/{path:.*}", static_file)
-        self._runner = web.AppRunner(app, access_log=None)
-        await self._runner.setup()
-        site = web.TCPSite(self._runner, self.host, self.port)
-        await site.start()
-        self.port = site._server.sockets[0].getsockname()[1]
+        self._runner, self.port = await serve_app(app, self.host, self.port)
 
     def stop(self) -> None:
         if self.hub is not None and self.hub in self.sim.events.listeners:
