@@ -13,14 +13,16 @@ PRECISION = 3  # decimals of a metre: millimetres are plenty for a line on the s
 
 
 def sensor_rays(robots) -> list[dict]:
-    """Per robot and sensor kind: the beams' common origin (PSDs: one entry each) and the points
-    where they end (m, world frame); a beam that hits nothing ends at the sensor's range."""
+    """Per robot and sensor kind: the beams' common origin (PSDs: one entry each, with the PSD's
+    id) and the points where they end (m, world frame); a beam that hits nothing ends at the
+    sensor's range."""
     rays = []
     for robot in robots:
         for sensor in robot.components_of(PsdSensor):
             origin, direction, hit = sensor.beam()
             end = origin + direction * (hit if hit is not None else MAX_RANGE_MM / 1000)
-            rays.append({"robot": robot.id, "kind": "psd", "origin": _rounded(origin), "ends": _rounded(end)})
+            rays.append({"robot": robot.id, "kind": "psd", "psd": sensor.id, "origin": _rounded(origin),
+                         "ends": _rounded(end)})
         scanner = robot.component(LidarScanner)
         if scanner is not None and scanner.last_scan is not None:
             origin, directions, distances = scanner.last_scan

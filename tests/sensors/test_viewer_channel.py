@@ -38,7 +38,8 @@ def test_snapshots_carry_the_sensor_rays_only_with_vis():
     rays = sim.snapshot()["rays"]
     psd = [r for r in rays if r["kind"] == "psd"]
     assert len(psd) == 8 and not [r for r in rays if r["kind"] == "lidar"]  # no scan taken yet
-    front = next(r for r in psd if r["robot"] == 1)  # S4's PSDs in id order: PSD_FRONT first
+    assert [r["psd"] for r in psd if r["robot"] == 1] == [1, 2, 3, 4]  # S4's PSDs, PSD_FRONT first
+    front = next(r for r in psd if r["robot"] == 1)
     length = np.linalg.norm(np.subtract(front["ends"], front["origin"]))
     assert abs(length * 1000 - sim.robots[0].components_of(PsdSensor)[0].distance_mm()) < 2
 

@@ -1,6 +1,6 @@
 """`eyesim replay` in headless Chromium: scrub a recording of a real C program to a time and see the
-recorded pose, LCD, console and path; plot signals; screenshots and a WebM video. And a live run
-scrubbed back over its recent history."""
+recorded pose, LCD, console and path; plot signals, picked from the list or by clicking a robot or a
+PSD beam; screenshots and a WebM video. And a live run scrubbed back over its recent history."""
 
 from __future__ import annotations
 
@@ -21,6 +21,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.programs import build, eyesim_command, simulator_with_viewer  # noqa: E402
 from support.recordings import record_tour  # noqa: E402
 
+from eyesim.paths import DATA_DIR
 from eyesim.record import Recording
 
 pytestmark = pytest.mark.browser
@@ -58,6 +59,37 @@ def scrub_to(page, seconds: float, exact: bool = True) -> None:
         window.eyesimViewer.framesShown() > frames &&
         (!exact || Math.abs(window.eyesimViewer.robotPose(1).time - window.eyesimViewer.timeline().time) < 1e-6)""",
                            arg=[seconds, frames, exact])
+
+
+def psd_beams(page) -> list[dict]:
+    """The PSD beams drawn now: robot, psd and the beam's start (the sensor) and end on the page (CSS px)."""
+    return page.evaluate("""() => window.eyesimViewer.sensorRays().filter(r => r.kind === 'psd').map(r => ({
+        robot: r.robot, psd: r.psd,
+        start: window.eyesimViewer.worldScreenPosition(...r.origin),
+        end: window.eyesimViewer.worldScreenPosition(...r.ends)}))""")
+
+
+def segment_distance(point: np.ndarray, start: np.ndarray, end: np.ndarray) -> float:
+    along = end - start
+    t = np.clip(np.dot(point - start, along) / max(np.dot(along, along), 1e-9), 0, 1)
+    return float(np.linalg.norm(start + t * along - point))
+
+
+def click_beside_psd_beam(page, robot: int, psd: int, beside: float = 4.0) -> None:
+    """Clicks `beside` pixels off the drawn beam of the robot's PSD, at a point of its outer part
+    that is at least 12 px from every other PSD beam (so only this one can be meant)."""
+    beams = psd_beams(page)
+    corner = lambda p: np.array([p["x"], p["y"]])  # noqa: E731
+    target = next(b for b in beams if b["robot"] == robot and b["psd"] == psd)
+    start, end = corner(target["start"]), corner(target["end"])
+    others = [(corner(b["start"]), corner(b["end"])) for b in beams if b is not target]
+    normal = np.array([start[1] - end[1], end[0] - start[0]]) / np.linalg.norm(end - start)
+    for fraction in np.linspace(0.2, 0.95, 31):
+        point = start + fraction * (end - start) + beside * normal
+        if all(segment_distance(point, a, b) > 12 for a, b in others):
+            page.mouse.click(*point)
+            return
+    raise AssertionError(f"robot {robot}'s PSD {psd} beam runs too near other beams to click")
 
 
 def decoded(png_base64: str) -> np.ndarray:
@@ -109,6 +141,54 @@ def test_plots_show_signals_picked_from_the_list_and_by_clicking_a_robot(browser
     assert viewer.state("timeline")["mode"] == "replay"  # the click picked, it did not move anything
     assert viewer.errors == []
     page.close()
+
+
+def test_clicking_a_psd_beam_or_its_sensor_plots_that_psds_readings(browser_context, replay, tour):
+    viewer = open_viewer(browser_context, replay)
+    page = viewer.page
+    page.click("#plots-toggle")
+    scrub_to(page, 0.6)
+    page.wait_for_function("() => window.eyesimViewer.sensorRays().length === 12")  # 3 robots' 4 PSDs
+    page.wait_for_timeout(300)  # the 3D view took its new size
+    shown = viewer.state("timeline")
+    click_beside_psd_beam(page, robot=2, psd=1)
+    page.wait_for_function("() => window.eyesimViewer.plotted().length === 1")
+    assert viewer.state("plotted") == [{"id": "robot/2/psd.1", "points": 4}]  # the PSD, not robot 2's x and y
+
+    sensor = next(b for b in psd_beams(page) if b["robot"] == 1 and b["psd"] == 1)["start"]
+    page.mouse.click(sensor["x"], sensor["y"])  # where the sensor sits on the robot
+    page.wait_for_function("() => window.eyesimViewer.plotted().length === 2")
+    assert [p["id"] for p in viewer.state("plotted")] == ["robot/2/psd.1", "robot/1/psd.1"]
+
+    click_beside_psd_beam(page, robot=1, psd=2)  # PSD_LEFT: record_tour never reads it
+    page.wait_for_function("() => window.eyesimViewer.plotNotice() !== ''")
+    assert viewer.state("plotNotice") == "Robot 1's PSD 2 has no readings: its program has not read it."
+    assert len(viewer.state("plotted")) == 2
+    assert viewer.state("timeline") == shown  # the clicks picked, they did not move anything
+    page.screenshot(path=str(tour.parent / "psd-click.png"))
+    assert viewer.errors == []
+    page.close()
+
+
+def test_clicking_a_psd_beam_in_a_live_run_plots_it_without_moving_the_robot(browser_context, tmp_path):
+    program = build("record_tour", tmp_path)
+    scene = tmp_path / "vis.sim"
+    scene.write_text(f"world {DATA_DIR / 'scenes' / 'arena.wld'}\nsettings VIS\nS4 500 500 0\n")
+    with simulator_with_viewer(str(scene), "--program", f"1={program}", cwd=tmp_path) as (_, url):
+        viewer = open_viewer(browser_context, url)
+        page = viewer.page
+        page.click("#plots-toggle")
+        page.wait_for_function("() => window.eyesimViewer.consoleText(1).includes('done')", timeout=20_000)
+        page.wait_for_timeout(300)  # the robot has stopped; the 3D view took its new size
+        pose = viewer.state("robotPose", 1)["pos"]
+        click_beside_psd_beam(page, robot=1, psd=1)
+        page.wait_for_function("() => window.eyesimViewer.plotted().length === 1")
+        assert viewer.state("plotted") == [{"id": "robot/1/psd.1", "points": 4}]
+        assert viewer.state("dragging") is None  # a press on the beam did not grab the robot under it
+        assert np.allclose(viewer.state("robotPose", 1)["pos"], pose, atol=1e-3)  # nor move it
+        assert viewer.state("timeline")["mode"] == "live"
+        assert viewer.errors == []
+        page.close()
 
 
 def test_screenshots_and_a_webm_video_of_the_replay(browser_context, replay, tour, tmp_path):

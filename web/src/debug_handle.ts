@@ -4,7 +4,7 @@ import type { ConnectionState } from "./connection";
 import type { DragTarget } from "./interaction";
 import type { Pose } from "./interpolation";
 import { meshBox, meshCount } from "./mesh_loader";
-import type { IoMessage, Quat, SceneWarning, StatusMessage, Vec3 } from "./protocol";
+import type { IoMessage, Quat, SceneWarning, SensorRays, StatusMessage, Vec3 } from "./protocol";
 import type { ProgramState } from "./robot_panel";
 import type { TimelineState } from "./timeline_bar";
 import type { Viewer } from "./viewer";
@@ -56,6 +56,8 @@ export interface EyesimViewerDebug {
   soundsPlayed(robot: number): number;
   /** sensor ray segments drawn now (scene setting VIS) */
   raySegments(): number;
+  /** the sensor rays drawn now, as received (world coordinates, m) */
+  sensorRays(): SensorRays[];
   /** how many .obj models are drawn, and one's bounding box in world coordinates (m, z up) */
   meshesDrawn(): number;
   meshBox(kind: "robot" | "object", id: number): { min: number[]; max: number[] } | null;
@@ -70,6 +72,8 @@ export interface EyesimViewerDebug {
   framesShown(): number;
   /** what the plot panel draws: signal ids and their number of points */
   plotted(): { id: string; points: number }[];
+  /** the plot panel's note on why a click in the 3D view added nothing ("" if none) */
+  plotNotice(): string;
   /** the last video made with the Video button: its size in bytes, or null */
   lastVideoSize(): number | null;
   /** the last video as base64 (for tests that check its frames) */
@@ -123,6 +127,7 @@ export function installDebugHandle(viewer: Viewer): void {
     ioState: (robot) => viewer.panels.find(robot)?.io.state() ?? null,
     soundsPlayed: (robot) => viewer.audio.soundsPlayed(robot),
     raySegments: () => viewer.overlays.raySegments(),
+    sensorRays: () => structuredClone(viewer.overlays.drawnRays()),
     meshesDrawn: () => meshCount(),
     meshBox: (kind, id) => meshBox(`${kind} ${id}`),
     tracePoints: (robot) => viewer.overlays.tracePoints(robot),
@@ -131,6 +136,7 @@ export function installDebugHandle(viewer: Viewer): void {
     timeline: () => viewer.timeline.current,
     framesShown: () => viewer.framesShown,
     plotted: () => viewer.plots.plottedSeries(),
+    plotNotice: () => viewer.plots.noticeText(),
     lastVideoSize: () => viewer.video.last?.size ?? null,
     lastVideo: async () => {
       const video = viewer.video.last;

@@ -1,10 +1,11 @@
 // Drag to place: press on a robot or object in the 3D view and drag it across the floor (Shift+drag
 // turns it); the simulator moves it on `place` commands, as SIMSetRobot/SIMSetObject would.
+// Clicks pick robots and objects, and PSD beams (drawn with the scene setting VIS) for the plots.
 
 import { Matrix4, Object3D, Plane, Quaternion, Raycaster, Vector2, Vector3, type Camera } from "three";
 import type { OrbitControls } from "three/addons/controls/OrbitControls.js";
 import type { Pose, Poses } from "./interpolation";
-import type { BrowserCommand, SceneMessage } from "./protocol";
+import type { BrowserCommand, SceneMessage, SensorRays } from "./protocol";
 import type { BuiltWorld } from "./world_builder";
 
 /** What can be dragged: a robot (also when grabbed by an arm link or wheel) or an object. */
@@ -12,6 +13,9 @@ export interface DragTarget {
   kind: "robot" | "object";
   id: number;
 }
+
+/** What a click picks: a robot or object, or a robot's PSD (`id` as PSDGet takes it) by its beam. */
+export type PickTarget = DragTarget | { kind: "psd"; robot: number; id: number };
 
 /** What the 3D view lends the dragging. */
 export interface DragHost {
@@ -23,12 +27,17 @@ export interface DragHost {
   world(): BuiltWorld | null;
   scene(): SceneMessage | null;
   requestRender(): void;
-  /** a click on a robot or object (without dragging it); also how a read-only view picks things */
-  picked(target: DragTarget): void;
+  /** a click on a robot or object (without dragging it), or on a PSD beam; also how a read-only
+   *  view picks things */
+  picked(target: PickTarget): void;
+  /** the sensor rays drawn now (world coordinates) */
+  rays(): SensorRays[];
 }
 
 /** A press that moves less than this (CSS pixels) before its release is a click. */
 const CLICK_DISTANCE = 3;
+/** A click this near (CSS pixels) to a PSD beam on the screen is a click on that beam. */
+const BEAM_PICK_DISTANCE = 6;
 
 /** Shift+drag turns the thing by one degree per pixel of sideways mouse motion (right = clockwise). */
 const TURN_PER_PIXEL = Math.PI / 180;
@@ -66,9 +75,19 @@ function wrapAngle(angle: number): number {
   return Math.atan2(Math.sin(angle), Math.cos(angle));
 }
 
+/** The distance from point p to the segment from a to b. */
+function distanceToSegment(p: Vector2, a: Vector2, b: Vector2): number {
+  const ab = b.clone().sub(a);
+  const length2 = ab.lengthSq();
+  const t = length2 > 0 ? Math.min(1, Math.max(0, p.clone().sub(a).dot(ab) / length2)) : 0;
+  return a.clone().addScaledVector(ab, t).distanceTo(p);
+}
+
 export class DragToPlace {
   private readonly raycaster = new Raycaster();
   private drag: Drag | null = null;
+  /** A press on a PSD beam: released without moving, it is a click that picks the PSD. */
+  private beamPress: { target: PickTarget; pointer: number; x: number; y: number } | null = null;
   /** Watching a recording or the past: things can be clicked (picked) but not moved. */
   readOnly = false;
   private startClientY = 0;
@@ -143,6 +162,11 @@ export class DragToPlace {
     // Only presses on the 3D picture itself (not on the help, labels or notices over it).
     if (event.target !== this.host.canvas || event.button !== 0 || !event.isPrimary) return;
     if (this.drag?.releasedAt === null) return;
+    // A beam before the robot it starts on: a beam is a thin line, the robot is easy to hit beside it.
+    // The press still goes on to the camera controls, so dragging from a beam turns the view.
+    const beam = this.pickBeam(event);
+    this.beamPress = beam && { target: beam, pointer: event.pointerId, x: event.clientX, y: event.clientY };
+    if (beam) return;
     const target = this.pick(event);
     const world = this.host.world();
     const floor = this.floorPoint(event);
@@ -181,7 +205,7 @@ export class DragToPlace {
     const drag = this.drag;
     if (!drag || drag.releasedAt !== null) {
       if (event.buttons === 0 && event.target === this.host.canvas) {
-        this.host.canvas.style.cursor = this.pick(event) ? "grab" : "";
+        this.host.canvas.style.cursor = this.pickBeam(event) ? "pointer" : this.pick(event) ? "grab" : "";
       }
       return;
     }
@@ -192,6 +216,12 @@ export class DragToPlace {
   }
 
   private release(event: PointerEvent): void {
+    const pressed = this.beamPress;
+    if (pressed && event.pointerId === pressed.pointer) {
+      this.beamPress = null;
+      const still = Math.hypot(event.clientX - pressed.x, event.clientY - pressed.y) < CLICK_DISTANCE;
+      if (event.type === "pointerup" && still) this.host.picked(pressed.target);
+    }
     const drag = this.drag;
     if (!drag || drag.releasedAt !== null || event.pointerId !== drag.pointer) return;
     event.stopPropagation();
@@ -263,6 +293,35 @@ export class DragToPlace {
       }
     }
     return null;
+  }
+
+  /** The PSD whose beam, from the sensor on its robot to where the beam ends, passes within
+   *  BEAM_PICK_DISTANCE of the pointer on the screen (the nearest if several), or null. */
+  private pickBeam(event: PointerEvent): PickTarget | null {
+    const rect = this.host.canvas.getBoundingClientRect();
+    const pointer = new Vector2(event.clientX - rect.left, event.clientY - rect.top);
+    const { camera, root } = this.host;
+    camera.updateMatrixWorld();
+    root.updateMatrixWorld();
+    const onScreen = ([x, y, z]: number[]): Vector2 | null => {
+      const ndc = new Vector3(x, y, z).applyMatrix4(root.matrixWorld).project(camera);
+      if (Math.abs(ndc.z) > 1) return null; // behind the camera or beyond its far plane
+      return new Vector2(((ndc.x + 1) / 2) * rect.width, ((1 - ndc.y) / 2) * rect.height);
+    };
+    let nearest: PickTarget | null = null;
+    let nearestDistance = BEAM_PICK_DISTANCE;
+    for (const ray of this.host.rays()) {
+      if (ray.kind !== "psd" || ray.psd === undefined) continue;
+      const start = onScreen(ray.origin);
+      const end = onScreen(ray.ends.slice(0, 3));
+      if (!start || !end) continue;
+      const distance = distanceToSegment(pointer, start, end);
+      if (distance <= nearestDistance) {
+        nearest = { kind: "psd", robot: ray.robot, id: ray.psd };
+        nearestDistance = distance;
+      }
+    }
+    return nearest;
   }
 
   /** The floor point (world coordinates) under the pointer; null when it points above the horizon. */

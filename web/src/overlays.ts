@@ -23,6 +23,8 @@ export class Overlays {
   /** Add to the world root: everything here is in world coordinates. */
   readonly group = new Group();
   private readonly rays = new Group();
+  /** the rays drawn now, as received */
+  private shownRays: SensorRays[] = [];
   private readonly traces = new Map<number, Trace>();
   private settings: SceneSettings = { vis: false, trace: false };
 
@@ -84,6 +86,11 @@ export class Overlays {
     return Math.min(trace.points.length / 3, range.count === Infinity ? Infinity : range.start + range.count);
   }
 
+  /** The sensor rays drawn now (what a click in the 3D view can pick a PSD beam from). */
+  drawnRays(): SensorRays[] {
+    return this.shownRays;
+  }
+
   /** Number of ray segments drawn (for tests). */
   raySegments(): number {
     let count = 0;
@@ -94,6 +101,7 @@ export class Overlays {
   }
 
   private showRays(rays: SensorRays[]): void {
+    this.shownRays = rays;
     for (const child of [...this.rays.children]) {
       this.rays.remove(child);
       (child as LineSegments).geometry.dispose();

@@ -1,6 +1,6 @@
 // Plots of recorded or live signals (pose, odometry, speeds, encoders, battery, PSD readings) against
 // simulation time, drawn with uPlot; a line marks the timeline's time. Signals come from the server
-// (`signals`, `series`); pick them from the list or by clicking a robot in the 3D view.
+// (`signals`, `series`); pick them from the list or by clicking a robot or a PSD beam in the 3D view.
 
 import uPlot from "uplot";
 import "uplot/dist/uPlot.min.css";
@@ -15,7 +15,9 @@ const CURSOR_COLOR = "#c0392b";
 export class PlotPanel {
   private readonly list = element("div", "plot-signals");
   private readonly chartBox = element("div", "plot-chart");
-  private readonly hint = element("p", "plot-hint", "Pick signals below, or click a robot in the 3D view.");
+  private readonly hint = element("p", "plot-hint", "Pick signals below, or click a robot or a PSD beam in the 3D view.");
+  /** why a click in the 3D view added nothing */
+  private readonly notice = element("span", "plot-notice");
   private signals: SignalInfo[] = [];
   private readonly selected = new Set<string>();
   private plot: uPlot | null = null;
@@ -36,7 +38,7 @@ export class PlotPanel {
       this.showList();
       this.fetch();
     });
-    header.append(element("h2", "plot-title", "Plots"), clear);
+    header.append(element("h2", "plot-title", "Plots"), clear, this.notice);
     this.chartBox.append(this.hint);
     root.append(header, this.chartBox, this.list);
     new ResizeObserver(() => this.resize()).observe(this.chartBox);
@@ -78,6 +80,7 @@ export class PlotPanel {
 
   /** Adds signals (by id) to the plot and opens the panel; ids the source lacks are dropped once its list is in. */
   select(ids: string[]): void {
+    this.notice.textContent = "";
     for (const id of ids) if (this.signals.length === 0 || this.signals.some((s) => s.id === id)) this.selected.add(id);
     this.toggle(true);
     this.showList();
@@ -88,6 +91,20 @@ export class PlotPanel {
   pickRobot(robot: number): void {
     const names = ["x", "y", "psd.1"];
     this.select(names.map((n) => `robot/${robot}/${n}`));
+  }
+
+  /** A PSD beam was clicked: plot that PSD's readings, which there are only if the program read it. */
+  pickPsd(robot: number, psd: number): void {
+    const id = `robot/${robot}/psd.${psd}`;
+    this.select([id]);
+    if (this.signals.length > 0 && !this.selected.has(id)) {
+      this.notice.textContent = `Robot ${robot}'s PSD ${psd} has no readings: its program has not read it.`;
+    }
+  }
+
+  /** What the note beside the title says now (for tests). */
+  noticeText(): string {
+    return this.notice.textContent ?? "";
   }
 
   showSeries(series: Series[]): void {

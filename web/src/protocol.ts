@@ -134,6 +134,8 @@ export interface SnapshotMessage {
 export interface SensorRays {
   robot: number;
   kind: "psd" | "lidar";
+  /** a PSD beam's sensor id (as PSDGet takes it); absent for lidar and in older recordings */
+  psd?: number;
   origin: Vec3;
   ends: number[];
 }
@@ -506,12 +508,14 @@ function parseSensorRays(r: Fields, what: string): SensorRays {
   if (!Array.isArray(ends) || ends.length % 3 !== 0) {
     throw new MalformedMessage(`${what}.ends must be a list of x, y, z triples`);
   }
-  return {
+  const rays: SensorRays = {
     robot: num(r.robot, `${what}.robot`),
     kind: oneOf(r.kind, ["psd", "lidar"] as const, `${what}.kind`),
     origin: numbers(r.origin, 3, `${what}.origin`) as Vec3,
     ends: numbers(ends, ends.length, `${what}.ends`),
   };
+  if (r.psd !== undefined) rays.psd = num(r.psd, `${what}.psd`);
+  return rays;
 }
 
 function parseBodyPose(b: Fields, what: string): BodyPose {

@@ -59,9 +59,15 @@ export class Viewer {
     this.toolbar = new Toolbar(elements.toolbar, send);
     this.panels = new PanelList(elements.panels, send);
     this.warnings = new SceneWarnings(elements.toolbar);
-    this.world = new WorldView(elements.world, send, (target) => {
-      if (target.kind === "robot") this.plots.pickRobot(target.id);
-    });
+    this.world = new WorldView(
+      elements.world,
+      send,
+      (target) => {
+        if (target.kind === "robot") this.plots.pickRobot(target.id);
+        if (target.kind === "psd") this.plots.pickPsd(target.robot, target.id);
+      },
+      () => this.overlays.drawnRays(),
+    );
     this.help = new HelpOverlay(elements.world);
     this.world.addOverlay(this.overlays.group);
     this.timeline = new TimelineBar(elements.timeline, send);

@@ -12,9 +12,9 @@ import {
 } from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 import { CSS2DRenderer } from "three/addons/renderers/CSS2DRenderer.js";
-import { DragToPlace, type DragTarget } from "./interaction";
+import { DragToPlace, type DragTarget, type PickTarget } from "./interaction";
 import type { Pose, Poses } from "./interpolation";
-import type { BrowserCommand, Floor, SceneMessage } from "./protocol";
+import type { BrowserCommand, Floor, SceneMessage, SensorRays } from "./protocol";
 import { buildWorld, disposeWorld, type BuiltWorld } from "./world_builder";
 import { createWorldRoot, worldToThree } from "./world_frame";
 
@@ -101,7 +101,8 @@ export class WorldView {
   constructor(
     private readonly container: HTMLElement,
     send: (command: BrowserCommand) => void,
-    picked: (target: DragTarget) => void = () => {},
+    picked: (target: PickTarget) => void = () => {},
+    rays: () => SensorRays[] = () => [],
   ) {
     this.scene.background = new Color(0xdde3ea);
     this.scene.add(new HemisphereLight(0xffffff, 0x8a8f96, 2.2));
@@ -130,6 +131,7 @@ export class WorldView {
           scene: () => this.sceneMessage,
           requestRender: () => (this.needsRender = true),
           picked,
+          rays,
         },
         send,
       );
