@@ -146,7 +146,7 @@ class VwController(Component):
         """An arc of `distance` m changing the heading by `angle` rad; a zero distance turns on the
         spot with the wheels at `speed`."""
         if distance == 0:
-            self._refuse_spot_turn()
+            self._refuse_spot_turn()  # before the speed is divided by a spot radius of 0
             self.turn(angle, abs(speed) / self.spot_radius)
         else:
             radius = abs(distance / angle) if angle else math.inf
