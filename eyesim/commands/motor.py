@@ -25,7 +25,7 @@ def _motor(robot, number: int):
                            if not robot.motors else generated.ERR_BAD_ARGUMENT)
     # Driving a motor directly takes it over from the V-omega controller.
     for vw in robot.components_of(VwController):
-        if motor in vw.drive.wheels:
+        if motor in vw.drive.motors.values():
             vw.release()
     return motor
 

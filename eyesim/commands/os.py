@@ -1,9 +1,8 @@
 """RoBIOS system group: waiting and counting in simulation time (milliseconds), and the machine's identity."""
 
 from eyesim.commands.errors import CommandError
+from eyesim.robot.drives import drive_of
 from eyesim.session import Pending
-
-VEHICLE, PLATFORM = 1, 2  # OSMachineType values (WALKER = 3: no walking robots here)
 
 
 def os_wait(sim, robot, request):
@@ -36,8 +35,9 @@ def os_machine_id(sim, robot, request):
 
 
 def os_machine_type(sim, robot, request):
-    """A manipulator on a fixed base is a PLATFORM; everything that moves about is a VEHICLE."""
-    return (PLATFORM if robot.type.drive == "arm" else VEHICLE,)
+    """What the robot's drive declares: a manipulator on a fixed base is a PLATFORM, everything that
+    moves about a VEHICLE (no walking robots here)."""
+    return (int(drive_of(robot.type).machine_type),)
 
 
 HANDLERS = {

@@ -1,8 +1,9 @@
-"""RoBIOS V-omega group: driving by linear and angular speed, in mm, mm/s, degrees and deg/s."""
+"""RoBIOS V-omega group: driving by linear and angular speed, in mm, mm/s, degrees and deg/s, on any
+drive with kinematics; what a drive cannot do (a car turning on the spot) is a BAD_ARGUMENT error."""
 
 import math
 
-from eyesim.commands.errors import CommandError, require
+from eyesim.commands.errors import CommandError, checked_arguments, require
 from eyesim.physics.units import mm, to_mm, wrap_degrees
 from eyesim.robot.components.vw import VwController
 from eyesim.session import Pending
@@ -14,7 +15,8 @@ def _vw(robot) -> VwController:
 
 def vw_set_speed(sim, robot, request):
     lin, ang = request.args
-    _vw(robot).set_speed(mm(lin), math.radians(ang))
+    with checked_arguments():
+        _vw(robot).set_speed(mm(lin), math.radians(ang))
     return (0,)
 
 
@@ -42,13 +44,15 @@ def vw_straight(sim, robot, request):
 
 def vw_turn(sim, robot, request):
     angle, speed = request.args
-    _vw(robot).turn(math.radians(angle), math.radians(speed))
+    with checked_arguments():
+        _vw(robot).turn(math.radians(angle), math.radians(speed))
     return (0,)
 
 
 def vw_curve(sim, robot, request):
     dist, angle, speed = request.args
-    _vw(robot).curve(mm(dist), math.radians(angle), mm(speed))
+    with checked_arguments():
+        _vw(robot).curve(mm(dist), math.radians(angle), mm(speed))
     return (0,)
 
 
@@ -57,7 +61,8 @@ def vw_drive(sim, robot, request):
     vw = _vw(robot)
     if dx < abs(dy) or dx <= 0:  # dx == |dy| is a quarter circle
         raise CommandError(f"the point ({dx}, {dy}) cannot be reached on an arc: dx must be at least |dy| (and above 0)")
-    vw.drive_to(mm(dx), mm(dy), mm(speed))
+    with checked_arguments():
+        vw.drive_to(mm(dx), mm(dy), mm(speed))
     return (0,)
 
 

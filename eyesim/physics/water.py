@@ -1,6 +1,6 @@
 """Water: the pool a submarine scene is filled with, and the buoyancy and drag it exerts on a body.
 
-A scene is under water when one of its robots swims (a `buoyancy` line or the SUBMARINE drive).
+A scene is under water when one of its robots swims (a `buoyancy` line or a drive that swims).
 The water then fills the whole floor up to its surface: the height of the highest wall (the pool's
 rim), or DEFAULT_SURFACE without walls. It is fresh water of DENSITY kg/m^3 (docs/robots.md)."""
 
@@ -9,6 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from eyesim.physics.units import mm
+from eyesim.robot.drives import drive_of
 from eyesim.scene.description import Scene
 
 DENSITY = 1000.0  # kg/m^3, fresh water
@@ -24,7 +25,7 @@ class Water:
 
 
 def water_of(scene: Scene) -> Water | None:
-    swimming = any(scene.robot_types[p.type_name].drive == "submarine"
+    swimming = any(drive_of(scene.robot_types[p.type_name]).swims
                    or scene.robot_types[p.type_name].buoyancy is not None for p in scene.robots)
     if not swimming:
         return None

@@ -11,6 +11,7 @@ from eyesim.physics.units import mm, rad, yaw_quat
 from eyesim.physics.visual_mesh import add_model
 from eyesim.physics.world import add_collider, rgba
 from eyesim.robot.component import Component
+from eyesim.robot.drives import drive_of
 from eyesim.robot.robot import Robot
 from eyesim.scene.description import Collider, RobotPlacement, RobotType, Settings
 
@@ -52,8 +53,9 @@ class BuildContext:
 
 
 def mounted(robot_type: RobotType) -> bool:
-    """A manipulator on a fixed base is bolted to the floor; every other robot moves freely."""
-    return robot_type.drive == "arm"
+    """A manipulator on a fixed base is bolted to the floor (its drive says so); every other robot
+    moves freely."""
+    return drive_of(robot_type).mounted
 
 
 def hull_colliders(robot_type: RobotType) -> tuple[Collider, ...]:

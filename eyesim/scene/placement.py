@@ -33,10 +33,11 @@ WIDE = 64  # cells: a longer wall (or a larger body) is looked at by every query
 def _robot_extent(robot_type: RobotType) -> tuple[float, float, float, float]:
     """A robot's floor-plan bounding box: its hull as the physics builds it, and its drive wheels."""
     from eyesim.robot.build import hull_colliders  # here: the robot package imports the scene's
+    from eyesim.robot.drives import drive_of
 
     x0, y0, x1, y1 = _box_extent(hull_colliders(robot_type))
     wheels = robot_type.wheels
-    if wheels is not None and robot_type.drive in ("differential", "ackermann"):
+    if wheels is not None and drive_of(robot_type).wheels_outside_hull:
         radius, reach = wheels.diameter / 2, wheels.track / 2 + wheels.diameter / 2
         x0, x1 = min(x0, robot_type.axis_offset - radius), max(x1, robot_type.axis_offset + radius)
         y0, y1 = min(y0, -reach), max(y1, reach)

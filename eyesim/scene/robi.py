@@ -14,6 +14,7 @@ import dataclasses
 import re
 from pathlib import Path
 
+from eyesim.robot.drives import DRIVES, drive_named, drive_of
 from eyesim.scene.description import (ArmSpec, BuoyancySpec, CameraSpec, Collider, DragSpec, GripperSpec,
                                       JointSpec, LidarSpec, Location, PsdSpec, RobotType, SteeringSpec,
                                       ThrusterSpec, WheelSpec)
@@ -23,15 +24,7 @@ from eyesim.scene.lexer import Line, Token, format_number, integer, number, quot
 from eyesim.scene.robot_type import finish_robot_type
 
 DIALECTS = ("eyesim", "eyesim6", "vr", "vr1")
-DRIVES = {
-    "differential_drive": "differential", "differential": "differential",
-    "ackermann_drive": "ackermann", "ackermann": "ackermann",
-    "omni_drive": "omni", "omni": "omni",
-    "submarine": "submarine", "submarine_drive": "submarine",
-    "arm": "arm", "arm_drive": "arm",
-}
-DRIVE_KEYWORDS = {"differential": "DIFFERENTIAL_DRIVE", "ackermann": "ACKERMANN_DRIVE", "omni": "OMNI_DRIVE",
-                  "submarine": "SUBMARINE", "arm": "ARM"}
+DRIVE_CHOICES = ", ".join(drive.keyword for drive in DRIVES[:-1]) + f" or {DRIVES[-1].keyword}"
 PSD_IDS = {"PSD_FRONT": 1, "PSD_LEFT": 2, "PSD_RIGHT": 3, "PSD_BACK": 4}  # RoBIOS 7
 VR_ONLY = ("mass", "collider", "axel", "lidar")
 _SERVO = re.compile(r"SERVO(\d+)\(([^,()]+),([^,()]+)\)", re.IGNORECASE)
@@ -162,15 +155,13 @@ class _RobotReader(KeywordReader):
 
     def kw_drive(self, line: Line) -> None:
         if not line.args:
-            self.error(line, "drive: expected a drive type (DIFFERENTIAL_DRIVE, ACKERMANN_DRIVE, OMNI_DRIVE, "
-                             "SUBMARINE or ARM), found nothing")
+            self.error(line, f"drive: expected a drive type ({DRIVE_CHOICES}), found nothing")
             return
-        kind = DRIVES.get(line.args[0].text.lower())
-        if kind is None:
-            self.error(line, "drive: expected DIFFERENTIAL_DRIVE, ACKERMANN_DRIVE, OMNI_DRIVE, SUBMARINE or ARM, "
-                             f"found {quoted(line.args[0].text)}", 1)
+        drive = drive_named(line.args[0].text)
+        if drive is None:
+            self.error(line, f"drive: expected {DRIVE_CHOICES}, found {quoted(line.args[0].text)}", 1)
             return
-        self.fields["drive"] = kind
+        self.fields["drive"] = drive.name
         self.fields["drive_motors"] = tuple(t.text for t in line.args[1:])
         self.remember("drive", line)
 
@@ -584,7 +575,7 @@ def write_robi(robot: RobotType) -> str:
     """RobotType as .robi text in our dialect (every position in the robot frame, full track)."""
     f = format_number
     out = ["# EyeSim robot definition (written by eyesim convert)", "dialect eyesim",
-           " ".join(["drive", DRIVE_KEYWORDS[robot.drive], *robot.drive_motors]),
+           " ".join(["drive", drive_of(robot).keyword, *robot.drive_motors]),
            f"name {quote_token(robot.name)}",
            f"size {f(robot.length)} {f(robot.width)} {f(robot.height)}",
            "color " + " ".join(str(c) for c in robot.color)]
@@ -609,7 +600,7 @@ def write_robi(robot: RobotType) -> str:
         return f"{keyword} {f(w.diameter)} {f(w.max_speed)} {w.ticks_per_rev} {f(w.track)}"
 
     if robot.wheels is not None:
-        out.append(wheel_line("wheel drive" if robot.drive == "ackermann" else "wheel", robot.wheels))
+        out.append(wheel_line(drive_of(robot).wheel_keyword, robot.wheels))
     if robot.steering is not None:
         s = robot.steering
         out.append(f"axel turn {f(s.height) if s.height is not None else 0} {f(s.offset)}")

@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import dataclasses
 
+from eyesim.robot.drives import drive_of
 from eyesim.scene.description import Location, RobotType, WheelSpec
 from eyesim.scene.diagnostics import Diagnostics
 from eyesim.scene.lexer import format_number
 
-WHEELED = ("differential", "ackermann", "omni")
 DEFAULT_WHEELS = WheelSpec(54.0, 3600.0, 1100, 90.0)  # the S4's
 MAX_DENSITY = 8.0  # g/cm3: a robot heavier than solid steel of its size is a typo
 ESTIMATED_DENSITY = 0.5  # g/cm3 of a typical small robot (S4: 0.8 kg in 2.4 litres)
@@ -20,14 +20,14 @@ def finish_robot_type(robot: RobotType, diagnostics: Diagnostics, where: dict[st
     `where` maps a field name ('wheels', 'mass', 'psd:<i>', ...) to where it was written."""
     at = lambda key: where.get(key, default_location)  # noqa: E731 - short local lookup
     changes = {}
-    if robot.drive in WHEELED and robot.wheels is None:
+    drive = drive_of(robot)
+    if drive.wheeled and robot.wheels is None:
         diagnostics.warning(at("drive"), f"a {robot.drive} robot needs a 'wheel' line; using the S4's wheels "
                             "(54 mm, 3600 deg/s, 1100 ticks, track 90 mm)", "missing-wheels")
         changes["wheels"] = DEFAULT_WHEELS
-    if robot.drive == "submarine" and not robot.thrusters:
-        diagnostics.warning(at("drive"), "a submarine without 'thruster' lines cannot move", "no-thrusters")
-    if robot.drive == "arm" and (robot.arm is None or not robot.arm.joints):
-        diagnostics.warning(at("drive"), "an arm robot without 'joint' lines cannot move", "no-joints")
+    immobile = drive.check(robot)
+    if immobile is not None:
+        diagnostics.warning(at("drive"), *immobile)
     volume = robot.length * robot.width * robot.height / 1000.0  # cm3
     if volume > 0 and robot.mass * 1000.0 / volume > MAX_DENSITY:
         estimate = float(f"{volume * ESTIMATED_DENSITY / 1000.0:.2g}")  # two significant digits

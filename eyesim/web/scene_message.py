@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from eyesim.physics.objects import shape_of
 from eyesim.physics.units import mm
+from eyesim.robot.drives import drive_of
 from eyesim.web.mesh_message import has_mesh, mesh_url
 
 
@@ -14,11 +15,12 @@ def scene_message(sim, texture_url: str | None) -> dict:
     robots = []
     for robot in sim.robots:
         t = robot.type
+        wheels = t.wheels if drive_of(t).viewer_wheels else None
         robots.append({"id": robot.id, "name": robot.name, "type": t.name,
                        "size": [mm(t.length), mm(t.width), mm(t.height)], "color": list(t.color),
                        # Other drives' wheels come as robot bodies of their own (below).
-                       "wheel_diameter": mm(t.wheels.diameter) if t.wheels and t.drive == "differential" else 0.0,
-                       "track": mm(t.wheels.track) if t.wheels and t.drive == "differential" else 0.0})
+                       "wheel_diameter": mm(wheels.diameter) if wheels else 0.0,
+                       "track": mm(wheels.track) if wheels else 0.0})
         if has_mesh(sim, robot.body):  # its .obj model, drawn instead of the box (mesh_message.py)
             robots[-1]["mesh"] = mesh_url("robot", robot.id)
     markers = [{"x": mm(m.x), "y": mm(m.y), "color": list(m.color)} for m in scene.markers]

@@ -34,6 +34,6 @@ def test_the_car_turns_on_the_circle_its_geometry_gives(drive):
     assert cy > 1200
     [[ticks]] = run.values(1, "encoder")
     assert ticks > 500  # the driven axle turned
-    # no servo 2, position 256, no motor 2, no VW for a car
+    # no servo 2, position 256, no motor 2, no turning on the spot for a car
     assert run.values(1, "errors") == [[1, 1, 1, 1]]
-    assert "has no V-omega drive" in run.stderr
+    assert "the Ackermann car cannot turn on the spot" in run.stderr

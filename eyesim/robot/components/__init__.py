@@ -1,11 +1,10 @@
 """Registry of component kinds: each factory looks at a robot type and returns the components it needs.
 
-Adding a component kind = one new module with a `create(context)` function + one line here."""
+Adding a component kind = one new module with a `create(context)` function + one line here. A
+robot's drive (wheels, motors, steering) comes from its declared drive archetype (robot/drives)."""
 
-from eyesim.robot.components import camera
-from eyesim.robot.components import differential_drive  # one import and one FACTORIES line per kind
-from eyesim.robot.components import ackermann_drive
-from eyesim.robot.components import omni_drive
+from eyesim.robot import drives
+from eyesim.robot.components import camera  # one import and one FACTORIES line per kind
 from eyesim.robot.components import thrusters
 from eyesim.robot.components import buoyancy
 from eyesim.robot.components import arm
@@ -25,10 +24,8 @@ from eyesim.robot.components import timers
 from eyesim.robot.components import vw
 
 FACTORIES = (
-    differential_drive.create,
-    vw.create,
-    ackermann_drive.create,
-    omni_drive.create,
+    drives.create,
+    vw.create,  # after the drive: it drives any drive with kinematics
     thrusters.create,
     buoyancy.create,
     arm.create,

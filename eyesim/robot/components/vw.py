@@ -1,16 +1,18 @@
-"""V-omega driving for a differential drive: speed control, manoeuvres (straight, turn, curve, drive
-to a point), odometry and stall detection.
+"""V-omega driving for any drive with kinematics (robot/drives/archetype.py: differential, mecanum,
+Ackermann): speed control, manoeuvres (straight, turn, curve, drive to a point), odometry and
+stall detection.
 
 The controller closes its loop on the simulated encoders, as on the real robot; the odometry it
-integrates from them (VWGetPosition) drifts with wheel slip, unlike the true pose (SIMGetRobot)."""
+integrates from them (VWGetPosition) drifts with wheel slip, unlike the true pose (SIMGetRobot).
+A drive that cannot turn on the spot (a car) follows arcs no tighter than its smallest radius."""
 
 from __future__ import annotations
 
 import math
 
-from eyesim.physics.units import mm
+from eyesim.physics.units import mm, to_mm
 from eyesim.robot.component import Component
-from eyesim.robot.components.differential_drive import DifferentialDrive
+from eyesim.robot.drives.archetype import Kinematics
 
 LINEAR_ACCEL = 1.0  # m/s^2 the controller ramps linear speed by (keeps the wheels from slipping)
 BRAKE_FRACTION = 0.5  # of the acceleration used to plan the stop, leaving headroom for lag
@@ -29,6 +31,10 @@ STALL_END_WINDOWS = 3  # a manoeuvre stalled for this many windows in a row ends
 PLAN_PERIOD = 0.01  # s between plans while cruising
 
 
+class DriveLimitError(ValueError):
+    """A command the drive cannot carry out (a car turning on the spot, an arc too tight for it)."""
+
+
 class Manoeuvre:
     """A drive of `distance` m (signed) along an arc that changes the heading by `rotation` rad
     (signed); distance 0 is a turn on the spot. `speed` is m/s along the path, or rad/s for a turn.
@@ -36,11 +42,10 @@ class Manoeuvre:
     The plan follows one quantity, `length`: metres of path, or radians for a turn on the spot;
     what it needs every step is worked out here once."""
 
-    def __init__(self, distance: float, rotation: float, speed: float, start_ticks: tuple[int, int],
-                 half_track: float, top_wheel_speed: float, metres_per_tick: float):
+    def __init__(self, distance: float, rotation: float, speed: float, start: tuple, drive: Kinematics):
         self.distance = distance
         self.rotation = rotation
-        self.start_ticks = start_ticks
+        self.start = start  # the drive's odometer reading
         self.on_the_spot = distance == 0
         followed = rotation if self.on_the_spot else distance
         self.sign = 1.0 if followed >= 0 else -1.0
@@ -48,11 +53,11 @@ class Manoeuvre:
         self.curvature = 0.0 if self.on_the_spot else rotation / distance  # rad per metre
         self.top_speed = abs(speed)
         if not self.on_the_spot:  # the outer wheel must stay within its motor's reach
-            self.top_speed = min(self.top_speed, top_wheel_speed / (1 + abs(self.curvature) * half_track))
-        scale = 1 / half_track if self.on_the_spot else 1.0  # wheel metres -> the followed unit
-        # Half the odometry's resolution (one wheel's tick moves the robot half a tick): a coarser
-        # tolerance would end every manoeuvre short by the same amount, and twelve turns add it up.
-        self.tolerance = metres_per_tick / 2 * scale
+            self.top_speed = min(self.top_speed, drive.top_speed(self.curvature))
+        scale = 1 / drive.spot_radius if self.on_the_spot else 1.0  # wheel metres -> the followed unit
+        # The odometry's resolution (what one wheel's tick moves the robot): a coarser tolerance
+        # would end every manoeuvre short by the same amount, and twelve turns add it up.
+        self.tolerance = drive.tick_travel * scale
         self.floor = MIN_APPROACH_SPEED * scale
         self.crawl = CRAWL_DISTANCE * scale
         self.braking = 2 * BRAKE_FRACTION * LINEAR_ACCEL * scale  # speed = sqrt(braking x remaining)
@@ -64,13 +69,15 @@ class Manoeuvre:
 class VwController(Component):
     kind = "vw"
 
-    def __init__(self, drive: DifferentialDrive, max_speed: float, max_turn: float):
+    def __init__(self, drive: Kinematics, max_speed: float, max_turn: float):
         self.drive = drive
         self.max_speed = max_speed  # m/s, the robot type's
         self.max_turn = max_turn  # rad/s
-        self.metres_per_tick = 2 * math.pi * drive.radius / drive.ticks_per_rev
-        self.half_track = drive.track / 2
-        self.turn_accel = LINEAR_ACCEL / self.half_track  # rad/s^2 of the ramp
+        self.spot_radius = drive.spot_radius
+        # A steered drive cannot turn on its own: its turn rate follows its speed along the arc.
+        self.steered = drive.spot_radius == 0
+        self.turn_accel = 0.0 if self.steered else LINEAR_ACCEL / self.spot_radius  # rad/s^2 of the ramp
+        self._watched = drive.stall_watch()
         self.reset()
 
     def reset(self) -> None:
@@ -83,7 +90,7 @@ class VwController(Component):
         self.engaged = False  # the wheels' speeds still need setting every step (ramp, manoeuvre)
         self.driving = False  # the controller has the wheels turning: watch for stalls
         self.odometry = [0.0, 0.0, 0.0]  # x, y (m), phi (rad) since start or VWSetPosition
-        self._last_left = self._last_right = None  # encoder ticks after the last step
+        self._reading: tuple | None = None  # the drive's odometer after the last step
         self.stalled = 0  # bit 0 left, bit 1 right
         self._window_time = 0.0  # s into the current stall window
         self._window_start: tuple | None = None  # ticks, wheel speed set points, wheel ground positions
@@ -92,31 +99,38 @@ class VwController(Component):
         self.stuck = False  # the last manoeuvre ended stalled: VWStalled keeps saying so until the next command
 
     # -- geometry ----------------------------------------------------------------------------
-    def _ticks(self) -> tuple[int, int]:
-        return self.drive.wheels[0].raw_ticks(), self.drive.wheels[1].raw_ticks()
-
     def _progress(self) -> tuple[float, float]:
         """Distance (m) and rotation (rad) since the manoeuvre started, from the encoders (as read
         after the last step: the wheels have not moved since)."""
-        start = self.manoeuvre.start_ticks
-        left, right = (self._last_left, self._last_right) if self._last_left is not None else self._ticks()
-        left = (left - start[0]) * self.metres_per_tick
-        right = (right - start[1]) * self.metres_per_tick
-        return (left + right) / 2, (right - left) / self.drive.track
+        reading = self._reading if self._reading is not None else self.drive.odometer()
+        distance, _, rotation = self.drive.motion(self.manoeuvre.start, reading)
+        return distance, rotation
+
+    def _refuse_spot_turn(self) -> None:
+        if self.steered:
+            raise DriveLimitError(f"{self.drive.noun} cannot turn on the spot; drive an arc with VWCurve or VWDrive")
 
     # -- commands (from the VW handlers) -----------------------------------------------------
     def set_speed(self, v: float, w: float) -> None:
+        """Drives on at v, w, each limited to the robot's speeds; a steered drive's turn rate also
+        to what its tightest arc gives at that speed."""
+        if v == 0 and w != 0:
+            self._refuse_spot_turn()
         self.manoeuvre = None
         self._owed = None
         self._new_command()
         self.engaged = self.driving = True
         self.target_v = max(-self.max_speed, min(self.max_speed, v))
         self.target_w = max(-self.max_turn, min(self.max_turn, w))
+        if self.steered:
+            limit = abs(self.target_v) / self.drive.min_radius
+            self.target_w = max(-limit, min(limit, self.target_w))
 
     def straight(self, distance: float, speed: float) -> None:
         self._start(distance + self._owed_by("straight"), 0.0, min(abs(speed), self.max_speed))
 
     def turn(self, angle: float, speed: float) -> None:
+        self._refuse_spot_turn()
         self._start(0.0, angle + self._owed_by("turn"), min(abs(speed), self.max_turn))
 
     def _owed_by(self, kind: str) -> float:
@@ -132,8 +146,13 @@ class VwController(Component):
         """An arc of `distance` m changing the heading by `angle` rad; a zero distance turns on the
         spot with the wheels at `speed`."""
         if distance == 0:
-            self.turn(angle, abs(speed) / self.half_track)
+            self._refuse_spot_turn()  # before the speed is divided by a spot radius of 0
+            self.turn(angle, abs(speed) / self.spot_radius)
         else:
+            radius = abs(distance / angle) if angle else math.inf
+            if radius < self.drive.min_radius:
+                raise DriveLimitError(f"an arc of radius {to_mm(radius):.0f} mm is tighter than {self.drive.noun} can "
+                                      f"drive (at least {to_mm(self.drive.min_radius):.0f} mm)")
             self._owed = None
             self._start(distance, angle, min(abs(speed), self.max_speed))
 
@@ -155,8 +174,7 @@ class VwController(Component):
 
     def _start(self, distance: float, rotation: float, speed: float) -> None:
         self._new_command()
-        self.manoeuvre = Manoeuvre(distance, rotation, speed, self._ticks(), self.half_track,
-                                   self.drive.max_wheel_speed * self.drive.radius, self.metres_per_tick)
+        self.manoeuvre = Manoeuvre(distance, rotation, speed, self.drive.odometer(), self.drive)
         self.engaged = self.driving = True
         if self.manoeuvre.length == 0 or self.manoeuvre.top_speed == 0:
             self._finish()
@@ -186,13 +204,11 @@ class VwController(Component):
             return 0.0
         distance, rotation = self._progress()
         left = max(0.0, m.length - m.sign * (rotation if m.on_the_spot else distance))
-        return left * self.half_track if m.on_the_spot else left
+        return left * self.spot_radius if m.on_the_spot else left
 
     def measured_speed(self) -> tuple[float, float]:
         """Speeds from the wheels' rotation: m/s and rad/s."""
-        r = self.drive.radius
-        left, right = self.drive.wheel_speed(0) * r, self.drive.wheel_speed(1) * r
-        return (left + right) / 2, (right - left) / self.drive.track
+        return self.drive.measured_speed()
 
     def set_odometry(self, x: float, y: float, phi: float) -> None:
         self.odometry = [x, y, phi]
@@ -212,12 +228,12 @@ class VwController(Component):
             self._plan(dt)
             v, w, target_v, target_w = self.v, self.w, self.target_v, self.target_w
         v = _ramp(v, target_v, LINEAR_ACCEL * dt)
-        w = _ramp(w, target_w, self.turn_accel * dt)
+        if self.steered:  # the arc's curvature holds while the speed ramps
+            w = target_w if v == target_v else v * target_w / target_v if target_v else 0.0
+        else:
+            w = _ramp(w, target_w, self.turn_accel * dt)
         self.v, self.w = v, w
-        half_track, r = self.half_track, self.drive.radius
-        left, right = self.drive.wheels
-        left.set_speed((v - w * half_track) / r)
-        right.set_speed((v + w * half_track) / r)
+        self.drive.set_motion(v, w)
         if self.manoeuvre is None and v == target_v and w == target_w:
             # Steady: the wheels keep these speeds on their own until the next command.
             self.engaged = False
@@ -225,13 +241,7 @@ class VwController(Component):
 
     def _plan(self, dt: float) -> None:
         m = self.manoeuvre
-        if self._last_left is None:
-            distance, rotation = self._progress()
-        else:  # _progress() written out, with the ticks after_step read
-            per_tick = self.metres_per_tick
-            left = (self._last_left - m.start_ticks[0]) * per_tick
-            right = (self._last_right - m.start_ticks[1]) * per_tick
-            distance, rotation = (left + right) / 2, (right - left) / self.drive.track
+        distance, rotation = self._progress()
         remaining = m.length - m.sign * (rotation if m.on_the_spot else distance)
         if remaining <= m.tolerance:
             if m.on_the_spot or m.rotation == 0:
@@ -257,62 +267,62 @@ class VwController(Component):
             self.w = self.v * m.curvature - HEADING_GAIN * heading_error
 
     def after_step(self, dt: float) -> None:
-        left_wheel, right_wheel = self.drive.wheels
-        left, right = left_wheel.raw_ticks(), right_wheel.raw_ticks()
-        last_left, last_right = self._last_left, self._last_right
-        if left != last_left or right != last_right:
-            self._last_left, self._last_right = left, right
-            if last_left is not None:
-                per_tick = self.metres_per_tick
-                self._integrate((left - last_left) * per_tick, (right - last_right) * per_tick)
+        reading, last = self.drive.odometer(), self._reading
+        if reading != last:
+            self._reading = reading
+            if last is not None:
+                self._integrate(*self.drive.motion(last, reading))
         if self.driving:
             self._window_time += dt
             if self._window_start is None or self._window_time >= STALL_WINDOW:
-                self._watch_stall(left, right)
+                self._watch_stall()
         elif (self.stalled and not self.stuck) or self._window_start is not None:
             self.stalled = self.stalled if self.stuck else 0
             self._window_start = None
             self._stalled_windows = 0
 
-    def _integrate(self, left: float, right: float) -> None:
-        """Odometry: the wheels moved `left` and `right` metres since the last step."""
-        distance = (left + right) / 2
-        rotation = (right - left) / self.drive.track
+    def _integrate(self, dx: float, dy: float, rotation: float) -> None:
+        """Odometry: the robot moved dx ahead, dy to the left (m) and turned by `rotation` since the
+        last step; the move is taken along the step's mean heading."""
         x, y, phi = self.odometry
         mid = phi + rotation / 2
-        self.odometry = [x + distance * math.cos(mid), y + distance * math.sin(mid), phi + rotation]
+        cos, sin = math.cos(mid), math.sin(mid)
+        self.odometry = [x + dx * cos - dy * sin, y + dx * sin + dy * cos, phi + rotation]
 
-    def _watch_stall(self, left: int, right: int) -> None:
+    def _watch_stall(self) -> None:
         """At the end of each short window, compares each wheel's progress with what its speed set
         point asked for (the smaller of the set points at the window's start and end, so that
         speeding up or slowing down is never taken for a stall). Progress is both what its encoder
         counted and how far it moved over the floor: a blocked wheel fails the first, a wheel
         spinning in place (against a wall, jammed in a corner, lifted) the second. A manoeuvre
         that stays stalled ends, so VWWait returns; VWStalled then still tells why."""
-        wheels = self.drive.wheels
-        targets = wheels[0].target, wheels[1].target
+        watched = self._watched
+        ticks = [motor.raw_ticks() for _, motor, _, _ in watched]
+        targets = [motor.target for _, motor, _, _ in watched]
         ground = self.drive.wheel_ground_positions()
         start = self._window_start
         if start is not None:
             stalled = 0
-            for index, (bit, ticks) in enumerate(((1, left), (2, right))):
-                target, earlier = targets[index], start[2 + index]
+            start_ticks, start_targets, start_ground = start
+            for index, (bit, motor, wheel, roll) in enumerate(watched):
+                target, earlier = targets[index], start_targets[index]
                 speed = min(abs(target), abs(earlier)) if target * earlier > 0 else 0.0
-                expected = speed * self._window_time * wheels[index].ticks_per_radian
+                expected = speed * self._window_time * motor.ticks_per_radian
                 if expected < STALL_MIN_TICKS:
                     continue
-                x, y, forward_x, forward_y = ground[index]
-                x0, y0 = start[4][index][:2]
+                x, y, forward_x, forward_y = ground[wheel]
+                x0, y0 = start_ground[wheel][:2]
                 over_floor = ((x - x0) * forward_x + (y - y0) * forward_y) * math.copysign(1.0, target)
-                expected_m = speed * self._window_time * self.drive.radius
-                if abs(ticks - start[index]) < STALL_FRACTION * expected or over_floor < STALL_FRACTION * expected_m:
+                expected_m = speed * self._window_time * roll
+                if abs(ticks[index] - start_ticks[index]) < STALL_FRACTION * expected \
+                        or over_floor < STALL_FRACTION * expected_m:
                     stalled |= bit
             self.stalled = stalled
             self._stalled_windows = self._stalled_windows + 1 if stalled and self.manoeuvre else 0
             if self._stalled_windows >= STALL_END_WINDOWS:
                 self._finish()
                 self.stuck = True
-        self._window_start = (left, right, *targets, ground)
+        self._window_start = (ticks, targets, ground)
         self._window_time = 0.0
 
 
@@ -326,7 +336,7 @@ def _ramp(current: float, target: float, step: float) -> float:
 
 
 def create(context) -> list[Component]:
-    drive = context.find(DifferentialDrive)
+    drive = context.find(Kinematics)
     if drive is None:
         return []
     robot_type = context.robot_type

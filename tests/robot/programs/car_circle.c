@@ -10,6 +10,6 @@ int main(void)
     OSWait(9000);
     MOTORDrive(1, 0);
     printf("encoder %d\n", ENCODERRead(1));
-    printf("errors %d %d %d %d\n", SERVOSet(2, 100), SERVOSet(1, 256), MOTORDrive(2, 10), VWStraight(100, 100));
+    printf("errors %d %d %d %d\n", SERVOSet(2, 100), SERVOSet(1, 256), MOTORDrive(2, 10), VWTurn(90, 60));
     return 0;
 }

@@ -1,5 +1,6 @@
-"""Ackermann drive (a car): motor 1 drives the rear axle through a differential, servo 1 steers the
-front wheels with Ackermann geometry; encoder 1 counts the axle's turns."""
+"""Ackermann drive (ACKERMANN_DRIVE, a car): motor 1 drives the rear axle through a differential,
+servo 1 steers the front wheels with Ackermann geometry; encoder 1 counts the axle's turns. It
+cannot turn on the spot: the V-omega controller drives it along arcs of its rear axle's centre."""
 
 from __future__ import annotations
 
@@ -10,7 +11,8 @@ import mujoco
 from eyesim.physics.units import mm
 from eyesim.robot.actuators import Servo, WheelMotor
 from eyesim.robot.component import Component
-from eyesim.robot.components.differential_drive import GRAVITY, WHEEL_ARMATURE, add_wheel, wheel_torque
+from eyesim.robot.drives.archetype import DriveArchetype, Kinematics
+from eyesim.robot.drives.wheels import GRAVITY, WHEEL_ARMATURE, add_wheel, ground_positions, wheel_torque
 
 MAX_STEER = math.radians(45)  # servo 0 steers 45 degrees left, 255 as far right (the EyeSim car)
 STRAIGHT = 127  # the servo position that steers straight ahead
@@ -36,8 +38,10 @@ class SteeringServo(Servo):
         return STRAIGHT
 
 
-class AckermannDrive(Component):
+class AckermannDrive(Component, Kinematics):
     kind = "ackermann_drive"
+    noun = "the Ackermann car"
+    spot_radius = 0.0
 
     def __init__(self, context):
         robot_type = context.robot_type
@@ -50,7 +54,12 @@ class AckermannDrive(Component):
         self.front_x = mm(steering.offset) if steering else mm(robot_type.length) / 2 - front_radius
         self.wheelbase = self.front_x - self.rear_x
         self.front_track = mm(steered_wheels.track)
+        self.rear_track = mm(drive_wheels.track)
         self.radius = mm(drive_wheels.diameter) / 2
+        # The driven axle's encoder counts the mean of its wheels: the rear axle centre's travel.
+        self.tick_travel = 2 * math.pi * self.radius / drive_wheels.ticks_per_rev
+        self.min_radius = self.wheelbase / math.tan(MAX_STEER)
+        self.rear_wheels = []
         prefix = context.prefix
         spec = context.spec
         load = robot_type.mass * GRAVITY / 4  # N on each wheel
@@ -59,6 +68,7 @@ class AckermannDrive(Component):
         tendon = spec.add_tendon(name=axle)
         for side, sign in (("left", 1.0), ("right", -1.0)):
             name = f"{prefix}/wheel_rear_{side}"
+            self.rear_wheels.append(name)
             add_wheel(context, name, [self.rear_x, sign * mm(drive_wheels.track) / 2, self.radius], self.radius,
                       load, shown=True)
             tendon.wrap_joint(name, 0.5)
@@ -92,9 +102,12 @@ class AckermannDrive(Component):
         super().bind(world)
         self.motor.bind(world)
         self.steer_actuators = [world.actuator_id(name) for name in self.knuckles]
+        self.wheel_bodies = [world.body_id(name) for name in self.rear_wheels]
 
     def reset(self) -> None:
         self.motor.reset()
+        self._odometer_ticks: int | None = None
+        self._turned = 0.0  # rad the odometry has turned, from the axle's travel and the steering
         self.servo.reset_servo()
         self._steer(self.servo.position)
 
@@ -125,8 +138,47 @@ class AckermannDrive(Component):
             self.motor.update(dt)
 
 
-def create(context) -> list[Component]:
-    robot_type = context.robot_type
-    if robot_type.drive != "ackermann" or robot_type.wheels is None:
-        return []
-    return [AckermannDrive(context)]
+    # -- kinematics (the V-omega controller's interface) ----------------------------------------
+    def odometer(self) -> tuple[int, float]:
+        """The axle's ticks and the rotation they add up to: each increment turns the car by its
+        length times the curvature the steering is commanded to (a bicycle model of the rear axle)."""
+        ticks = self.motor.raw_ticks()
+        if self._odometer_ticks is None:
+            self._odometer_ticks = ticks
+        elif ticks != self._odometer_ticks:
+            self._turned += (ticks - self._odometer_ticks) * self.tick_travel * math.tan(self.servo.position) \
+                / self.wheelbase
+            self._odometer_ticks = ticks
+        return ticks, self._turned
+
+    def motion(self, before: tuple[int, float], after: tuple[int, float]) -> tuple[float, float, float]:
+        return (after[0] - before[0]) * self.tick_travel, 0.0, after[1] - before[1]
+
+    def set_motion(self, v: float, w: float) -> None:
+        """The rear axle at v; the steering to the curvature w / v, within its 45 degrees. At v = 0
+        the steering stays where it is (w is then 0: the controller never asks a car to turn still)."""
+        self.motor.set_speed(v / self.radius)
+        if v != 0:
+            self.servo.goal = max(-MAX_STEER, min(MAX_STEER, math.atan(self.wheelbase * w / v)))
+
+    def measured_speed(self) -> tuple[float, float]:
+        v = self.motor.speed * self.radius
+        return v, v * math.tan(self.servo.position) / self.wheelbase
+
+    def top_speed(self, curvature: float) -> float:
+        # The outer rear wheel turns fastest; the differential lets it outrun the axle's motor.
+        return self.motor.max_speed * self.radius / (1 + abs(curvature) * self.rear_track / 2)
+
+    def stall_watch(self):
+        return ((1, self.motor, 0, self.radius), (2, self.motor, 1, self.radius))
+
+    def wheel_ground_positions(self) -> list[tuple[float, float, float, float]]:
+        return ground_positions(self.world.data, self.wheel_bodies)
+
+
+def components(context) -> list[Component]:
+    return [AckermannDrive(context)] if context.robot_type.wheels is not None else []
+
+
+DRIVE = DriveArchetype("ackermann", "ACKERMANN_DRIVE", wheeled=True,
+                       wheel_keyword="wheel drive", wheels_outside_hull=True, components=components)

@@ -1,0 +1,87 @@
+"""What a drive archetype declares (the `drive` line of a robot type), and the kinematics interface
+the V-omega controller drives a robot through.
+
+Every module in this package declares one `DriveArchetype`; the rest of the simulator asks the
+archetype (found by `drives.drive_of(robot_type)`) instead of comparing drive names."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import IntEnum
+from typing import TYPE_CHECKING, Callable
+
+if TYPE_CHECKING:
+    from eyesim.robot.actuators import WheelMotor
+    from eyesim.robot.build import BuildContext
+    from eyesim.robot.component import Component
+    from eyesim.scene.description import RobotType
+
+
+class MachineType(IntEnum):
+    """What OSMachineType reports (RoBIOS: VEHICLE 1, PLATFORM 2, WALKER 3)."""
+
+    VEHICLE = 1
+    PLATFORM = 2
+
+
+@dataclass(frozen=True)
+class DriveArchetype:
+    name: str  # RobotType.drive, the JSON `drive` value
+    keyword: str  # the .robi `drive` word we write (read in any case)
+    aliases: tuple[str, ...] = ()  # other `drive` words .robi files use (lower case)
+    machine_type: MachineType = MachineType.VEHICLE
+    mounted: bool = False  # the base is bolted to the floor (no free joint)
+    swims: bool = False  # a scene with such a robot is under water (physics/water.py)
+    wheeled: bool = False  # needs a `wheel` line (a missing one gets the S4's wheels)
+    wheel_keyword: str = "wheel"  # how the .robi writer introduces its driven wheels
+    wheels_outside_hull: bool = False  # its wheels widen the floor-plan footprint (scene/placement.py)
+    # The viewer draws two wheels from the scene message's wheel_diameter/track; other drives'
+    # wheels are parts the viewer draws from their own geoms (web/scene_message.py).
+    viewer_wheels: bool = False
+    # The drive's own components (its wheels and motors); [] when other components move it.
+    components: Callable[[BuildContext], list[Component]] = lambda context: []
+    # A warning (message, code) about a robot type of this drive that cannot move, else None.
+    check: Callable[[RobotType], tuple[str, str] | None] = lambda robot: None
+
+
+class Kinematics:
+    """The interface a drive component offers the V-omega controller (robot/components/vw.py).
+
+    Speeds are the robot's: `v` m/s ahead of the drive's reference point (the middle of its
+    driven axle, or its centre), `w` rad/s counter-clockwise. Odometry works on `odometer()`
+    readings (encoder ticks, and whatever else the drive needs): `motion(before, after)` is how
+    far the robot moved between two of them, in the robot frame at `before`."""
+
+    noun = "the robot"  # in error messages: "the Ackermann car cannot ..."
+    motors: dict[int, WheelMotor]  # RoBIOS number -> motor; a motor command releases the controller
+    tick_travel: float  # m the robot moves ahead per encoder tick of one wheel
+    spot_radius: float  # m each wheel travels per radian turning on the spot; 0: cannot turn on the spot
+    min_radius: float = 0.0  # m: the tightest arc it can drive (0: any)
+
+    def odometer(self) -> tuple:
+        raise NotImplementedError
+
+    def motion(self, before: tuple, after: tuple) -> tuple[float, float, float]:
+        """dx (m ahead), dy (m to the left), dphi (rad) between two odometer readings."""
+        raise NotImplementedError
+
+    def set_motion(self, v: float, w: float) -> None:
+        """Sets the wheels (and steering) so the robot moves at v, w."""
+        raise NotImplementedError
+
+    def measured_speed(self) -> tuple[float, float]:
+        """v (m/s) and w (rad/s) from the wheels' rotation."""
+        raise NotImplementedError
+
+    def top_speed(self, curvature: float) -> float:
+        """m/s the robot may drive along an arc of `curvature` (rad/m) with every wheel within reach."""
+        raise NotImplementedError
+
+    def stall_watch(self) -> tuple[tuple[int, WheelMotor, int, float], ...]:
+        """What stall detection watches: (VWStalled bit, motor, index of the wheel in
+        wheel_ground_positions(), m the wheel rolls over the floor per radian of its motor)."""
+        raise NotImplementedError
+
+    def wheel_ground_positions(self) -> list[tuple[float, float, float, float]]:
+        """Per watched wheel: its centre's x, y on the floor (m) and its rolling direction (unit x, y)."""
+        raise NotImplementedError

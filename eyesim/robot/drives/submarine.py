@@ -1,0 +1,11 @@
+"""Submarine (SUBMARINE): no wheels; its `thruster` lines move it and its `buoyancy` line floats it
+(the thrusters and buoyancy components), and a scene with one is under water."""
+
+from eyesim.robot.drives.archetype import DriveArchetype
+
+
+def check(robot) -> tuple[str, str] | None:
+    return None if robot.thrusters else ("a submarine without 'thruster' lines cannot move", "no-thrusters")
+
+
+DRIVE = DriveArchetype("submarine", "SUBMARINE", aliases=("submarine_drive",), swims=True, check=check)
