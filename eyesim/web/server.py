@@ -233,6 +233,10 @@ class ViewerHub:
                 reply = await timeline.answer(self.history, browser.cursor, message)
             except ValueError as error:
                 reply = json.dumps({"type": "error", "message": str(error)})
+            except Exception:  # a bad value the checks missed: this browser gets an error, nobody else notices
+                log.exception("viewer command %.200r failed", message)
+                reply = json.dumps({"type": "error", "message": f"{message['type']}: the simulator could not "
+                                                                f"carry out this command"})
             browser.add_event(reply)
 
     def detach(self, browser: Browser) -> None:
@@ -242,6 +246,8 @@ class ViewerHub:
     def command(self, message: dict) -> str | None:
         """Queue a browser command for the simulation; return an error text for a bad one."""
         kind = message.get("type")
+        if not isinstance(kind, str):
+            return f"unknown message type {reprlib.repr(kind)}"
         if kind == "key":
             robot, key = message.get("robot"), message.get("key")
             if not isinstance(robot, int) or isinstance(robot, bool) or self.sim.robot_by_id(robot) is None:
@@ -266,7 +272,7 @@ class ViewerHub:
         elif kind == "place":
             return place_command.place(self.sim, message)
         else:
-            return f"unknown message type {kind!r}"
+            return f"unknown message type {reprlib.repr(kind)}"
         return None
 
 

@@ -160,8 +160,9 @@ async def answer(source, cursor: FrameCursor, message: dict) -> str:
     kind = message.get("type")
     if kind == "seek":
         seconds = message.get("time")
-        if isinstance(seconds, bool) or not isinstance(seconds, (int, float)) or not math.isfinite(seconds):
+        if isinstance(seconds, bool) or not isinstance(seconds, (int, float)) or not _finite(seconds):
             raise ValueError(f"seek: time {reprlib.repr(seconds)} is not a number of seconds")
+        seconds = min(max(seconds, -1e12), 1e12)  # the frame clamps it to the timeline; 1e308 s in us overflows
         return await cursor.frame(source, round(seconds * 1e6))
     if kind == "signals":
         return json.dumps({"type": "signals", "signals": signals.catalogue(source)})
@@ -179,6 +180,13 @@ async def answer(source, cursor: FrameCursor, message: dict) -> str:
     if kind == "paths":
         return json.dumps(paths(source))
     raise ValueError(f"unknown message type {kind!r}")
+
+
+def _finite(number) -> bool:
+    try:
+        return math.isfinite(number)
+    except OverflowError:  # an integer beyond floats: finite, far outside any timeline
+        return True
 
 
 TIMELINE_COMMANDS = ("seek", "signals", "series", "paths")
