@@ -34,6 +34,7 @@ from eyesim.web.scene_message import scene_message
 
 log = logging.getLogger("eyesim.web")
 CONSOLE_BACKLOG = 500  # console chunks per robot replayed to a browser that connects late
+PANEL_CHARACTERS = 50_000  # the viewer's console keeps no more (serial: less): a longer chunk is cut to its end
 CAMERA_VIEW_WIDTH = 320  # pixels: larger camera images are sent to the viewer scaled down by a whole factor
 MIN_SPEED, MAX_SPEED = 0.01, 1000.0  # realtime factors a browser may set ('max' for as fast as possible)
 MAX_COMMAND_BYTES = 64 * 1024  # a browser command is a small JSON object; larger ones close the socket
@@ -144,6 +145,8 @@ class ViewerHub:
             for browser in self._following():
                 browser.add_event(future, coalesce_key=(kind, robot))
             return
+        if kind in ("console", "serial") and len(message["text"]) > PANEL_CHARACTERS:
+            message = dict(message, text=message["text"][-PANEL_CHARACTERS:])  # 16 MiB once cost 330 MB here
         if kind == "reset":
             message = scene_message(self.sim, self._texture_url())
             self.sim.call(_publish_io)
