@@ -33,22 +33,23 @@ def smallest_mp3_frames(size: int) -> bytes:
     return frame * (size // len(frame))
 
 
-def worst_requests(robot_id: int = 1) -> list[tuple[str, tuple]]:
+def worst_requests(robot_id: int = 1):
     """(op name, arguments) for every operation but HELLO and THREADS (sent by the client's
-    handshake), each at its worst; `robot_id` is the robot the program drives."""
+    handshake), each at its worst; `robot_id` is the robot the program drives. The 16 MiB
+    arguments are made one at a time, as they are taken (memory is measured meanwhile)."""
     quarter = (LARGEST - 12) // 4
     steps = [
-        ("LCD_PRINTF", (big_text(),)),
-        ("LCD_SET_PRINTF", (0, 0, big_text(LARGEST - 8))),
+        ("LCD_PRINTF", lambda: (big_text(),)),
+        ("LCD_SET_PRINTF", lambda: (0, 0, big_text(LARGEST - 8))),
         ("LCD_CLEAR", ()),
-        ("LCD_MENU", tuple(big_text(quarter) for _ in range(4))),
+        ("LCD_MENU", lambda: tuple(big_text(quarter) for _ in range(4))),
         ("LCD_SET_POS", (INT_MAX, INT_MIN)),
         ("LCD_GET_POS", ()),
         ("LCD_SET_COLOR", (INT_MAX, INT_MIN)),
         ("LCD_SET_FONT", (INT_MAX, INT_MIN)),
         ("LCD_SET_FONT_SIZE", (INT_MAX,)),
         ("LCD_SET_MODE", (INT_MAX,)),
-        ("LCD_MENU_I", (INT_MAX, big_text(LARGEST - 12), INT_MAX, INT_MIN)),
+        ("LCD_MENU_I", lambda: (INT_MAX, big_text(LARGEST - 12), INT_MAX, INT_MIN)),
         ("LCD_GET_SIZE", ()),
         ("LCD_PIXEL", (INT_MAX, INT_MIN, INT_MAX)),
         ("LCD_GET_PIXEL", (INT_MAX, INT_MIN)),
@@ -59,7 +60,7 @@ def worst_requests(robot_id: int = 1) -> list[tuple[str, tuple]]:
         ("LCD_CIRCLE", (240, 160, INT_MAX, 0xFFFFFF, 0)),
         ("LCD_CIRCLE", (240, 160, 300, 0xFFFFFF, 0)),
         # the largest colour image that fits a frame, shown over the whole LCD
-        ("LCD_IMAGE", (0, 0, 2364, 2364, INT_MAX, INT_MAX, 0, bytes(2364 * 2364 * 3))),
+        ("LCD_IMAGE", lambda: (0, 0, 2364, 2364, INT_MAX, INT_MAX, 0, bytes(2364 * 2364 * 3))),
         ("LCD_IMAGE", (0, 0, 480, 320, 480, 320, 0, bytes(480 * 320 * 3))),
         ("LCD_REFRESH", ()),
         ("KEY_GET", ()),
@@ -81,15 +82,15 @@ def worst_requests(robot_id: int = 1) -> list[tuple[str, tuple]]:
         ("TIMER_WAIT", ()),
         ("TIMER_DETACH", (INT_MAX,)),
         ("SER_INIT", (0, 230400, 1)),
-        ("SER_SEND", (0, big_bytes(LARGEST - 4))),
+        ("SER_SEND", lambda: (0, big_bytes(LARGEST - 4))),
         ("SER_RECEIVE_CHAR", (0,)),
         ("SER_RECEIVE", (0, INT_MAX)),
         ("SER_CHECK", (0,)),
         ("SER_FLUSH", (0,)),
         ("SER_CLOSE", (0,)),
         ("AU_BEEP", ()),
-        ("AU_PLAY", ("x", big_bytes(MAX_SOUND_BYTES))),
-        ("AU_PLAY", ("x", smallest_mp3_frames(MAX_SOUND_BYTES))),
+        ("AU_PLAY", lambda: ("x", big_bytes(MAX_SOUND_BYTES))),
+        ("AU_PLAY", lambda: ("x", smallest_mp3_frames(MAX_SOUND_BYTES))),
         ("AU_DONE", ()),
         ("AU_MICROPHONE", ()),
         ("PSD_GET", (1,)),
@@ -147,7 +148,8 @@ def worst_requests(robot_id: int = 1) -> list[tuple[str, tuple]]:
     ]
     missing = set(g.OPS_BY_NAME) - {name for name, _ in steps} - {"HELLO", "THREADS"}
     assert not missing, f"no worst request for {sorted(missing)}"
-    return steps
+    for name, args in steps:
+        yield name, args() if callable(args) else args
 
 
 def worst_hello(robot_id: int = 1) -> tuple:
