@@ -1,7 +1,7 @@
 """Fuzzing the program sockets of a live in-process simulator: random, mutated and truncated frames
 for every operation (extreme values, wrong kinds, huge strings), each from a fresh fuzzing client,
 while a well-behaved program on another robot keeps getting correct answers. At the end the
-simulation still steps and no handler traceback was logged.
+simulation still steps, no handler traceback was logged and memory grew by less than 150 MB.
 
 Derandomized, a few hundred examples: about 20 s. For a longer run set FUZZ_EXAMPLES (e.g. 20000)
 and FUZZ_SEED (any integer: a new random series instead of the fixed one)."""
@@ -18,6 +18,7 @@ import pytest
 from hypothesis import HealthCheck, given, seed, settings
 from hypothesis import strategies as st
 from support.client import ProgramClient, RemoteError
+from support.memory import rss_mb
 from support.simulator import running_simulation
 from support.worlds import arena_scene, example_robot
 
@@ -38,6 +39,7 @@ def fuzz_settings(test):
 GOOD_ROBOT = 2  # the well-behaved program's robot: in a room of its own, facing its east wall
 ROOM = (3300, 2300, 3900, 2900)  # x1, y1, x2, y2 (mm): far from the values fuzzing likes (0, 2^n)
 REPLY_TIMEOUT = 10.0
+MEMORY_LIMIT_MB = 150
 
 
 def fuzz_scene():
@@ -138,6 +140,7 @@ def fuzz_target():
     try:
         with running_simulation(fuzz_scene(), "realtime") as (sim, port):
             good = WellBehaved(port)
+            good.start_mb = rss_mb()
             yield sim, port, good, handler
             good.client.close()
     finally:
@@ -243,3 +246,4 @@ def test_after_the_fuzzing_the_simulation_steps_and_logged_no_handler_fault(fuzz
     good.check()
     assert good.calls >= 3 * EXAMPLES  # the well-behaved program was answered after every example
     assert [r.getMessage() for r in errors.records] == []
+    assert rss_mb() - good.start_mb < MEMORY_LIMIT_MB  # the simulator runs in this process

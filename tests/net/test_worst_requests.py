@@ -6,11 +6,11 @@ simulation thread is measured by bench/bench_worst_requests.py, not asserted her
 from __future__ import annotations
 
 import asyncio
-import ctypes
 import threading
 
 import aiohttp
 from support.client import ProgramClient
+from support.memory import rss_mb
 from support.viewer import viewer_simulation
 from support.worlds import arena_scene, example_robot
 from support.worst_requests import worst_hello, worst_requests
@@ -18,16 +18,6 @@ from support.worst_requests import worst_hello, worst_requests
 from eyesim.protocol import encode_message, generated as g
 
 MEMORY_LIMIT_MB = 150
-
-
-def rss_mb() -> float:
-    """This process's resident memory (Linux /proc), after the C allocator has given back what it
-    only keeps for later (glibc keeps freed 16 MiB blocks once its threshold for them has grown)."""
-    ctypes.CDLL(None).malloc_trim(0)
-    for line in open("/proc/self/status"):
-        if line.startswith("VmRSS:"):
-            return int(line.split()[1]) / 1024
-    raise RuntimeError("no VmRSS in /proc/self/status")
 
 
 class WatchingBrowser:
