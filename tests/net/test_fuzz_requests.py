@@ -217,6 +217,34 @@ def test_fuzzed_requests_are_answered_and_harm_nobody(fuzz_target, robot, reques
     good.check()
 
 
+EXTREMES = {"i32": (0, INT_MAX, INT_MIN), "u32": (0, U32_MAX, U32_MAX), "f64": (0.0, 1e308, -1e308),
+            "str": ("", "\t\n" * 50_000, "\x00é"), "bytes": (b"", b"\xff" * 100_000, b"\x00"),
+            "i32s": ([], [INT_MAX] * 1000, [INT_MIN])}
+
+
+@pytest.mark.parametrize("code", sorted(g.OPS), ids=lambda code: g.OPS[code].name)
+def test_every_operation_with_extreme_values(fuzz_target, code):
+    """Not random: each operation surely gets zeros, maxima and minima (camera: its smallest size)."""
+    sim, port, good, _ = fuzz_target
+    op = g.OPS[code]
+    for variant in range(3):
+        values = [EXTREMES[typ][variant] for _, typ in op.request]
+        if op.name == "CAM_INIT":
+            values = [0]
+        if op.name == "SIM_SET_ROBOT" and values[0] == 0:
+            values[0] = 1
+        client = fuzz_client(port, "1")
+        try:
+            client.sock.sendall(encode_frame(code, g.KIND_REQUEST, 7, encode_payload(op.request, values)))
+            if not op.blocking:
+                assert answer_to(client, 7).kind in (g.KIND_REPLY, g.KIND_ERROR)
+            again = client.send("OS_GET_COUNT")
+            assert answer_to(client, again).kind == g.KIND_REPLY
+        finally:
+            client.close()
+    good.check()
+
+
 @fuzz_settings
 @given(st.sampled_from(["1", "3", None]), unanswered)
 def test_bytes_that_are_not_whole_frames_harm_nobody(fuzz_target, robot, data):
