@@ -95,6 +95,8 @@ def main() -> None:
 
 
 def _short(value) -> str:
+    if isinstance(value, bytes) and value[:2] == b"\xff\xff":
+        return f"{len(value) / (1 << 20):.0f} MiB of MP3 frames"
     if isinstance(value, (str, bytes)):
         return f"{len(value) / (1 << 20):.0f} MiB" if len(value) > 1 << 20 else f"{len(value)} B"
     return str(value)

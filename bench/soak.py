@@ -258,16 +258,28 @@ def soak(minutes: float, programs: int, program) -> dict:
                    for k in range(FUZZ_ROBOTS)]
         for thread in fuzzers:
             thread.start()
+        samples = []
+        sampler = threading.Thread(target=sample_memory, args=(simulator, start, until, samples))
+        sampler.start()
         tabs = asyncio.run(tabs_coming_and_going(simulator.viewer_port, until))
         result = collect_programs(well_behaved, timeout=seconds + 120)
+        sampler.join(60)
         for thread in fuzzers:
             thread.join(60)
         time.sleep(SETTLE)
         after = simulator.resources()
-        return {"minutes": minutes, "well_behaved": result, "fuzz": counts, "tabs": tabs, "before": before,
+        return {"minutes": minutes, "well_behaved": result, "fuzz": counts, "tabs": tabs, "rss_mb_by_minute": samples,
+                "before": before,
                 "after": after, "tracebacks": simulator.tracebacks(), "simulator_alive": simulator.process.poll() is None}
     finally:
         simulator.stop()
+
+
+def sample_memory(simulator: Simulator, start: float, until: float, samples: list) -> None:
+    """The simulator's RSS once a minute (the viewer's history fills for its first 120 s, then holds)."""
+    while time.monotonic() < until:
+        time.sleep(min(60.0, max(0.0, until - time.monotonic())))
+        samples.append((round((time.monotonic() - start) / 60, 1), simulator.resources()["rss_mb"]))
 
 
 def warm_up(simulator: Simulator, robot: int) -> None:
@@ -386,7 +398,9 @@ def main() -> None:
                         ("fuzz frames / connections", f"{fuzz['sent']} / {fuzz['connections']}"),
                         ("fuzz replies / error replies", f"{fuzz['replies']} / {fuzz['error_replies']}"),
                         ("tabs opened / failed", f"{soaked['tabs']['opened']} / {soaked['tabs']['failed']}"),
-                        *_resources(soaked), ("tracebacks in the log", soaked["tracebacks"])], ("", "value"))
+                        *_resources(soaked), ("tracebacks in the log", soaked["tracebacks"]),
+                        ("RSS (MB) by minute", " ".join(f"{m:g}:{mb:.0f}" for m, mb in soaked["rss_mb_by_minute"]))],
+                    ("", "value"))
     loaded = load(program) if arguments.load else None
     if loaded:
         programs = loaded["programs"]

@@ -29,7 +29,7 @@ def big_bytes(size: int = LARGEST) -> bytes:
 
 def smallest_mp3_frames(size: int) -> bytes:
     """An MP3 file of the shortest frames there are (MPEG-1 layer I, 32 kbit/s, 48 kHz: 32 bytes)."""
-    frame = bytes([0xFF, 0xFF, 0x18, 0x00]) + bytes(28)
+    frame = bytes([0xFF, 0xFF, 0x14, 0x00]) + bytes(28)
     return frame * (size // len(frame))
 
 
