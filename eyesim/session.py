@@ -99,4 +99,5 @@ class Session:
     @property
     def name(self) -> str:
         robot = f"robot {self.robot.id}" if self.robot is not None else "no robot"
-        return f"{self.program or 'program'} ({robot}, {self.peer})"
+        program = self.program if len(self.program) <= 100 else self.program[:97] + "..."  # for log lines
+        return f"{program or 'program'} ({robot}, {self.peer})"

@@ -7,6 +7,8 @@ from eyesim.robot.components.analog_io import MICROPHONE, AnalogInputs
 from eyesim.robot.components.speaker import BEEP_HERTZ, BEEP_SECONDS, Speaker
 from eyesim.robot.sound_files import SoundError, sound_length
 
+MAX_SOUND_BYTES = 8 << 20  # as the C library's AUPlay reads at most (docs/api/audio.md)
+
 
 def _speaker(robot) -> Speaker:
     return require(robot.component(Speaker), robot, "speaker")
@@ -21,6 +23,8 @@ def au_beep(sim, robot, request):
 def au_play(sim, robot, request):
     name, data = request.args
     speaker = _speaker(robot)
+    if len(data) > MAX_SOUND_BYTES:
+        raise CommandError(f"{name}: {len(data)} bytes is too large (at most {MAX_SOUND_BYTES >> 20} MB)")
     try:
         kind, seconds = sound_length(data)
     except SoundError as error:

@@ -33,7 +33,7 @@ class RayCastRenderer:
     def render(self, world, view: render.View) -> np.ndarray:
         """The view's image, (height, width, 3) uint8, top row first."""
         model, data = world.model, world.data
-        rays, inside = render.camera_rays(view.width, view.height, view.fov, view.fisheye)
+        inside = render.camera_ray_axes(view.width, view.height, view.fov, view.fisheye)[3]
         forward = np.asarray(view.forward, dtype=np.float64)
         basis = np.stack([view.right, np.asarray(view.up, dtype=np.float64), forward])
         # The rays in the world, one array per axis (camera frame: x right, y up, z forward).
@@ -52,7 +52,7 @@ class RayCastRenderer:
         if model.ntex:  # as in OpenGL, the texture modulates the lit colour
             points = np.stack([origin[axis] + columns[axis][hit] * distances[hit] for axis in range(3)], axis=1)
             _apply_textures(model, data, hit_geoms, points, colours)
-        image = np.empty((len(rays), 3), dtype=np.uint8)
+        image = np.empty((len(inside), 3), dtype=np.uint8)
         image[:] = render.BACKGROUND
         image[hit] = np.rint(colours * 255.0)
         return image.reshape(view.height, view.width, 3)

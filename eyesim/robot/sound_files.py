@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import struct
 
 # MPEG audio frame headers: bit rates in kbit/s by (MPEG-1?, layer) and index 1..14.
@@ -14,6 +15,11 @@ _BITRATES = {
     (False, 3): (8, 16, 24, 32, 40, 48, 56, 64, 80, 96, 112, 128, 144, 160),
 }
 _SAMPLE_RATES = {3: (44100, 48000, 32000), 2: (22050, 24000, 16000), 0: (11025, 12000, 8000)}  # by version bits
+# Where a frame header may start: 11 sync bits, a version that exists and a layer that exists.
+_SYNC = re.compile(rb"\xff(?=[\xe2-\xe7\xf2-\xf7\xfa-\xff])")
+# Bytes after the ID3 tag searched for the first frame: real files start at once or after a little
+# padding; searching a whole file of anything else cost seconds of the simulation thread.
+FIRST_FRAME_WITHIN = 64 * 1024
 
 
 class SoundError(ValueError):
@@ -68,11 +74,11 @@ def _mp3_seconds(data: bytes) -> float | None:
         size = (data[6] & 0x7F) << 21 | (data[7] & 0x7F) << 14 | (data[8] & 0x7F) << 7 | (data[9] & 0x7F)
         offset = 10 + size + (10 if data[5] & 0x10 else 0)
     # The first frame: a header whose next frame starts with a header too (not stray sync bits).
-    while offset + 4 <= len(data):
+    for candidate in _SYNC.finditer(data, offset, offset + FIRST_FRAME_WITHIN + 2):
+        offset = candidate.start()
         frame = _frame(data, offset)
         if frame and (offset + frame[0] >= len(data) or _frame(data, offset + frame[0])):
             break
-        offset += 1
     else:
         return None
     seconds = 0.0

@@ -13,6 +13,7 @@ from eyesim.web.timeline import EventIndex
 
 HISTORY_SECONDS = 120
 MAX_IMAGES = 1500  # per robot and kind: bounds memory when a program redraws its LCD all the time
+MAX_CHUNKS = 2000  # console and serial chunks per robot: bounds memory when a program prints all the time
 TRIM_EVERY = 64  # snapshots between trims
 
 
@@ -26,7 +27,7 @@ class LiveHistory:
         self.snapshots: list[dict] = []
         self.states: dict[int, list[tuple[int, dict]]] = defaultdict(list)
         self.psd: dict[int, list[tuple[int, dict]]] = defaultdict(list)
-        self.events = EventIndex()
+        self.events = EventIndex(MAX_CHUNKS)
         self.images: dict[tuple[int, str], list[tuple[int, object]]] = defaultdict(list)
         self._added = 0
 

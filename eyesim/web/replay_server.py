@@ -11,6 +11,7 @@ from __future__ import annotations
 import asyncio
 import json
 import logging
+import reprlib
 import tempfile
 from pathlib import Path
 
@@ -130,7 +131,7 @@ class ReplayServer:
         if not isinstance(data, dict):
             return _error("expected a JSON object")
         if data.get("type") not in timeline.TIMELINE_COMMANDS:
-            return _error(f"{data.get('type')!r}: this is a replay of {self.recording.path.name}; "
+            return _error(f"{reprlib.repr(data.get('type'))}: this is a replay of {self.recording.path.name}; "
                           "it can be watched, not changed")
         try:
             return await timeline.answer(self.source, cursor, data)

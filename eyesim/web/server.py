@@ -34,6 +34,7 @@ from eyesim.web.scene_message import scene_message
 
 log = logging.getLogger("eyesim.web")
 CONSOLE_BACKLOG = 500  # console chunks per robot replayed to a browser that connects late
+PANEL_CHARACTERS = 50_000  # the viewer's console keeps no more (serial: less): a longer chunk is cut to its end
 CAMERA_VIEW_WIDTH = 320  # pixels: larger camera images are sent to the viewer scaled down by a whole factor
 MIN_SPEED, MAX_SPEED = 0.01, 1000.0  # realtime factors a browser may set ('max' for as fast as possible)
 MAX_COMMAND_BYTES = 64 * 1024  # a browser command is a small JSON object; larger ones close the socket
@@ -144,6 +145,8 @@ class ViewerHub:
             for browser in self._following():
                 browser.add_event(future, coalesce_key=(kind, robot))
             return
+        if kind in ("console", "serial") and len(message["text"]) > PANEL_CHARACTERS:
+            message = dict(message, text=message["text"][-PANEL_CHARACTERS:])  # 16 MiB once cost 330 MB here
         if kind == "reset":
             message = scene_message(self.sim, self._texture_url())
             self.sim.call(_publish_io)
@@ -233,6 +236,10 @@ class ViewerHub:
                 reply = await timeline.answer(self.history, browser.cursor, message)
             except ValueError as error:
                 reply = json.dumps({"type": "error", "message": str(error)})
+            except Exception:  # a bad value the checks missed: this browser gets an error, nobody else notices
+                log.exception("viewer command %.200r failed", message)
+                reply = json.dumps({"type": "error", "message": f"{message['type']}: the simulator could not "
+                                                                f"carry out this command"})
             browser.add_event(reply)
 
     def detach(self, browser: Browser) -> None:
@@ -242,6 +249,8 @@ class ViewerHub:
     def command(self, message: dict) -> str | None:
         """Queue a browser command for the simulation; return an error text for a bad one."""
         kind = message.get("type")
+        if not isinstance(kind, str):
+            return f"unknown message type {reprlib.repr(kind)}"
         if kind == "key":
             robot, key = message.get("robot"), message.get("key")
             if not isinstance(robot, int) or isinstance(robot, bool) or self.sim.robot_by_id(robot) is None:
@@ -266,7 +275,7 @@ class ViewerHub:
         elif kind == "place":
             return place_command.place(self.sim, message)
         else:
-            return f"unknown message type {kind!r}"
+            return f"unknown message type {reprlib.repr(kind)}"
         return None
 
 

@@ -29,16 +29,20 @@ PATH_STEP = 0.005  # m: a path gets a point once the robot moved this far (as th
 class EventIndex:
     """The viewer events of a timeline by kind and robot, in time order."""
 
-    def __init__(self):
+    def __init__(self, max_stream: int | None = None):
         self._latest: dict[tuple[str, int], list[tuple[int, dict]]] = defaultdict(list)
         self._streams: dict[tuple[str, int], list[tuple[int, dict]]] = defaultdict(list)
+        self._max_stream = max_stream  # console or serial chunks kept per robot (None: all)
 
     def add(self, time_us: int, message: dict) -> None:
         kind = message.get("type")
         if kind in LATEST_KINDS:
             self._latest[(kind, message["robot"])].append((time_us, message))
         elif kind in STREAM_KINDS:
-            self._streams[(kind, message["robot"])].append((time_us, message))
+            stream = self._streams[(kind, message["robot"])]
+            stream.append((time_us, message))
+            if self._max_stream is not None and len(stream) > self._max_stream:
+                del stream[:len(stream) - self._max_stream]
 
     def latest(self, kind: str, robot_id: int, time_us: int) -> dict | None:
         events = self._latest.get((kind, robot_id), [])
@@ -160,8 +164,9 @@ async def answer(source, cursor: FrameCursor, message: dict) -> str:
     kind = message.get("type")
     if kind == "seek":
         seconds = message.get("time")
-        if isinstance(seconds, bool) or not isinstance(seconds, (int, float)) or not math.isfinite(seconds):
+        if isinstance(seconds, bool) or not isinstance(seconds, (int, float)) or not _finite(seconds):
             raise ValueError(f"seek: time {reprlib.repr(seconds)} is not a number of seconds")
+        seconds = min(max(seconds, -1e12), 1e12)  # the frame clamps it to the timeline; 1e308 s in us overflows
         return await cursor.frame(source, round(seconds * 1e6))
     if kind == "signals":
         return json.dumps({"type": "signals", "signals": signals.catalogue(source)})
@@ -179,6 +184,13 @@ async def answer(source, cursor: FrameCursor, message: dict) -> str:
     if kind == "paths":
         return json.dumps(paths(source))
     raise ValueError(f"unknown message type {kind!r}")
+
+
+def _finite(number) -> bool:
+    try:
+        return math.isfinite(number)
+    except OverflowError:  # an integer beyond floats: finite, far outside any timeline
+        return True
 
 
 TIMELINE_COMMANDS = ("seek", "signals", "series", "paths")

@@ -2,6 +2,7 @@
 gets the sound; the microphone is analog channel 8."""
 
 import io
+import time
 import wave
 
 import pytest
@@ -9,7 +10,7 @@ from support.client import RemoteError
 from support.connected import connected_program
 
 from eyesim import robot_input
-from eyesim.robot.sound_files import sound_length
+from eyesim.robot.sound_files import SoundError, sound_length
 
 
 def wav_bytes(seconds: float, rate: int = 8000, channels: int = 1, width: int = 2) -> bytes:
@@ -87,3 +88,18 @@ def test_the_microphone_hears_what_analog_channel_8_is_set_to():
         client.call("OS_WAIT", 1)
         assert client.call("AU_MICROPHONE") == (900,)
         assert client.call("ANALOG_READ", 8) == (900,)
+
+
+def test_a_frame_header_right_after_a_stray_sync_byte_is_found():
+    assert sound_length(b"\xff" + mp3_bytes(10, id3=False))[1] == pytest.approx(10 * 1152 / 44100)
+
+
+def test_sound_files_cost_little_to_measure_and_are_at_most_8_mb():
+    start = time.perf_counter()
+    with pytest.raises(SoundError):
+        sound_length(b"\xff\xfe" * (4 << 20))  # sync bits everywhere, no frame: seconds once
+    assert time.perf_counter() - start < 0.5  # about 20 ms
+    with connected_program() as (sim, client):
+        with pytest.raises(RemoteError, match="too large"):
+            client.call("AU_PLAY", "big.mp3", mp3_bytes(1) + bytes(8 << 20))
+        assert client.call("AU_DONE") == (1,)

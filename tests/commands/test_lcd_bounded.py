@@ -3,13 +3,14 @@ computed, and it draws exactly the pixels the full algorithms would (references 
 point of the shape and keep the visible ones)."""
 
 import math
+import time
 import tracemalloc
 
 import numpy as np
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from eyesim.robot.components.lcd import HEIGHT, WIDTH, Lcd
+from eyesim.robot.components.lcd import HEIGHT, MAX_PRINT, WIDTH, Lcd
 
 WHITE = 0xFFFFFF
 coordinate = st.integers(-700, 1200)
@@ -116,3 +117,42 @@ def test_huge_lines_and_arcs_land_where_they_should():
     lit = _lit(lcd)
     assert {(x, 10) for x in range(WIDTH)} <= lit and all(y in (10, 11) for _, y in lit)
     assert math.isclose(len(lit), WIDTH, rel_tol=0.05)
+
+
+def _print_each(lcd: Lcd, text: str) -> None:
+    for char in text:  # one character per call: never cut, the reference
+        lcd.print(char)
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.text(st.sampled_from("Ab é\t\r\x01"), max_size=70), max_size=120),
+       st.sampled_from([0, 0x0800, 0x0200, 0x0400]), st.integers(0, 20), st.sampled_from([8, 10, 17]))
+@example(["Ab\t\ré" * (i % 19) for i in range(110)], 0, 3, 10)  # the cut at 42 line feeds, wrapped lines
+@example(["x" * 70] * 100, 0x0800, 20, 8)
+@example(["ab"] * 43, 0, 0, 10)  # 2 x 21 line feeds from the top row: 21 scrolls, the old screen is gone
+@example(["ab"] * 41, 0, 0, 10)  # 40 from the top row: 20 scrolls, a line of the old screen stays
+def test_printing_only_what_reaches_the_screen_gives_the_same_screen(lines, mode, start_row, size):
+    """Menu hidden (0x0800), no scrolling (0x0200), no line feed (0x0400)."""
+    text = "\n".join(lines)
+    fast, reference = _fresh(), _fresh()
+    for lcd in (fast, reference):
+        lcd.set_font_size(size)
+        lcd.set_mode(mode)
+        lcd.print("X" * 2000)  # text on the screen already, the cursor anywhere on it
+        lcd.set_position(start_row % lcd.rows, 0)
+    fast.print(text)
+    _print_each(reference, text)
+    assert (fast.row, fast.column) == (reference.row, reference.column)
+    assert (fast.pixels == reference.pixels).all()
+
+
+def test_a_16_mib_print_costs_milliseconds_and_shows_its_end():
+    lcd = _fresh()
+    start = time.perf_counter()
+    lcd.print("\t\n" * (8 << 20) + "the end")  # once 8 minutes of the simulation thread
+    lcd.print("A" * (16 << 20))  # long lines: the last MAX_PRINT characters are drawn
+    assert time.perf_counter() - start < 1.0  # generous (about 40 ms); minutes before
+    reference = _fresh()
+    _print_each(reference, "\n" * 30 + "the end" + "A" * MAX_PRINT)
+    assert (lcd.row, lcd.column) == (reference.row, reference.column)
+    assert (lcd.pixels == reference.pixels).all()

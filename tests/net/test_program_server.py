@@ -128,3 +128,13 @@ def test_handler_errors_are_error_replies(simulation):
         client.call("PSD_GET", 9)
     with pytest.raises(RemoteError, match="negative"):
         client.call("OS_WAIT", -5)
+
+
+def test_a_huge_program_name_is_shortened_in_the_log(simulation, caplog):
+    _, port = simulation
+    client = ProgramClient(port)
+    with caplog.at_level("INFO", logger="eyesim"):
+        assert client.call("HELLO", g.VERSION, "", "p" * (1 << 20), 0)[1] == 1
+        assert client.call("OS_GET_COUNT")[0] >= 0
+    (line,) = [r.getMessage() for r in caplog.records if r.getMessage().endswith("connected")]
+    assert line.startswith("p" * 97 + "... (robot 1, 127.0.0.1:") and len(line) < 200

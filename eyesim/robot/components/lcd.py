@@ -21,6 +21,9 @@ COLUMNS = WIDTH // CELL_WIDTH  # 60 at the default font size
 ROWS = (HEIGHT - MENU_HEIGHT) // CELL_HEIGHT  # 21 at the default font size, with the menu shown
 TAB = 4
 MENU_LABEL_LENGTH = 32  # LCD_MENU_STRLENGTH
+# Characters of one LCDPrintf's text drawn at most, the last ones (docs/api/lcd.md): more than a
+# screen holds, and what keeps one call's drawing within a few ms of the simulation thread.
+MAX_PRINT = 2048
 
 WHITE, BLACK = 0xFFFFFF, 0x000000
 MENU_BACKGROUND = 0x303030
@@ -125,7 +128,7 @@ class Lcd(Component):
         self.row, self.column = row, column
 
     def print(self, text: str) -> None:
-        for char in text:
+        for char in self._reaching_screen(text):
             if char == "\n":
                 self._new_line()
             elif char == "\r":
@@ -136,6 +139,24 @@ class Lcd(Component):
             else:
                 self._put(char if char.isprintable() else "?")
         self._changed()
+
+    def _reaching_screen(self, text: str) -> str:
+        """The end of `text` that decides what the LCD shows. While text scrolls and wraps, text
+        followed by 2 x rows line feeds has scrolled off, and so has everything on the screen
+        before it: printing only what follows from the last row gives the same screen and cursor
+        (the first `rows` line feeds bring the cursor to the last row at most, the next `rows`
+        scroll everything above it away). Of what is left, at most the last MAX_PRINT characters
+        are drawn: the cost of one call stays bounded whatever a program sends."""
+        if self.scrolling and self.linefeed:
+            cut = len(text)
+            for _ in range(2 * self.rows):
+                cut = text.rfind("\n", 0, cut)
+                if cut < 0:
+                    break
+            else:
+                self.row, self.column = self.rows - 1, 0
+                text = text[cut + 1:]
+        return text[-MAX_PRINT:]
 
     def _put(self, char: str) -> None:
         if self.column >= self.columns:

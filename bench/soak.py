@@ -1,0 +1,425 @@
+"""Soak and load of a real `eyesim run` process (realtime, with its viewer), all on 127.0.0.1.
+
+Soak (--minutes, default 10): 50 well-behaved C programs (programs/poll_load.c: PSDGet and
+VWGetPosition in a loop) beside fuzzing clients that send random, mutated and truncated frames of
+every operation, and browser tabs that open and close. Reported: calls served, errors, the
+well-behaved programs' worst latency, and the simulator's memory (RSS), file descriptors and
+threads before and after.
+
+Load (--load, after the soak; --minutes 0 for the load alone): 100 programs connected at once each
+calling in a loop, 200 browser tabs opened at once and closed, 500 connect/disconnect cycles of
+programs. Each must be served with no failed call; descriptors and threads must come back.
+
+Run:  python3 bench/soak.py [--minutes 10] [--programs 50] [--load]
+      python3 bench/soak.py --minutes 0.5 --load        (a smoke run, about 2 minutes)
+Exit status 1 when a check fails. Every loop is bounded in count and in time."""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import json
+import os
+import random
+import re
+import socket
+import struct
+import subprocess
+import sys
+import threading
+import time
+
+import aiohttp
+
+from common import BENCH, build_c, eyesim, print_table, write_results
+
+sys.path.insert(0, str(BENCH.parent / "tests"))
+from support.client import ProgramClient, RemoteError  # noqa: E402
+from support.memory import rss_mb  # noqa: E402
+
+from eyesim.protocol import FrameDecoder, encode_frame, encode_payload, generated as g  # noqa: E402
+
+BUILD = BENCH / "results" / "build"
+HOST = "127.0.0.1"
+INT_MAX, INT_MIN, U32_MAX = 2**31 - 1, -(2**31), 2**32 - 1
+EDGES = [0, 1, -1, 2, 8, 255, 256, 480, 3600, 65535, 10_000_000, 10_000_001, INT_MAX, INT_MIN]
+FUZZ_ROBOTS = 2
+SETTLE = 3.0  # s to wait after clients leave before counting descriptors and threads
+
+
+# -- the simulator --------------------------------------------------------------------------------------
+class Simulator:
+    """`eyesim run` on free ports, its stdout drained, its log kept in a file."""
+
+    def __init__(self, scene: str, name: str):
+        self.log_path = BENCH / "results" / f"{name}.log"
+        self.log = open(self.log_path, "w")
+        self.process = subprocess.Popen(eyesim("run", scene, "--port", "0", "--viewer-port", "0", "--clock",
+                                               "realtime"), stdout=subprocess.PIPE, stderr=self.log, text=True,
+                                        cwd=BENCH)
+        self.port = self.viewer_port = None
+        deadline = time.monotonic() + 60
+        for line in self.process.stdout:
+            found = re.search(r"viewer: http://[^:]+:(\d+)/", line)
+            self.viewer_port = int(found.group(1)) if found else self.viewer_port
+            found = re.search(r"programs connect to [\d.]+:(\d+)", line)
+            if found:
+                self.port = int(found.group(1))
+                break
+            if time.monotonic() > deadline:
+                break
+        if self.port is None or self.viewer_port is None:
+            self.stop()
+            raise RuntimeError(f"the simulator did not start; see {self.log_path}")
+        threading.Thread(target=self.process.stdout.read, daemon=True).start()
+
+    def resources(self) -> dict:
+        pid = self.process.pid
+        names = sorted(open(f"/proc/{pid}/task/{task}/comm").read().strip() for task in os.listdir(f"/proc/{pid}/task"))
+        return {"rss_mb": round(rss_mb(pid), 1), "fds": len(os.listdir(f"/proc/{pid}/fd")),
+                "threads": len(names), "thread_names": names}
+
+    def tracebacks(self) -> int:
+        self.log.flush()
+        return self.log_path.read_text(errors="replace").count("Traceback")
+
+    def stop(self) -> None:
+        self.process.terminate()
+        try:
+            self.process.wait(timeout=15)
+        except subprocess.TimeoutExpired:
+            self.process.kill()
+        self.log.close()
+
+
+def scene_file(robots: int) -> str:
+    side = int(robots ** 0.5) + 1
+    size = 400 * side + 400
+    world = BUILD / f"soak_{robots}.wld"
+    world.write_text(f"floor {size} {size}\n0 0 {size} 0\n{size} 0 {size} {size}\n{size} {size} 0 {size}\n"
+                     f"0 {size} 0 0\n")
+    path = BUILD / f"soak_{robots}.sim"
+    path.write_text(f"world {world.name}\n" + "".join(
+        f"S4 {400 + 400 * (i % side)} {400 + 400 * (i // side)} 90\n" for i in range(robots)))
+    return str(path)
+
+
+# -- well-behaved programs --------------------------------------------------------------------------------
+def start_programs(program, port: int, robots: range, seconds: float) -> list[subprocess.Popen]:
+    return [subprocess.Popen([str(program), f"{seconds:g}"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True, env=dict(os.environ, EYESIM_HOST=HOST, EYESIM_PORT=str(port),
+                                                 EYESIM_ROBOT=str(robot)))
+            for robot in robots]
+
+
+def collect_programs(programs: list[subprocess.Popen], timeout: float) -> dict:
+    """poll_load prints "calls p50_us p99_us max_us sim_ms"; a failed call prints "eyesim: ..." to stderr."""
+    rows, failures = [], []
+    for program in programs:
+        try:
+            out, err = program.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            program.kill()
+            out, err = program.communicate()
+            failures.append("a program did not finish in time")
+        failures += [line for line in err.splitlines() if line.strip()]
+        if program.returncode != 0:
+            failures.append(f"exit code {program.returncode}")
+        fields = out.split()
+        if len(fields) == 5:
+            rows.append([float(v) for v in fields])
+        else:
+            failures.append(f"no result line: {out!r}")
+    return {"programs": len(programs), "served": sum(1 for r in rows if r[0] > 0), "calls": int(sum(r[0] for r in rows)),
+            "max_latency_ms": max((r[3] for r in rows), default=0) / 1000,
+            "worst_p99_ms": max((r[2] for r in rows), default=0) / 1000, "failures": failures}
+
+
+# -- fuzz traffic -------------------------------------------------------------------------------------------
+def random_value(rng: random.Random, typ: str):
+    if typ == "i32":
+        return rng.choice(EDGES) if rng.random() < 0.5 else rng.randint(INT_MIN, INT_MAX)
+    if typ == "u32":
+        return rng.choice([0, 1, 999_999_999, U32_MAX]) if rng.random() < 0.5 else rng.randint(0, U32_MAX)
+    if typ == "f64":
+        return rng.uniform(-1e300, 1e300)
+    if typ == "i32s":
+        return [random_value(rng, "i32") for _ in range(rng.randint(0, 16))]
+    size = rng.choice([0, 1, 10, 100, 1000, 100_000])
+    piece = rng.choice(["x", "\n", "\t\n", "é", "\x00"]) if typ == "str" else rng.choice([b"\x00", b"\xff", b"\xff\xfb"])
+    return (piece * size)[:size]
+
+
+def random_frame(rng: random.Random) -> tuple[bytes, int | None]:
+    """A frame and the request id a reply must carry, or None when no reply is to be waited for."""
+    op = g.OPS[rng.choice(list(g.OPS))]
+    values = [random_value(rng, typ) for _, typ in op.request]
+    if op.name == "CAM_INIT":
+        values[0] = rng.choice([0, 1, 7])  # small images: the soak is about many calls, not big pictures
+    request_id = rng.randint(1, U32_MAX)
+    frame = encode_frame(op.code, g.KIND_REQUEST, request_id, encode_payload(op.request, values))
+    how = rng.random()
+    if how < 0.6:
+        return frame, None if op.blocking else request_id
+    if how < 0.75:  # a byte changed in the payload or the header (the length stays right)
+        body = bytearray(frame)
+        body[rng.randint(4, len(body) - 1)] = rng.randint(0, 255)
+        return bytes(body), None
+    if how < 0.85:  # cut short: no reply, the connection is then closed
+        return frame[:rng.randint(1, len(frame) - 1)], None
+    if how < 0.95:
+        return bytes(rng.getrandbits(8) for _ in range(rng.randint(1, 200))), None
+    return struct.pack("<I", rng.choice([0, 3, g.MAX_FRAME + 1, U32_MAX])) + bytes(8), None
+
+
+def fuzzer(port: int, robot: int, until: float, seed: int, counts: dict, lock: threading.Lock) -> None:
+    """Fresh connections to `robot` until `until`, each sending up to 20 fuzzed frames."""
+    rng = random.Random(seed)
+    while time.monotonic() < until:
+        try:
+            client = ProgramClient(port, HOST, timeout=10)
+            client.hello(str(robot))
+        except (OSError, RemoteError):
+            time.sleep(0.05)  # the previous connection's robot is not free yet
+            continue
+        sent = replies = errors = 0
+        try:
+            for _ in range(rng.randint(1, 20)):
+                frame, request_id = random_frame(rng)
+                client.sock.sendall(frame)
+                sent += 1
+                if request_id is None:
+                    break  # what follows a broken or blocking request is not waited for
+                while True:
+                    message = client.receive()
+                    if message.request_id == request_id:
+                        replies += message.kind == g.KIND_REPLY
+                        errors += message.kind == g.KIND_ERROR
+                        break
+        except (OSError, ConnectionError):
+            pass
+        finally:
+            client.close()
+        with lock:
+            counts["sent"] += sent
+            counts["replies"] += replies
+            counts["error_replies"] += errors
+            counts["connections"] += 1
+
+
+# -- browser tabs ----------------------------------------------------------------------------------------------
+async def open_tab(session: aiohttp.ClientSession, port: int, read_for: float) -> bool:
+    """Open the viewer's WebSocket, read for a while, close; True when the scene arrived."""
+    async with session.ws_connect(f"ws://{HOST}:{port}/ws", max_msg_size=0) as ws:
+        first = await ws.receive(timeout=30)
+        ok = first.type == aiohttp.WSMsgType.TEXT and json.loads(first.data)["type"] == "scene"
+        end = time.monotonic() + read_for
+        while time.monotonic() < end:
+            try:
+                await ws.receive(timeout=max(0.01, end - time.monotonic()))
+            except asyncio.TimeoutError:
+                break
+        return ok
+
+
+async def tabs_coming_and_going(port: int, until: float) -> dict:
+    """Tabs opened and closed one after another (each reads 0.5-3 s), two at a time."""
+    rng = random.Random(7)
+    opened = failed = 0
+    async with aiohttp.ClientSession() as session:
+        while time.monotonic() < until:
+            results = await asyncio.gather(*(open_tab(session, port, rng.uniform(0.5, 3)) for _ in range(2)),
+                                           return_exceptions=True)
+            opened += len(results)
+            failed += sum(1 for r in results if r is not True)
+    return {"opened": opened, "failed": failed}
+
+
+async def many_tabs(port: int, count: int) -> dict:
+    async with aiohttp.ClientSession(connector=aiohttp.TCPConnector(limit=0)) as session:
+        results = await asyncio.wait_for(asyncio.gather(*(open_tab(session, port, 1.0) for _ in range(count)),
+                                                        return_exceptions=True), timeout=300)
+    return {"opened": count, "failed": sum(1 for r in results if r is not True)}
+
+
+# -- the runs --------------------------------------------------------------------------------------------------
+def soak(minutes: float, programs: int, program) -> dict:
+    seconds = minutes * 60
+    simulator = Simulator(scene_file(programs + FUZZ_ROBOTS), "soak")
+    try:
+        warm_up(simulator, programs + 1)
+        before = simulator.resources()
+        start = time.monotonic()
+        until = start + seconds
+        well_behaved = start_programs(program, simulator.port, range(1, programs + 1), seconds)
+        counts = {"sent": 0, "replies": 0, "error_replies": 0, "connections": 0}
+        lock = threading.Lock()
+        fuzzers = [threading.Thread(target=fuzzer, args=(simulator.port, programs + 1 + k, until, k, counts, lock))
+                   for k in range(FUZZ_ROBOTS)]
+        for thread in fuzzers:
+            thread.start()
+        samples = []
+        sampler = threading.Thread(target=sample_memory, args=(simulator, start, until, samples))
+        sampler.start()
+        tabs = asyncio.run(tabs_coming_and_going(simulator.viewer_port, until))
+        result = collect_programs(well_behaved, timeout=seconds + 120)
+        sampler.join(60)
+        for thread in fuzzers:
+            thread.join(60)
+        time.sleep(SETTLE)
+        after = simulator.resources()
+        return {"minutes": minutes, "well_behaved": result, "fuzz": counts, "tabs": tabs, "rss_mb_by_minute": samples,
+                "before": before,
+                "after": after, "tracebacks": simulator.tracebacks(), "simulator_alive": simulator.process.poll() is None}
+    finally:
+        simulator.stop()
+
+
+def sample_memory(simulator: Simulator, start: float, until: float, samples: list) -> None:
+    """The simulator's RSS once a minute (the viewer's history fills for its first 120 s, then holds)."""
+    while time.monotonic() < until:
+        time.sleep(min(60.0, max(0.0, until - time.monotonic())))
+        samples.append((round((time.monotonic() - start) / 60, 1), simulator.resources()["rss_mb"]))
+
+
+def warm_up(simulator: Simulator, robot: int) -> None:
+    """One program (with a camera image) and two tabs come and go first: what the simulator makes
+    once (the camera renderer's OpenGL context and threads, the PNG encoder) is then in the
+    'before' figures, and only leaks show as differences."""
+    client = ProgramClient(simulator.port, HOST)
+    client.hello(str(robot))
+    client.call("PSD_GET", 1)
+    client.call("CAM_INIT", 1)
+    client.call("CAM_GET")
+    client.close()
+    asyncio.run(many_tabs(simulator.viewer_port, 2))
+    time.sleep(SETTLE)
+
+
+def load(program) -> dict:
+    simulator = Simulator(scene_file(100), "load")
+    try:
+        warm_up(simulator, 1)
+        before = simulator.resources()
+        programs = collect_programs(start_programs(program, simulator.port, range(1, 101), 10), timeout=180)
+        tabs = asyncio.run(many_tabs(simulator.viewer_port, 200))
+        cycles = connect_cycles(simulator.port, 500)
+        time.sleep(SETTLE)
+        after = simulator.resources()
+        return {"programs": programs, "tabs": tabs, "cycles": cycles, "before": before, "after": after,
+                "tracebacks": simulator.tracebacks(), "simulator_alive": simulator.process.poll() is None}
+    finally:
+        simulator.stop()
+
+
+def connect_cycles(port: int, count: int) -> dict:
+    """Connect, handshake, one call, disconnect; four at a time on robots 1..4."""
+    failures = []
+    lock = threading.Lock()
+
+    def cycles(robot: int, n: int) -> None:
+        for _ in range(n):
+            deadline = time.monotonic() + 10
+            while True:
+                try:
+                    client = ProgramClient(port, HOST)
+                    client.hello(str(robot))
+                    client.call("OS_GET_COUNT")
+                    client.close()
+                    break
+                except RemoteError as error:  # the robot is freed when the simulator reads the close
+                    client.close()
+                    if error.code != g.ERR_NO_ROBOT or time.monotonic() > deadline:
+                        with lock:
+                            failures.append(str(error))
+                        break
+                    time.sleep(0.01)
+                except OSError as error:
+                    with lock:
+                        failures.append(str(error))
+                    break
+
+    threads = [threading.Thread(target=cycles, args=(robot, count // 4)) for robot in range(1, 5)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join(300)
+    return {"cycles": count, "failed": len(failures), "failures": failures[:5]}
+
+
+def checks(soaked: dict | None, loaded: dict | None) -> list[str]:
+    """What failed, in words."""
+    problems = []
+    for name, run in (("soak", soaked), ("load", loaded)):
+        if run is None:
+            continue
+        if not run["simulator_alive"]:
+            problems.append(f"{name}: the simulator died")
+        if run["tracebacks"]:
+            problems.append(f"{name}: {run['tracebacks']} tracebacks in its log")
+        for resource in ("fds", "threads"):
+            if run["after"][resource] > run["before"][resource]:
+                problems.append(f"{name}: {resource} {run['before'][resource]} -> {run['after'][resource]}"
+                                + (f" {run['before']['thread_names']} -> {run['after']['thread_names']}"
+                                   if resource == "threads" else ""))
+    if soaked:
+        behaved = soaked["well_behaved"]
+        if behaved["failures"] or behaved["served"] != behaved["programs"]:
+            problems.append(f"soak: well-behaved programs: {behaved['served']}/{behaved['programs']} served, "
+                            f"failures {behaved['failures'][:3]}")
+        if soaked["tabs"]["failed"]:
+            problems.append(f"soak: {soaked['tabs']['failed']} tabs failed")
+    if loaded:
+        programs = loaded["programs"]
+        if programs["failures"] or programs["served"] != programs["programs"]:
+            problems.append(f"load: {programs['served']}/{programs['programs']} served, failures {programs['failures'][:3]}")
+        if loaded["tabs"]["failed"] or loaded["cycles"]["failed"]:
+            problems.append(f"load: {loaded['tabs']['failed']} tabs and {loaded['cycles']['failed']} cycles failed "
+                            f"{loaded['cycles']['failures']}")
+    return problems
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--minutes", type=float, default=10.0, help="length of the soak (0: none)")
+    parser.add_argument("--programs", type=int, default=50, help="well-behaved C programs during the soak")
+    parser.add_argument("--load", action="store_true", help="also the load scenario (100 programs, 200 tabs, 500 cycles)")
+    arguments = parser.parse_args()
+    program = build_c(BENCH / "programs" / "poll_load.c", BUILD / "poll_load")
+    soaked = soak(arguments.minutes, arguments.programs, program) if arguments.minutes > 0 else None
+    if soaked:
+        behaved, fuzz = soaked["well_behaved"], soaked["fuzz"]
+        print_table(f"Soak: {arguments.minutes:g} min, {arguments.programs} well-behaved programs, "
+                    f"{FUZZ_ROBOTS} fuzzing clients, browser tabs coming and going", [
+                        ("well-behaved calls", behaved["calls"]), ("failed well-behaved calls", len(behaved["failures"])),
+                        ("programs served", f"{behaved['served']}/{behaved['programs']}"),
+                        ("max latency (ms)", f"{behaved['max_latency_ms']:.1f}"),
+                        ("worst p99 (ms)", f"{behaved['worst_p99_ms']:.2f}"),
+                        ("fuzz frames / connections", f"{fuzz['sent']} / {fuzz['connections']}"),
+                        ("fuzz replies / error replies", f"{fuzz['replies']} / {fuzz['error_replies']}"),
+                        ("tabs opened / failed", f"{soaked['tabs']['opened']} / {soaked['tabs']['failed']}"),
+                        *_resources(soaked), ("tracebacks in the log", soaked["tracebacks"]),
+                        ("RSS (MB) by minute", " ".join(f"{m:g}:{mb:.0f}" for m, mb in soaked["rss_mb_by_minute"]))],
+                    ("", "value"))
+    loaded = load(program) if arguments.load else None
+    if loaded:
+        programs = loaded["programs"]
+        print_table("Load: 100 programs at once, 200 tabs at once, 500 connect/disconnect cycles", [
+            ("programs served", f"{programs['served']}/{programs['programs']}"), ("calls", programs["calls"]),
+            ("failed calls", len(programs["failures"])), ("max latency (ms)", f"{programs['max_latency_ms']:.1f}"),
+            ("tabs opened / failed", f"{loaded['tabs']['opened']} / {loaded['tabs']['failed']}"),
+            ("cycles / failed", f"{loaded['cycles']['cycles']} / {loaded['cycles']['failed']}"),
+            *_resources(loaded), ("tracebacks in the log", loaded["tracebacks"])], ("", "value"))
+    problems = checks(soaked, loaded)
+    write_results("soak", {"soak": soaked, "load": loaded, "problems": problems})
+    print("\n" + ("\n".join(problems) if problems else "all checks passed"))
+    sys.exit(1 if problems else 0)
+
+
+def _resources(run: dict) -> list[tuple]:
+    return [(f"simulator {name} before -> after", f"{run['before'][name]} -> {run['after'][name]}")
+            for name in ("rss_mb", "fds", "threads")]
+
+
+if __name__ == "__main__":
+    main()
