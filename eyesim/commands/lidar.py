@@ -21,11 +21,11 @@ def lidar_set(sim, robot, request):
 
 
 def lidar_get(sim, robot, request):
-    return (0, _scanner(robot).scan().tolist())
+    return (0, _scanner(robot).scan())  # int32 array: encoded without a list
 
 
 def sim_laser_scan(sim, robot, request):
-    return (0, _scanner(robot).laser_scan().tolist())
+    return (0, _scanner(robot).laser_scan())
 
 
 HANDLERS = {"LIDAR_SET": lidar_set, "LIDAR_GET": lidar_get, "SIM_LASER_SCAN": sim_laser_scan}
