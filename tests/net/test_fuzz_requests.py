@@ -18,6 +18,7 @@ import pytest
 from hypothesis import HealthCheck, given, seed, settings
 from hypothesis import strategies as st
 from support.client import ProgramClient, RemoteError
+from support.error_log import ErrorLog
 from support.memory import rss_mb
 from support.simulator import running_simulation
 from support.worlds import arena_scene, example_robot
@@ -122,17 +123,6 @@ unanswered = st.one_of(
 
 
 # -- the run ---------------------------------------------------------------------------------------------
-class ErrorLog(logging.Handler):
-    """Records logged at ERROR or above (a handler's traceback, a reply that does not encode)."""
-
-    def __init__(self):
-        super().__init__(logging.ERROR)
-        self.records = []
-
-    def emit(self, record):
-        self.records.append(record)
-
-
 @pytest.fixture(scope="module")
 def fuzz_target():
     handler = ErrorLog()

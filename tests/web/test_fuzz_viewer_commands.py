@@ -23,6 +23,7 @@ from hypothesis import HealthCheck, given, seed, settings
 from hypothesis import strategies as st
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from support.error_log import ErrorLog  # noqa: E402
 from support.viewer import viewer_simulation  # noqa: E402
 from support.worlds import arena_scene  # noqa: E402
 
@@ -85,15 +86,6 @@ frames = st.one_of(
                      '{"type": "seek", "time": 1' + "0" * 4400 + "}", '{"type": "seek", "time": 1e308}']),
     st.binary(max_size=200),  # a binary frame
 ).filter(_fits)
-
-
-class ErrorLog(logging.Handler):
-    def __init__(self):
-        super().__init__(logging.ERROR)
-        self.records = []
-
-    def emit(self, record):
-        self.records.append(record)
 
 
 class Browser:

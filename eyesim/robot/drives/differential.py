@@ -3,15 +3,13 @@
 
 from __future__ import annotations
 
-import math
-
 import mujoco
 
 from eyesim.physics.units import mm
 from eyesim.robot.actuators import WheelMotor
 from eyesim.robot.component import Component
 from eyesim.robot.drives.archetype import DriveArchetype, Kinematics
-from eyesim.robot.drives.wheels import GRAVITY, add_wheel, ground_positions, wheel_torque
+from eyesim.robot.drives.wheels import GRAVITY, add_wheel, ground_positions, wheel_constants, wheel_torque
 
 CASTER_RADIUS = 0.012  # m
 CASTER_LIFT = 0.001  # m casters sit above the floor: the wheels carry the robot, casters catch its tilt
@@ -25,11 +23,8 @@ class DifferentialDrive(Component, Kinematics):
     def __init__(self, context):
         robot_type = context.robot_type
         wheels = robot_type.wheels
-        self.radius = mm(wheels.diameter) / 2
-        self.track = mm(wheels.track)
-        self.ticks_per_rev = wheels.ticks_per_rev
-        self.max_wheel_speed = math.radians(wheels.max_speed)  # rad/s
-        self.metres_per_tick = 2 * math.pi * self.radius / self.ticks_per_rev
+        self.radius, self.track, self.ticks_per_rev, self.max_wheel_speed, self.metres_per_tick = \
+            wheel_constants(wheels)
         self.tick_travel = self.metres_per_tick / 2  # one wheel's tick moves the axle's centre half as far
         self.spot_radius = self.track / 2
         axle_x = mm(robot_type.axis_offset)

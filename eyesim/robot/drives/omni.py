@@ -18,7 +18,8 @@ from eyesim.physics.units import mm
 from eyesim.robot.actuators import WheelMotor
 from eyesim.robot.component import Component
 from eyesim.robot.drives.archetype import DriveArchetype, Kinematics
-from eyesim.robot.drives.wheels import WHEEL_ARMATURE, WHEEL_DAMPING, WHEEL_MASS, ground_positions, wheel_torque
+from eyesim.robot.drives.wheels import (WHEEL_ARMATURE, WHEEL_DAMPING, WHEEL_MASS, ground_positions, wheel_constants,
+                                         wheel_torque)
 
 ROLLER_FRICTION = 0.02  # along the axle: what the rollers' bearings resist
 GRIP = 1.0  # along the rolling direction
@@ -42,13 +43,10 @@ class OmniDrive(Component, Kinematics):
     def __init__(self, context):
         robot_type = context.robot_type
         wheels = robot_type.wheels
-        self.radius = mm(wheels.diameter) / 2
-        self.track = mm(wheels.track)
+        self.radius, self.track, self.ticks_per_rev, self.max_wheel_speed, self.metres_per_tick = \
+            wheel_constants(wheels)
         # The axles sit a wheel radius inside the chassis' front and back.
         self.wheelbase = max(mm(robot_type.length) - 2 * self.radius, self.radius)
-        self.ticks_per_rev = wheels.ticks_per_rev
-        self.max_wheel_speed = math.radians(wheels.max_speed)
-        self.metres_per_tick = 2 * math.pi * self.radius / self.ticks_per_rev
         self.tick_travel = self.metres_per_tick / 4  # the robot moves by the mean of its four wheels
         self.spot_radius = self.wheelbase / 2 + self.track / 2
         spec, prefix = context.spec, context.prefix

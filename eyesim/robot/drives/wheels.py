@@ -7,6 +7,8 @@ import math
 
 import mujoco
 
+from eyesim.physics.units import mm
+
 WHEEL_WIDTH = 0.014  # m
 WHEEL_MASS = 0.03  # kg
 WHEEL_FRICTION = [1.0, 0.005, 0.0001]
@@ -19,6 +21,14 @@ GRAVITY = 9.81  # m/s^2
 # the wheel to a new speed within 0.1 s, as EyeSim's motors do (it slips until the robot catches up),
 # yet too little to tip a small robot back onto its caster (measured: docs/api/motor.md).
 MOTOR_GRIP_FACTOR = 2.5
+
+
+def wheel_constants(wheels) -> tuple[float, float, int, float, float]:
+    """From a `wheel` line: radius (m), track (m), encoder ticks a turn, top wheel speed (rad/s) and
+    how far a wheel rolls in one tick (m)."""
+    radius = mm(wheels.diameter) / 2
+    return (radius, mm(wheels.track), wheels.ticks_per_rev, math.radians(wheels.max_speed),
+            2 * math.pi * radius / wheels.ticks_per_rev)
 
 
 def wheel_torque(robot_type, radius: float, wheels: int, factor: float = MOTOR_GRIP_FACTOR) -> float:
