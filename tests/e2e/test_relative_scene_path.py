@@ -2,12 +2,11 @@
 full path (EyeSim 6 examples rely on %sim% fallbacks that search the folders above the scene)."""
 
 import shutil
-from pathlib import Path
 
+from support.corpus import CORPUS
 from support.programs import build, run_headless
 from support.rooms import Run
 
-CORPUS = Path(__file__).resolve().parents[3] / "shared" / "corpus"
 
 
 def test_a_scene_run_by_its_name_from_its_folder_sees_the_same_world(tmp_path):

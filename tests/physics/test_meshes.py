@@ -2,15 +2,14 @@
 (warnings naming file:line, no mesh, never an exception), placement, and every real .obj file."""
 
 import logging
-from pathlib import Path
 
 import numpy as np
 import pytest
+from support.corpus import CORPUS
 
 from eyesim.physics import meshes
 from eyesim.physics.meshes import model_mesh, placed, read_obj
 
-CORPUS = Path(__file__).resolve().parents[2].parent / "shared" / "corpus"
 CORPUS_OBJS = sorted(CORPUS.rglob("*.obj"))
 
 

@@ -2,11 +2,11 @@
 size on their bodies, collisions, mass and sensors still use the colliders, and the OpenGL camera
 sees the model where the ray caster (and the colliders alone) would not."""
 
-from pathlib import Path
 
 import mujoco
 import numpy as np
 import pytest
+from support.corpus import CORPUS
 from support.rooms import write_scene
 
 from eyesim.engine import Simulation
@@ -16,7 +16,6 @@ from eyesim.physics.render_raycast import RayCastRenderer
 from eyesim.physics.visual_mesh import COVERED_GROUP, MESH_GROUP, mesh_geoms
 from eyesim.scene.loader import load_scene
 
-CORPUS = Path(__file__).resolve().parents[2].parent / "shared" / "corpus"
 STOP_SIGN = CORPUS / "NoahWMueller__Eyesim/Sims/Objects/StopSign"
 S4BLUE = CORPUS / "NoahWMueller__Eyesim/Sims/Updated_Robots/S4blue.robi"
 

@@ -6,9 +6,9 @@ import dataclasses
 from pathlib import Path
 
 from hypothesis import strategies as st
+from support.corpus import CORPUS  # noqa: F401 (the scene tests take it from here)
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
-CORPUS = REPO_ROOT.parent / "shared" / "corpus"
 SCENE_KINDS = ("sim", "wld", "maz", "robi", "esObj")
 
 

@@ -14,12 +14,12 @@ from browser import open_viewer
 from eyesim.physics.meshes import read_obj
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from support.corpus import CORPUS  # noqa: E402
 from support.programs import simulator_with_viewer  # noqa: E402
 from support.rooms import write_scene  # noqa: E402
 
 pytestmark = pytest.mark.browser
 
-CORPUS = Path(__file__).resolve().parents[2].parent / "shared" / "corpus"
 STOP_SIGN = CORPUS / "NoahWMueller__Eyesim/Sims/Objects/StopSign/stopsign.esObj"
 S4BLUE = CORPUS / "NoahWMueller__Eyesim/Sims/Updated_Robots/S4blue.robi"
 
