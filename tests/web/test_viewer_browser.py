@@ -267,6 +267,8 @@ def test_a_new_scene_rebuilds_the_world_and_the_panels(viewer, fake_server):
     fake_server.send(scene_message())
     page.wait_for_function("() => window.eyesimViewer.scene().robots === 1")
     assert page.locator(".robot-panel").count() == 1
+    # name labels are placed by the next drawn frame (the view draws on demand)
+    page.wait_for_function("() => document.querySelectorAll('.world-labels .robot-label').length === 1")
     assert page.locator(".world-labels .robot-label").count() == 1
 
 
