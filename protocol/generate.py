@@ -11,6 +11,8 @@ import json
 import sys
 from pathlib import Path
 
+import layers
+
 ROOT = Path(__file__).resolve().parent.parent
 SPEC = ROOT / "protocol" / "protocol.json"
 VECTORS = ROOT / "protocol" / "vectors.json"
@@ -154,7 +156,8 @@ def c_vectors(spec: dict, vectors: list) -> str:
 
 def outputs() -> dict[Path, str]:
     spec, vectors = load()
-    return {PY_OUT: python_source(spec), C_OUT: c_source(spec), C_VECTORS_OUT: c_vectors(spec, vectors)}
+    return {PY_OUT: python_source(spec), C_OUT: c_source(spec), C_VECTORS_OUT: c_vectors(spec, vectors),
+            **layers.outputs(spec)}
 
 
 def main() -> int:
