@@ -161,6 +161,12 @@ def check_python(function: Function, where: str) -> None:
         raise SystemExit(f"{where}: its Python wrapper cannot be generated; mark it \"python\": \"hand\"")
 
 
+def wrap(text: str, width: int) -> list[str]:
+    """Lines of at most `width`, never breaking `make protocol` (so that it can be searched for)."""
+    protected = text.replace("`make protocol`", "`make\0protocol`")
+    return [line.replace("\0", " ") for line in textwrap.wrap(protected, width)]
+
+
 # ---- eyebot.h ---------------------------------------------------------------------------------------
 
 
@@ -255,7 +261,7 @@ def c_wrapper(function: Function) -> str:
 
 
 def c_source(groups: list[dict], functions: list[Function]) -> str:
-    banner = textwrap.wrap("api_gen.c: the RoBIOS functions that only pass their arguments to the simulator and "
+    banner = wrap("api_gen.c: the RoBIOS functions that only pass their arguments to the simulator and "
                            f"its reply back. {REGENERATE} The functions that do more are written by hand in "
                            "robios/src/<group>.c.", WIDTH - 3)
     out = ["/* " + banner[0], *(" * " + line for line in banner[1:])]
@@ -276,7 +282,11 @@ def c_source(groups: list[dict], functions: list[Function]) -> str:
 
 
 def prototypes_source(groups: list[dict], functions: list[Function]) -> str:
-    out = [f'"""The ctypes prototype of every function of libeyesim, as eyebot.h declares it. {REGENERATE}"""', "",
+    doc = wrap(f"The ctypes prototype of every function of libeyesim, as eyebot.h declares it. {REGENERATE}",
+                        WIDTH - 10)
+    out = ['"""' + doc[0], *doc[1:]]
+    out[-1] += '"""'
+    out += ["",
            "from ctypes import CFUNCTYPE, POINTER, c_bool, c_char, c_char_p, c_int, c_ubyte, c_void_p", "",
            "# Parameter kinds, named for what they carry.",
            "INT, BYTE, CHAR, BOOL = c_int, c_ubyte, c_char, c_bool",
@@ -335,7 +345,7 @@ def group_module(group: dict, functions: list[Function]) -> str:
     doc = title if title.upper().startswith(name.upper()) else f"{name.upper()}: {title}"
     text_ = REGENERATE + (f" The functions with behaviour of their own are written by hand in "
                           f"eye/handwritten/{name}.py." if hand else "")
-    out = [f'"""{doc}.', "", *textwrap.wrap(text_, WIDTH - 10)]
+    out = [f'"""{doc}.', "", *wrap(text_, WIDTH - 10)]
     out[-1] += '"""'
     out += ["", "from __future__ import annotations", ""]
     if any(f.outputs for f in generated):
