@@ -61,6 +61,31 @@ def test_a_changed_description_makes_the_header_and_the_python_module_stale():
     assert changed == {layers.HEADER, layers.EYE / "psd.py"}
 
 
+def test_a_new_pass_through_function_is_generated_in_every_layer():
+    """docs/developing.md's walk-through: an op and an api entry in protocol.json give the C wrapper,
+    the eyebot.h declaration, the ctypes prototype and the Python wrapper."""
+    spec = copy.deepcopy(SPEC)
+    spec["ops"].append({"name": "PSD_GET_BOTH", "code": 2099, "group": "psd", "cost_us": 100,
+                        "request": [["psd", "i32"]], "reply": [["result", "i32"], ["mm", "i32"], ["raw", "i32"]]})
+    psd = next(g for g in spec["api"] if g["group"] == "psd")
+    psd["functions"].append({"name": "PSDGetBoth", "c": "int PSDGetBoth(int psd, int *mm, int *raw)",
+                             "op": "PSD_GET_BOTH", "error": "1", "python": "hand", "doc": "both readings"})
+    psd["functions"].append({"name": "PSDGetTwice", "c": "int PSDGetTwice(int psd)", "op": "PSD_GET",
+                             "error": "-1", "doc": "the distance again"})
+    new = layers.outputs(spec)
+    changed = {path for path, text in new.items() if path.read_text() != text}
+    assert changed == {layers.HEADER, layers.C_WRAPPERS, layers.PY_PROTOTYPES, layers.EYE / "psd.py"}
+    assert "int PSDGetBoth(int psd, int *mm, int *raw); /* both readings */" in new[layers.HEADER]
+    assert ("int PSDGetBoth(int psd, int *mm, int *raw)\n{\n    es_value args[1] = {es_int(psd)};\n"
+            "    es_value result[3] = {{0}};\n    int rc = es_call(\"PSDGetBoth\", ES_OP_PSD_GET_BOTH, args, result);\n"
+            "    es_out(mm, result[1].i); /* zeros after an error */\n    es_out(raw, result[2].i);\n"
+            "    return rc ? 1 : (int)result[0].i;\n}") in new[layers.C_WRAPPERS]
+    assert '"PSDGetBoth": (INT, [INT, INTS, INTS]),' in new[layers.PY_PROTOTYPES]
+    module = new[layers.EYE / "psd.py"]
+    assert "from eye.handwritten.psd import PSDGetBoth" in module
+    assert 'def PSDGetTwice(psd: int) -> int:\n    """The distance again."""\n    return C.PSDGetTwice(psd)' in module
+
+
 def code_names(path: Path) -> set[str]:
     """The identifiers (and, in Python, strings) a source uses in its code, not in its comments."""
     if path.suffix == ".c":
