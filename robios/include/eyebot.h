@@ -355,12 +355,10 @@ extern int LIDAR_RESOLUTION;                   /* points per scan: 360 until LID
 int LIDARSet(int range, int tilt, int points); /* field 1..360 deg centred ahead, tilt deg (front down
                                                   positive), points 1..3600 */
 int LIDARGet(int distance[]);                  /* one scan in mm into LIDAR_RESOLUTION ints */
-int SIMLaserScan(int scan[360]);               /* EyeSim 6's laser scan over the LIDAR: 360 distances in
-                                                  mm, one per degree, index 0 straight ahead and angles
-                                                  growing counter-clockwise (90 left, 180 behind, 270
-                                                  right): a wall point is at x + d*cos(phi + i). A level
-                                                  scan of its own: the LIDARSet settings and
-                                                  LIDAR_RESOLUTION stay. */
+int SIMLaserScan(int scan[360]);               /* EyeSim 6's scan: 360 level beams in mm, one per degree,
+                                                  index 0 ahead, counter-clockwise (a wall point is at x +
+                                                  d*cos(phi + i)); the LIDARSet settings and
+                                                  LIDAR_RESOLUTION stay */
 
 /* ---- Camera: frames are rendered from the camera's pose on the robot ------------------------- */
 
