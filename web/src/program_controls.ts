@@ -93,6 +93,7 @@ export class ProgramControls {
   private readonly message = element("p", "program-message");
   private readonly compilerOutput = element("div", "compiler-output");
   private enabled = true;
+  private running = false;
 
   constructor(
     private readonly robot: number,
@@ -127,6 +128,12 @@ export class ProgramControls {
   /** Off while disconnected or replaying: there is nothing to run the program on. */
   setEnabled(enabled: boolean): void {
     this.enabled = enabled;
+    this.updateButtons();
+  }
+
+  /** Whether the robot's program runs now (from the program events): Stop only then. */
+  setRunning(running: boolean): void {
+    this.running = running;
     this.updateButtons();
   }
 
@@ -186,7 +193,7 @@ export class ProgramControls {
     this.refreshButton.disabled = !this.enabled;
     this.startButton.disabled = !this.enabled || file === null || source;
     this.compileButton.disabled = !this.enabled || !source;
-    this.stopButton.disabled = !this.enabled;
+    this.stopButton.disabled = !this.enabled || !this.running;
     this.restartButton.disabled = !this.enabled;
   }
 
@@ -221,9 +228,9 @@ export class ProgramControls {
       this.say(`${file.path} did not compile${errors ? ` (${errors} error${errors > 1 ? "s" : ""})` : ""}`, "error");
       return;
     }
-    this.say(`compiled ${result.program?.path ?? ""}`, "done");
     await this.catalog.refresh();
     if (result.program) this.choose(result.program.path);
+    this.say(`compiled ${result.program?.path ?? ""}`, "done");
   }
 
   private showCompilerOutput(result: CompileResult): void {

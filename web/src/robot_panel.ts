@@ -22,7 +22,10 @@ function describe(program: ProgramState | null): { text: string; kind: string } 
   if (program.event === "started") return { text: `running ${program.name}`, kind: "running" };
   if (program.exit_code !== null && program.exit_code < 0) {
     const signal = -program.exit_code;
-    return { text: `${program.name} crashed: ${SIGNAL_NAMES[signal] ?? `signal ${signal}`}`, kind: "failed" };
+    const name = SIGNAL_NAMES[signal] ?? `signal ${signal}`;
+    // SIGTERM and SIGKILL are how Stop (or the end of the run) ends a program.
+    if (signal === 15 || signal === 9) return { text: `${program.name} stopped (${name})`, kind: "exited" };
+    return { text: `${program.name} crashed: ${name}`, kind: "failed" };
   }
   const code = program.exit_code === null ? "" : ` with code ${program.exit_code}`;
   return { text: `${program.name} exited${code}`, kind: program.exit_code ? "failed" : "exited" };
@@ -98,6 +101,7 @@ export class RobotPanel {
     const { text, kind } = describe(program);
     this.state.textContent = text;
     this.state.dataset.kind = kind;
+    this.programs.setRunning(program?.event === "started");
   }
 
   /** Back to how the panel starts (the timeline jumped back): the frame then brings what was there. */
