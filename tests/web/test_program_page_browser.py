@@ -5,13 +5,13 @@ why a program crashed, pick a robot by clicking it in 3D among 20, switch the ca
 Screenshots go to $EYESIM_SCREENSHOTS when it is set (for looking at them)."""
 
 import math
-import os
 import shutil
 import sys
 from pathlib import Path
 
 import pytest
 from browser import open_viewer, robot_panel, robot_screen_position
+from browser import save_screenshot as screenshot
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.programs import simulator_with_viewer  # noqa: E402
@@ -32,12 +32,6 @@ int main(void) {
 CRASH = """#include <stdio.h>
 int main(void) { volatile int *p = 0; *p = 1; return 0; }
 """
-
-
-def screenshot(page, name: str) -> None:
-    folder = os.environ.get("EYESIM_SCREENSHOTS")
-    if folder:
-        page.screenshot(path=str(Path(folder) / f"{name}.png"))
 
 
 def moved_since(page, start: list[float]) -> None:
@@ -152,7 +146,8 @@ def test_settings_from_the_page_take_effect(browser_context, folder):
 
 def twenty_robots(folder: Path) -> Path:
     shutil.copy(SCENES_DIR / "arena.wld", folder / "arena.wld")
-    lines = ["world arena.wld"] + [f"S4 {300 + 350 * (i % 5)} {300 + 450 * (i // 5)} {18 * i}" for i in range(20)]
+    rows = (250, 650, 1100, 1750)  # clear of the arena's inner walls
+    lines = ["world arena.wld"] + [f"S4 {300 + 350 * (i % 5)} {rows[i // 5]} {18 * i}" for i in range(20)]
     (folder / "many.sim").write_text("\n".join(lines) + "\n")
     return folder / "many.sim"
 
@@ -163,6 +158,7 @@ def test_click_a_robot_among_twenty_and_follow_it_or_look_down(browser_context, 
         viewer = open_viewer(browser_context, url)
         page = viewer.page
         assert len(viewer.state("robotIds")) == 20
+        assert viewer.state("sceneWarnings")["warnings"] == []
         assert viewer.state("expandedPanels") == [1]
         page.wait_for_function("() => window.eyesimViewer.robotScreenPosition(13) !== null")
         x, y = robot_screen_position(page, 13)

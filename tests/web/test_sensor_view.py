@@ -6,7 +6,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from browser import open_viewer, robot_panel
+from browser import open_viewer, robot_panel, save_screenshot
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.programs import eyesim_command, simulator_with_viewer  # noqa: E402
@@ -42,4 +42,5 @@ def test_rays_paths_and_camera_images_show(browser_context, simulator):
     lcd = panel.locator(".lcd-image").bounding_box()
     camera = panel.locator(".camera-image").bounding_box()
     assert camera["x"] >= lcd["x"] + lcd["width"] and abs(camera["y"] - lcd["y"]) < 20
+    save_screenshot(page, "camera-beside-lcd")
     assert viewer.errors == []

@@ -71,6 +71,14 @@ export class RobotPanel {
     header.addEventListener("click", (event) => {
       if (!(event.target as HTMLElement).closest("button")) select(robot.id);
     });
+    header.tabIndex = 0;
+    header.title = "Open this robot's panel";
+    header.addEventListener("keydown", (event) => {
+      if ((event.key === "Enter" || event.key === " ") && event.target === header) {
+        event.preventDefault();
+        select(robot.id);
+      }
+    });
     this.programs = new ProgramControls(robot.id, catalog);
     const screens = element("div", "robot-screens");
     screens.append(this.lcd.element, this.camera.element);

@@ -66,8 +66,9 @@ export class Viewer {
       elements.world,
       send,
       (target) => {
+        // A click on a robot opens its panel; with the plots open, it plots the robot too.
         if (target.kind === "robot") this.panels.select(target.id);
-        if (target.kind === "robot") this.plots.pickRobot(target.id);
+        if (target.kind === "robot" && this.plots.visible) this.plots.pickRobot(target.id);
         if (target.kind === "psd") this.plots.pickPsd(target.robot, target.id);
       },
       () => this.overlays.drawnRays(),
