@@ -77,6 +77,14 @@ def test_compile_start_stop_and_restart_from_the_page(browser_context, folder):
         moved_since(page, start)
         page.wait_for_function("() => window.eyesimViewer.consoleText(1).includes('driving')")
         screenshot(page, "driving")
+        # The follow camera moves along with the driving robot.
+        page.locator("#view-mode").select_option("follow")
+        page.wait_for_function("() => window.eyesimViewer.cameraState().following === 1")
+        camera = viewer.state("cameraState")["position"]
+        page.wait_for_function(
+            "c => { const p = window.eyesimViewer.cameraState().position; return Math.hypot(p[0] - c[0], p[2] - c[2]) > 0.05; }",
+            arg=camera, timeout=20_000)
+        assert abs(viewer.state("cameraState")["position"][1] - camera[1]) < 0.01  # at the same height above the floor
 
         panel.locator(".program-stop").click()
         page.wait_for_function("() => window.eyesimViewer.programState(1)?.event === 'exited'")

@@ -8,9 +8,9 @@ import { worldToThree } from "./world_frame";
 
 export type ViewMode = "free" | "top" | "follow";
 
-/** Following starts this far (m) behind and above the robot. */
+/** Following starts this far (m) behind and above the robot, steep enough to see over 0.3 m walls. */
 const FOLLOW_DISTANCE = 1.2;
-const FOLLOW_ELEVATION = (35 * Math.PI) / 180;
+const FOLLOW_ELEVATION = (60 * Math.PI) / 180;
 /** Top-down leaves this much room around the floor. */
 const TOP_MARGIN = 1.08;
 
