@@ -11,6 +11,7 @@ Every route is behind the viewer's access checks (access.py). Bad requests get 4
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import dataclasses
 import json
 import logging
@@ -106,8 +107,9 @@ class ProgramControl:
 
     async def settings(self, _body: dict) -> dict:
         settings = self.sim.scene.settings
+        clock = {key: value for key, value in self.sim.status().items() if key != "type"}
         return {"vis": settings.vis, "trace": settings.trace, "psd_noise": settings.psd_noise,
-                "seed": settings.seed, **self.sim.status()}
+                "seed": settings.seed, **clock}
 
     async def change_settings(self, body: dict) -> dict:
         changes = {}
@@ -160,19 +162,16 @@ class ProgramControl:
         raise BadRequest(f"robot {robot_id} is still held by a program the simulator did not start "
                          f"(stop it where it runs)")
 
-    def _robot_busy(self, robot_id: int):
-        control = self
-
-        class Busy:
-            async def __aenter__(self):
-                if robot_id in control._busy:
-                    raise BadRequest(f"robot {robot_id}: its program is being started or stopped, try again")
-                control._busy.add(robot_id)
-
-            async def __aexit__(self, *exc):
-                control._busy.discard(robot_id)
-
-        return Busy()
+    @contextlib.asynccontextmanager
+    async def _robot_busy(self, robot_id: int):
+        """One start, stop or restart per robot at a time (a double click must not start two)."""
+        if robot_id in self._busy:
+            raise BadRequest(f"robot {robot_id}: its program is being started or stopped, try again")
+        self._busy.add(robot_id)
+        try:
+            yield
+        finally:
+            self._busy.discard(robot_id)
 
     async def _on_simulation(self, action):
         """Run action(sim) on the simulation thread and return its result."""
