@@ -173,6 +173,10 @@ def test_click_a_robot_among_twenty_and_follow_it_or_look_down(browser_context, 
         page.mouse.click(x, y)
         page.wait_for_function("() => window.eyesimViewer.selectedRobot() === 13")
         assert viewer.state("expandedPanels") == [13]
+        page.wait_for_function("() => document.querySelectorAll('.robot-label.selected').length === 1")
+        label = page.locator(".robot-label.selected").bounding_box()
+        x, y = robot_screen_position(page, 13)
+        assert abs(label["x"] + label["width"] / 2 - x) < 15 and label["y"] < y  # robot 13's, above it
         assert robot_panel(page, 13).locator(".lcd").is_visible()
         assert not robot_panel(page, 1).locator(".lcd").is_visible()
         assert robot_panel(page, 20).locator(".robot-name").is_visible()

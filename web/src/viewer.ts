@@ -76,7 +76,10 @@ export class Viewer {
     this.help = new HelpOverlay(elements.world);
     const viewMode = elements.toolbar.querySelector<HTMLSelectElement>("#view-mode");
     viewMode?.addEventListener("change", () => this.world.setViewMode(viewMode.value as ViewMode, this.panels.selected));
-    this.panels.onSelect((robot) => this.world.followRobot(robot));
+    this.panels.onSelect((robot) => {
+      this.world.highlightRobot(robot);
+      this.world.followRobot(robot);
+    });
     this.settings = new SettingsPanel(elements.world, elements.toolbar.querySelector("#settings-toggle")!);
     this.world.addOverlay(this.overlays.group);
     this.timeline = new TimelineBar(elements.timeline, send);

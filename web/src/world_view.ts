@@ -11,7 +11,7 @@ import {
   WebGLRenderer,
 } from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
-import { CSS2DRenderer } from "three/addons/renderers/CSS2DRenderer.js";
+import { CSS2DObject, CSS2DRenderer } from "three/addons/renderers/CSS2DRenderer.js";
 import { CameraModes, type ViewMode } from "./camera_modes";
 import { DragToPlace, yawOf, type DragTarget, type PickTarget } from "./interaction";
 import type { Pose, Poses } from "./interpolation";
@@ -99,6 +99,8 @@ export class WorldView {
   private sceneMessage: SceneMessage | null = null;
   private floor: Floor | null = null;
   private needsRender = true;
+  /** the robot whose name label stands out (the selected one) */
+  private highlighted: number | null = null;
 
   constructor(
     private readonly container: HTMLElement,
@@ -174,6 +176,7 @@ export class WorldView {
     const { width, height } = scene.floor;
     const resized = this.floor?.width !== width || this.floor?.height !== height;
     this.floor = scene.floor;
+    this.highlightRobot(this.highlighted);
     if (resized && this.cameraModes?.mode === "top") this.cameraModes.set("top");
     else if (resized) this.frameFloor(scene.floor);
     this.needsRender = true;
@@ -183,6 +186,17 @@ export class WorldView {
   setViewMode(mode: ViewMode, robot: number | null = null): void {
     if (!this.cameraModes) return;
     this.cameraModes.set(mode, robot);
+    this.needsRender = true;
+  }
+
+  /** Makes the robot's name label stand out (the robot whose panel is open). */
+  highlightRobot(robot: number | null): void {
+    this.highlighted = robot;
+    for (const [id, model] of this.world?.robots ?? []) {
+      model.traverse((part) => {
+        if (part instanceof CSS2DObject) part.element.classList.toggle("selected", id === robot);
+      });
+    }
     this.needsRender = true;
   }
 
