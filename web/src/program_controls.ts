@@ -51,6 +51,12 @@ export class ProgramCatalog {
   private overview: Overview = { roots: [], files: [], robots: [] };
   private readonly listeners = new Set<() => void>();
   private loading: Promise<void> | null = null;
+  private answered = false;
+
+  /** Whether the server runs programs for the page (`eyesim run` does; a replay does not). */
+  get available(): boolean {
+    return this.answered;
+  }
 
   get files(): ProgramFile[] {
     return this.overview.files;
@@ -73,9 +79,15 @@ export class ProgramCatalog {
     this.loading ??= getJson<Overview>("api/programs")
       .then((overview) => {
         this.overview = overview;
+        this.answered = true;
+      })
+      .catch((error) => {
+        this.answered = false;
+        console.info("EyeSim viewer: no program controls:", error.message ?? error);
+      })
+      .then(() => {
         for (const listener of this.listeners) listener();
       })
-      .catch((error) => console.warn("EyeSim viewer: could not list the programs:", error))
       .finally(() => (this.loading = null));
     return this.loading;
   }
@@ -161,6 +173,7 @@ export class ProgramControls {
   }
 
   private showFiles(): void {
+    this.element.hidden = !this.catalog.available;
     const previous = this.choice.value || this.currentProgramKey();
     const groups = this.catalog.roots.map((root, index) => {
       const group = element("optgroup");
