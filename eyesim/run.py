@@ -188,13 +188,14 @@ def simulate(args) -> int:
     except OSError as error:
         raise UsageError(f"cannot listen for programs on {args.host}:{args.port}: {error.strerror} "
                          f"(is another simulator running? try --port 0)") from None
+    launcher = Launcher(sim, args.host, server.port)
     viewer = None
     if not args.headless:
         from eyesim.web.server import ViewerServer
 
         io = IoThread()
         io.start()
-        viewer = ViewerServer(sim, io, args.host, args.viewer_port)
+        viewer = ViewerServer(sim, io, args.host, args.viewer_port, launcher=launcher)
         try:
             viewer.start()
         except OSError as error:
@@ -210,7 +211,6 @@ def simulate(args) -> int:
           f"({mode} clock{'' if speed == 1 else f', speed {args.speed}'})", flush=True)
 
     recorders = start_recorders(sim, args)
-    launcher = Launcher(sim, args.host, server.port)
     for robot_id, path in sorted(programs.items()):
         launcher.start(robot_id, path)
     # Headless with programs and no time limit: the run ends when the last program is done.

@@ -30,6 +30,7 @@ from eyesim.robot.components.keys import KEYS
 from eyesim.web import mesh_message, place_command, robot_io_commands, timeline
 from eyesim.web.access import AccessPolicy
 from eyesim.web.live_history import LiveHistory
+from eyesim.web.program_control import ProgramControl
 from eyesim.web.scene_message import scene_message
 
 log = logging.getLogger("eyesim.web")
@@ -245,6 +246,10 @@ class ViewerHub:
     def detach(self, browser: Browser) -> None:
         self.browsers.discard(browser)
 
+    def resend_scene(self) -> None:
+        """The scene's description changed (its settings): every browser gets it afresh. Any thread."""
+        self.loop.call_soon_threadsafe(self._event, {"type": "reset"}, self.sim.time_us)
+
     # -- commands from a browser -------------------------------------------------------------
     def command(self, message: dict) -> str | None:
         """Queue a browser command for the simulation; return an error text for a bad one."""
@@ -363,8 +368,13 @@ async def static_file(request: web.Request) -> web.StreamResponse:
 
 
 class ViewerServer:
-    def __init__(self, sim, io_thread, host: str = "127.0.0.1", port: int = 8080, token: str | None = None):
+    def __init__(self, sim, io_thread, host: str = "127.0.0.1", port: int = 8080, token: str | None = None,
+                 launcher=None, run_folder: Path | None = None):
+        """`launcher` runs the programs the page starts (none: the page cannot start programs);
+        `run_folder` is the first scene root (default: the current folder)."""
         self.sim = sim
+        self.launcher = launcher
+        self.run_folder = run_folder or Path.cwd()
         self.io = io_thread
         self.host = host
         self.port = port
@@ -387,6 +397,8 @@ class ViewerServer:
         app.router.add_get("/ws", self._websocket)
         app.router.add_get("/scene/floor-texture", self._floor_texture)
         app.router.add_get("/scene/mesh/{kind}/{id}", self._mesh)
+        if self.launcher is not None:
+            ProgramControl(self.sim, self.launcher, self.run_folder, self.hub.resend_scene).add_routes(app.router)
         app.router.add_get("/{path:.*}", static_file)
         self._runner, self.port = await serve_app(app, self.host, self.port)
 

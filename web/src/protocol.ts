@@ -312,7 +312,7 @@ export type BrowserCommand =
   | { type: "key"; robot: number; key: KeyCode }
   | { type: "pause" }
   | { type: "resume" }
-  | { type: "speed"; value: number }
+  | { type: "speed"; value: number | "max" }
   | { type: "reset" }
   | { type: "touch"; robot: number; x: number; y: number }
   | { type: "irtv"; robot: number; code: string }

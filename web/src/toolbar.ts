@@ -40,6 +40,10 @@ export class Toolbar {
 
     this.pause.addEventListener("click", () => send({ type: this.paused ? "resume" : "pause" }));
     this.speed.addEventListener("change", () => {
+      if (this.speed.value === "max") {
+        send({ type: "speed", value: "max" });
+        return;
+      }
       const value = Number(this.speed.value);
       if (value > 0) send({ type: "speed", value });
     });
