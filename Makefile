@@ -54,9 +54,11 @@ system-packages:
 viewer:
 	cd web && npm ci --no-audit --no-fund && npm run build
 
-# Regenerate the protocol tables from protocol/protocol.json.
+# Regenerate the protocol tables from protocol/protocol.json, and the viewer channel's TypeScript
+# types and parsers and the server's copy of its schema from protocol/viewer.schema.json.
 protocol:
 	$(PYTHON) protocol/generate.py
+	$(PYTHON) protocol/generate_viewer.py
 
 bench: $(INSTALLED)
 	$(BIN)/python bench/bench_roundtrip.py

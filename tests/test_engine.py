@@ -7,6 +7,7 @@ from support.client import ProgramClient
 from support.scenes import arena, with_call_time
 from support.simulator import running_simulation
 
+from eyesim import robot_input
 from eyesim.engine import DEFAULT_CALL_TIME_US
 from eyesim.protocol import generated as g
 from eyesim.robot.components.keys import KEY2
@@ -119,7 +120,7 @@ def test_key_get_waits_for_a_press_while_other_calls_go_on():
         other.hello("2")
         request = waiter.send("KEY_GET")
         assert other.call("PSD_GET", 1)[0] > 0  # the blocked call holds up nobody
-        sim.call(lambda s: s.press_key(1, KEY2))
+        sim.call(lambda s: robot_input.key(s, 1, KEY2))
         assert waiter.reply("KEY_GET", request) == (KEY2,)
         assert waiter.call("KEY_READ") == (0,)
 
