@@ -1027,14 +1027,12 @@ SCHEMA = json.loads(r'''{
      "maximum": 1000000
     },
     "x": {
-     "type": "number",
-     "minimum": -1000000.0,
-     "maximum": 1000000.0
+     "description": "m, on the floor (0..width)",
+     "type": "number"
     },
     "y": {
-     "type": "number",
-     "minimum": -1000000.0,
-     "maximum": 1000000.0
+     "description": "m, on the floor (0..height)",
+     "type": "number"
     },
     "phi": {
      "description": "rad",
@@ -1071,9 +1069,8 @@ SCHEMA = json.loads(r'''{
      "const": "seek"
     },
     "time": {
-     "type": "number",
-     "minimum": -1000000000000.0,
-     "maximum": 1000000000000.0
+     "description": "s; clamped to the timeline",
+     "type": "number"
     }
    },
    "required": [

@@ -510,23 +510,26 @@ export interface PlaceCommand {
   robot?: number;
   /** object id */
   object?: number;
+  /** m, on the floor (0..width) */
   x: number;
+  /** m, on the floor (0..height) */
   y: number;
   /** rad */
   phi: number;
 }
 
 export function parsePlaceCommand(value: unknown, what: string): PlaceCommand {
-  return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => literal(v, ["place"] as const, w), true, undefined], robot: [(v: unknown, w: string) => num(v, w, true, 1, 1000000, false, false), false, undefined], object: [(v: unknown, w: string) => num(v, w, true, 1, 1000000, false, false), false, undefined], x: [(v: unknown, w: string) => num(v, w, false, -1000000.0, 1000000.0, false, false), true, undefined], y: [(v: unknown, w: string) => num(v, w, false, -1000000.0, 1000000.0, false, false), true, undefined], phi: [(v: unknown, w: string) => num(v, w, false, -1000000.0, 1000000.0, false, false), true, undefined]}) as unknown as PlaceCommand;
+  return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => literal(v, ["place"] as const, w), true, undefined], robot: [(v: unknown, w: string) => num(v, w, true, 1, 1000000, false, false), false, undefined], object: [(v: unknown, w: string) => num(v, w, true, 1, 1000000, false, false), false, undefined], x: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], y: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], phi: [(v: unknown, w: string) => num(v, w, false, -1000000.0, 1000000.0, false, false), true, undefined]}) as unknown as PlaceCommand;
 }
 
 export interface SeekCommand {
   type: "seek";
+  /** s; clamped to the timeline */
   time: number;
 }
 
 export function parseSeekCommand(value: unknown, what: string): SeekCommand {
-  return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => literal(v, ["seek"] as const, w), true, undefined], time: [(v: unknown, w: string) => num(v, w, false, -1000000000000.0, 1000000000000.0, false, false), true, undefined]}) as unknown as SeekCommand;
+  return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => literal(v, ["seek"] as const, w), true, undefined], time: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined]}) as unknown as SeekCommand;
 }
 
 export interface LiveCommand {
