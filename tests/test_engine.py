@@ -178,3 +178,16 @@ def test_the_simulator_survives_a_handler_crash(monkeypatch):
         with pytest.raises(Exception, match="internal simulator error"):
             client.call("PSD_GET", 1)
         assert client.call("OS_GET_COUNT")[0] >= 0
+
+
+def test_the_engine_imports_no_component_and_no_viewer_code():
+    """Components and the web layer collect what they need; the engine only says when (events)."""
+    import ast
+    from pathlib import Path
+
+    import eyesim.engine
+
+    tree = ast.parse(Path(eyesim.engine.__file__).read_text())
+    modules = {node.module for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)}
+    modules |= {alias.name for node in ast.walk(tree) if isinstance(node, ast.Import) for alias in node.names}
+    assert [m for m in modules if m.startswith(("eyesim.robot.components", "eyesim.web"))] == []

@@ -90,23 +90,34 @@ def _shapes(model, geoms, colored: bool = False) -> list[dict]:
 
 
 def snapshot(sim) -> dict:
+    """Where everything is now in the simulation."""
     data = sim.world.data
     robots = []
     for r in sim.robots:
-        entry = {"id": r.id, "pos": [float(v) for v in data.xpos[r.body]], "quat": [float(v) for v in data.xquat[r.body]]}
         battery = r.component(Battery)
-        if battery is not None:
-            entry["battery"] = round(battery.volts, 3)
-        robots.append(entry)
-    objects = [{"id": o.id, "pos": data.xpos[o.body].tolist(), "quat": data.xquat[o.body].tolist()}
-               for o in sim.objects]
+        robots.append(pose(r.id, data.xpos[r.body].tolist(), data.xquat[r.body].tolist(),
+                           battery.volts if battery is not None else None))
+    objects = [pose(o.id, data.xpos[o.body].tolist(), data.xquat[o.body].tolist()) for o in sim.objects]
     # Moving parts of robots (arm links, fingers, steered wheels), by their body number.
-    bodies = [{"id": body, "pos": data.xpos[body].tolist(), "quat": data.xquat[body].tolist()}
+    bodies = [pose(body, data.xpos[body].tolist(), data.xquat[body].tolist())
               for robot in sim.robots for body in robot.shown_parts]
-    message = {"type": "snapshot", "time": sim.time, "robots": robots, "objects": objects, "bodies": bodies}
-    if sim.scene.settings.vis:
-        message["rays"] = sensor_rays(sim.robots)
+    return snapshot_of(sim.time, robots, objects, bodies, sensor_rays(sim.robots) if sim.scene.settings.vis else None)
+
+
+def snapshot_of(time: float, robots: list[dict], objects: list[dict], bodies: list[dict],
+                rays: list[dict] | None = None) -> dict:
+    """A `snapshot` from its poses (also a recording's, eyesim/record/recording.py); rays only with VIS."""
+    message = {"type": "snapshot", "time": time, "robots": robots, "objects": objects, "bodies": bodies}
+    if rays is not None:
+        message["rays"] = rays
     return message
+
+
+def pose(thing_id: int, pos: list[float], quat: list[float], battery_volts: float | None = None) -> dict:
+    entry = {"id": thing_id, "pos": pos, "quat": quat}
+    if battery_volts is not None:
+        entry["battery"] = round(battery_volts, 3)
+    return entry
 
 
 def sensor_rays(robots) -> list[dict]:
