@@ -86,3 +86,25 @@ def test_every_command_of_the_schema_is_carried_out():
 
         assert run_async(send_all()) == []
         assert {command["type"] for command in commands} == set(COMMANDS)
+
+
+def test_the_schema_ranges_are_the_robots_own():
+    """The ranges the schema checks are the components' limits, not a second copy that could drift."""
+    from eyesim.robot.components.analog_io import CHANNELS, MAX_VALUE
+    from eyesim.robot.components.digital_io import LINES
+    from eyesim.robot.components.keys import KEYS
+    from eyesim.robot.components.lcd import HEIGHT, WIDTH
+    from eyesim.robot.components.serial_ports import INTERFACES
+
+    defs = SCHEMA["$defs"]
+
+    def span(command: str, field: str) -> tuple:
+        schema = defs[command]["properties"][field]
+        return schema["minimum"], schema["maximum"]
+
+    assert defs["KeyCommand"]["properties"]["key"]["enum"] == list(KEYS)
+    assert span("TouchCommand", "x") == (0, WIDTH - 1) and span("TouchCommand", "y") == (0, HEIGHT - 1)
+    assert span("DigitalCommand", "line") == (1, LINES)
+    assert span("AnalogCommand", "channel") == (1, CHANNELS) and span("AnalogCommand", "value") == (0, MAX_VALUE)
+    assert span("SerialCommand", "interface") == (INTERFACES.start, INTERFACES.stop - 1)
+    assert defs["SerialCommand"]["properties"]["text"]["maxLength"] == 50_000  # the panel's PANEL_CHARACTERS
