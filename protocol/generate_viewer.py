@@ -268,15 +268,16 @@ def _js(value) -> str:
     return "undefined" if value is None else json.dumps(value)
 
 
-def python_source(schema: dict) -> str:
-    text = json.dumps(schema, indent=1, ensure_ascii=False)
+def python_source(text: str) -> str:
+    if "\'\'\'" in text:  # the file goes into a raw string as it is
+        raise SystemExit(f"{SCHEMA}: three single quotes in a row cannot be copied into viewer_schema.py")
     return (f'"""The viewer channel\'s JSON Schema. {BANNER}"""\n\nimport json\n\n'
             f"SCHEMA = json.loads(r'''{text}''')\n")
 
 
 def outputs() -> dict[Path, str]:
-    schema = json.loads(SCHEMA.read_text())
-    return {TS_OUT: Generator(schema).typescript(), PY_OUT: python_source(schema)}
+    text = SCHEMA.read_text()
+    return {TS_OUT: Generator(json.loads(text)).typescript(), PY_OUT: python_source(text)}
 
 
 def main() -> int:

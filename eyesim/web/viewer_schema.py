@@ -3,1698 +3,678 @@
 import json
 
 SCHEMA = json.loads(r'''{
- "$schema": "https://json-schema.org/draft/2020-12/schema",
- "$id": "https://eyesim.example/viewer.schema.json",
- "title": "EyeSim viewer channel",
- "description": "Every message between the simulator and the browser viewer (docs/viewer-channel.md). Edit this file, then run `make protocol`: it generates web/src/generated/viewer_protocol.ts.",
- "$defs": {
-  "ServerMessage": {
-   "description": "A message from the simulator to the browser (WebSocket).",
-   "oneOf": [
-    {
-     "$ref": "#/$defs/SceneMessage"
+  "$schema": "https://json-schema.org/draft/2020-12/schema",
+  "$id": "https://eyesim.example/viewer.schema.json",
+  "title": "EyeSim viewer channel",
+  "description": "Every message between the simulator and the browser viewer (docs/viewer-channel.md). Edit this file, then run `make protocol`: it generates web/src/generated/viewer_protocol.ts.",
+  "$defs": {
+    "ServerMessage": {
+      "description": "A message from the simulator to the browser (WebSocket).",
+      "oneOf": [
+        {"$ref": "#/$defs/SceneMessage"},
+        {"$ref": "#/$defs/SnapshotMessage"},
+        {"$ref": "#/$defs/CameraMessage"},
+        {"$ref": "#/$defs/LcdMessage"},
+        {"$ref": "#/$defs/MenuMessage"},
+        {"$ref": "#/$defs/ConsoleMessage"},
+        {"$ref": "#/$defs/ProgramMessage"},
+        {"$ref": "#/$defs/AudioMessage"},
+        {"$ref": "#/$defs/SerialMessage"},
+        {"$ref": "#/$defs/IoMessage"},
+        {"$ref": "#/$defs/StatusMessage"},
+        {"$ref": "#/$defs/TimelineMessage"},
+        {"$ref": "#/$defs/FrameMessage"},
+        {"$ref": "#/$defs/SignalsMessage"},
+        {"$ref": "#/$defs/SeriesMessage"},
+        {"$ref": "#/$defs/PathsMessage"},
+        {"$ref": "#/$defs/ErrorMessage"}
+      ]
     },
-    {
-     "$ref": "#/$defs/SnapshotMessage"
+    "BrowserCommand": {
+      "description": "A command from the browser to the simulator (WebSocket).",
+      "oneOf": [
+        {"$ref": "#/$defs/KeyCommand"},
+        {"$ref": "#/$defs/PauseCommand"},
+        {"$ref": "#/$defs/ResumeCommand"},
+        {"$ref": "#/$defs/SpeedCommand"},
+        {"$ref": "#/$defs/ResetCommand"},
+        {"$ref": "#/$defs/TouchCommand"},
+        {"$ref": "#/$defs/IrtvCommand"},
+        {"$ref": "#/$defs/SerialCommand"},
+        {"$ref": "#/$defs/DigitalCommand"},
+        {"$ref": "#/$defs/AnalogCommand"},
+        {"$ref": "#/$defs/PlaceCommand"},
+        {"$ref": "#/$defs/SeekCommand"},
+        {"$ref": "#/$defs/LiveCommand"},
+        {"$ref": "#/$defs/SignalsCommand"},
+        {"$ref": "#/$defs/SeriesCommand"},
+        {"$ref": "#/$defs/PathsCommand"}
+      ]
     },
-    {
-     "$ref": "#/$defs/CameraMessage"
+    "FrameContent": {
+      "description": "A message a frame may carry.",
+      "oneOf": [
+        {"$ref": "#/$defs/SnapshotMessage"},
+        {"$ref": "#/$defs/LcdMessage"},
+        {"$ref": "#/$defs/CameraMessage"},
+        {"$ref": "#/$defs/MenuMessage"},
+        {"$ref": "#/$defs/ProgramMessage"},
+        {"$ref": "#/$defs/ConsoleMessage"},
+        {"$ref": "#/$defs/SerialMessage"},
+        {"$ref": "#/$defs/IoMessage"}
+      ]
     },
-    {
-     "$ref": "#/$defs/LcdMessage"
+    "MeshBody": {
+      "type": "object",
+      "description": "GET /scene/mesh/{robot|object}/ID: triangles in the thing's own frame (m), one part per colour.",
+      "properties": {"parts": {"type": "array", "items": {"$ref": "#/$defs/MeshPart"}}},
+      "required": ["parts"],
+      "additionalProperties": false
     },
-    {
-     "$ref": "#/$defs/MenuMessage"
-    },
-    {
-     "$ref": "#/$defs/ConsoleMessage"
-    },
-    {
-     "$ref": "#/$defs/ProgramMessage"
-    },
-    {
-     "$ref": "#/$defs/AudioMessage"
-    },
-    {
-     "$ref": "#/$defs/SerialMessage"
-    },
-    {
-     "$ref": "#/$defs/IoMessage"
-    },
-    {
-     "$ref": "#/$defs/StatusMessage"
-    },
-    {
-     "$ref": "#/$defs/TimelineMessage"
-    },
-    {
-     "$ref": "#/$defs/FrameMessage"
-    },
-    {
-     "$ref": "#/$defs/SignalsMessage"
-    },
-    {
-     "$ref": "#/$defs/SeriesMessage"
-    },
-    {
-     "$ref": "#/$defs/PathsMessage"
-    },
-    {
-     "$ref": "#/$defs/ErrorMessage"
-    }
-   ]
-  },
-  "BrowserCommand": {
-   "description": "A command from the browser to the simulator (WebSocket).",
-   "oneOf": [
-    {
-     "$ref": "#/$defs/KeyCommand"
-    },
-    {
-     "$ref": "#/$defs/PauseCommand"
-    },
-    {
-     "$ref": "#/$defs/ResumeCommand"
-    },
-    {
-     "$ref": "#/$defs/SpeedCommand"
-    },
-    {
-     "$ref": "#/$defs/ResetCommand"
-    },
-    {
-     "$ref": "#/$defs/TouchCommand"
-    },
-    {
-     "$ref": "#/$defs/IrtvCommand"
-    },
-    {
-     "$ref": "#/$defs/SerialCommand"
-    },
-    {
-     "$ref": "#/$defs/DigitalCommand"
-    },
-    {
-     "$ref": "#/$defs/AnalogCommand"
-    },
-    {
-     "$ref": "#/$defs/PlaceCommand"
-    },
-    {
-     "$ref": "#/$defs/SeekCommand"
-    },
-    {
-     "$ref": "#/$defs/LiveCommand"
-    },
-    {
-     "$ref": "#/$defs/SignalsCommand"
-    },
-    {
-     "$ref": "#/$defs/SeriesCommand"
-    },
-    {
-     "$ref": "#/$defs/PathsCommand"
-    }
-   ]
-  },
-  "FrameContent": {
-   "description": "A message a frame may carry.",
-   "oneOf": [
-    {
-     "$ref": "#/$defs/SnapshotMessage"
-    },
-    {
-     "$ref": "#/$defs/LcdMessage"
-    },
-    {
-     "$ref": "#/$defs/CameraMessage"
-    },
-    {
-     "$ref": "#/$defs/MenuMessage"
-    },
-    {
-     "$ref": "#/$defs/ProgramMessage"
-    },
-    {
-     "$ref": "#/$defs/ConsoleMessage"
-    },
-    {
-     "$ref": "#/$defs/SerialMessage"
-    },
-    {
-     "$ref": "#/$defs/IoMessage"
-    }
-   ]
-  },
-  "MeshBody": {
-   "type": "object",
-   "description": "GET /scene/mesh/{robot|object}/ID: triangles in the thing's own frame (m), one part per colour.",
-   "properties": {
-    "parts": {
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/MeshPart"
-     }
-    }
-   },
-   "required": [
-    "parts"
-   ],
-   "additionalProperties": false
-  },
-  "SceneMessage": {
-   "type": "object",
-   "description": "The world to draw: sent first on connect and after a reset or load.",
-   "properties": {
-    "type": {
-     "const": "scene"
-    },
-    "floor": {
-     "$ref": "#/$defs/Floor"
-    },
-    "walls": {
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/Wall"
-     }
-    },
-    "robots": {
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/RobotInfo"
-     }
-    },
-    "objects": {
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/ObjectInfo"
-     },
-     "default": []
-    },
-    "markers": {
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/Marker"
-     },
-     "default": []
-    },
-    "bodies": {
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/RobotBody"
-     },
-     "default": []
-    },
-    "water": {
-     "oneOf": [
-      {
-       "$ref": "#/$defs/Water"
+    "SceneMessage": {
+      "type": "object",
+      "description": "The world to draw: sent first on connect and after a reset or load.",
+      "properties": {
+        "type": {"const": "scene"},
+        "floor": {"$ref": "#/$defs/Floor"},
+        "walls": {"type": "array", "items": {"$ref": "#/$defs/Wall"}},
+        "robots": {"type": "array", "items": {"$ref": "#/$defs/RobotInfo"}},
+        "objects": {"type": "array", "items": {"$ref": "#/$defs/ObjectInfo"}, "default": []},
+        "markers": {"type": "array", "items": {"$ref": "#/$defs/Marker"}, "default": []},
+        "bodies": {"type": "array", "items": {"$ref": "#/$defs/RobotBody"}, "default": []},
+        "water": {"oneOf": [{"$ref": "#/$defs/Water"}, {"type": "null"}], "default": null},
+        "settings": {"$ref": "#/$defs/SceneSettings", "default": {}},
+        "warnings": {
+          "description": "what the scene loader found wrong (the scene still loaded)",
+          "type": "array",
+          "items": {"$ref": "#/$defs/SceneWarning"},
+          "default": []
+        }
       },
-      {
-       "type": "null"
-      }
-     ],
-     "default": null
+      "required": ["type", "floor", "walls", "robots"],
+      "additionalProperties": false
     },
-    "settings": {
-     "$ref": "#/$defs/SceneSettings",
-     "default": {}
-    },
-    "warnings": {
-     "description": "what the scene loader found wrong (the scene still loaded)",
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/SceneWarning"
-     },
-     "default": []
-    }
-   },
-   "required": [
-    "type",
-    "floor",
-    "walls",
-    "robots"
-   ],
-   "additionalProperties": false
-  },
-  "SnapshotMessage": {
-   "type": "object",
-   "description": "Where everything is now (only the latest matters).",
-   "properties": {
-    "type": {
-     "const": "snapshot"
-    },
-    "time": {
-     "type": "number"
-    },
-    "robots": {
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/BodyPose"
-     }
-    },
-    "objects": {
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/BodyPose"
-     },
-     "default": []
-    },
-    "bodies": {
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/BodyPose"
-     },
-     "default": []
-    },
-    "rays": {
-     "description": "with settings VIS: the robots' sensor beams",
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/SensorRays"
-     }
-    }
-   },
-   "required": [
-    "type",
-    "time",
-    "robots"
-   ],
-   "additionalProperties": false
-  },
-  "CameraMessage": {
-   "type": "object",
-   "description": "The last image a robot's program took (JPEG, base64); width x height as taken.",
-   "properties": {
-    "type": {
-     "const": "camera"
-    },
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "width": {
-     "type": "integer",
-     "minimum": 1
-    },
-    "height": {
-     "type": "integer",
-     "minimum": 1
-    },
-    "jpeg": {
-     "type": "string",
-     "pattern": "^[A-Za-z0-9+/]*={0,2}$"
-    }
-   },
-   "required": [
-    "type",
-    "robot",
-    "width",
-    "height",
-    "jpeg"
-   ],
-   "additionalProperties": false
-  },
-  "LcdMessage": {
-   "type": "object",
-   "description": "A robot's 480x320 LCD (PNG, base64).",
-   "properties": {
-    "type": {
-     "const": "lcd"
-    },
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "png": {
-     "type": "string",
-     "pattern": "^[A-Za-z0-9+/]*={0,2}$"
-    }
-   },
-   "required": [
-    "type",
-    "robot",
-    "png"
-   ],
-   "additionalProperties": false
-  },
-  "MenuMessage": {
-   "type": "object",
-   "description": "The soft key labels KEY1..KEY4 and how the LCD shows.",
-   "properties": {
-    "type": {
-     "const": "menu"
-    },
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "labels": {
-     "type": "array",
-     "items": {
-      "type": "string"
-     },
-     "minItems": 4,
-     "maxItems": 4
-    },
-    "visible": {
-     "description": "whether the menu bar shows (LCD_HIDEMENU hides it)",
-     "type": "boolean",
-     "default": true
-    },
-    "rotated": {
-     "description": "LCD_FB_ROTATE: the image is shown turned by 180 degrees",
-     "type": "boolean",
-     "default": false
-    }
-   },
-   "required": [
-    "type",
-    "robot",
-    "labels"
-   ],
-   "additionalProperties": false
-  },
-  "ConsoleMessage": {
-   "type": "object",
-   "description": "A chunk of a program's output (at most its last 50,000 characters).",
-   "properties": {
-    "type": {
-     "const": "console"
-    },
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "stream": {
-     "enum": [
-      "stdout",
-      "stderr"
-     ]
-    },
-    "text": {
-     "type": "string"
-    }
-   },
-   "required": [
-    "type",
-    "robot",
-    "stream",
-    "text"
-   ],
-   "additionalProperties": false
-  },
-  "ProgramMessage": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "program"
-    },
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "event": {
-     "enum": [
-      "started",
-      "exited"
-     ]
-    },
-    "name": {
-     "type": "string"
-    },
-    "exit_code": {
-     "type": [
-      "integer",
-      "null"
-     ],
-     "default": null
-    }
-   },
-   "required": [
-    "type",
-    "robot",
-    "event",
-    "name"
-   ],
-   "additionalProperties": false
-  },
-  "AudioMessage": {
-   "type": "object",
-   "description": "A beep (frequency), or a WAV/MP3 file (base64 data) the robot plays.",
-   "properties": {
-    "type": {
-     "const": "audio"
-    },
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "sound": {
-     "enum": [
-      "beep",
-      "file"
-     ]
-    },
-    "duration": {
-     "type": "number",
-     "minimum": 0
-    },
-    "frequency": {
-     "type": "number",
-     "exclusiveMinimum": 0
-    },
-    "name": {
-     "type": "string"
-    },
-    "format": {
-     "enum": [
-      "wav",
-      "mp3"
-     ]
-    },
-    "data": {
-     "type": "string",
-     "pattern": "^[A-Za-z0-9+/]*={0,2}$"
-    }
-   },
-   "required": [
-    "type",
-    "robot",
-    "sound",
-    "duration"
-   ],
-   "additionalProperties": false
-  },
-  "SerialMessage": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "serial"
-    },
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "interface": {
-     "type": "integer",
-     "minimum": 0,
-     "maximum": 20
-    },
-    "text": {
-     "description": "bytes, one character per byte (U+0000..U+00FF)",
-     "type": "string"
-    }
-   },
-   "required": [
-    "type",
-    "robot",
-    "interface",
-    "text"
-   ],
-   "additionalProperties": false
-  },
-  "IoMessage": {
-   "type": "object",
-   "description": "A robot's 16 digital lines and 8 analog channels.",
-   "properties": {
-    "type": {
-     "const": "io"
-    },
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "digital": {
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/DigitalLine"
-     },
-     "maxItems": 16
-    },
-    "analog": {
-     "type": "array",
-     "items": {
-      "type": "number",
-      "minimum": 0,
-      "maximum": 1023
-     },
-     "maxItems": 8
-    }
-   },
-   "required": [
-    "type",
-    "robot",
-    "digital",
-    "analog"
-   ],
-   "additionalProperties": false
-  },
-  "StatusMessage": {
-   "type": "object",
-   "description": "Simulation time, pause, speed and clock; with every snapshot.",
-   "properties": {
-    "type": {
-     "const": "status"
-    },
-    "time": {
-     "type": "number"
-    },
-    "paused": {
-     "type": "boolean"
-    },
-    "speed": {
-     "oneOf": [
-      {
-       "type": "number",
-       "exclusiveMinimum": 0
+    "SnapshotMessage": {
+      "type": "object",
+      "description": "Where everything is now (only the latest matters).",
+      "properties": {
+        "type": {"const": "snapshot"},
+        "time": {"type": "number"},
+        "robots": {"type": "array", "items": {"$ref": "#/$defs/BodyPose"}},
+        "objects": {"type": "array", "items": {"$ref": "#/$defs/BodyPose"}, "default": []},
+        "bodies": {"type": "array", "items": {"$ref": "#/$defs/BodyPose"}, "default": []},
+        "rays": {
+          "description": "with settings VIS: the robots' sensor beams",
+          "type": "array",
+          "items": {"$ref": "#/$defs/SensorRays"}
+        }
       },
-      {
-       "const": "max"
-      }
-     ]
+      "required": ["type", "time", "robots"],
+      "additionalProperties": false
     },
-    "clock": {
-     "enum": [
-      "realtime",
-      "deterministic"
-     ]
-    },
-    "real_time_factor": {
-     "type": [
-      "number",
-      "null"
-     ]
-    },
-    "history_start": {
-     "description": "the oldest time the viewer can go back to",
-     "type": "number"
-    }
-   },
-   "required": [
-    "type",
-    "time",
-    "paused",
-    "speed",
-    "clock",
-    "real_time_factor"
-   ],
-   "additionalProperties": false
-  },
-  "TimelineMessage": {
-   "type": "object",
-   "description": "What the timeline scrubs: the live run or a recording.",
-   "properties": {
-    "type": {
-     "const": "timeline"
-    },
-    "mode": {
-     "enum": [
-      "live",
-      "replay"
-     ]
-    },
-    "name": {
-     "description": "the recording's file name (replay)",
-     "type": "string"
-    },
-    "start": {
-     "type": "number"
-    },
-    "end": {
-     "type": "number"
-    }
-   },
-   "required": [
-    "type",
-    "mode"
-   ],
-   "additionalProperties": false
-  },
-  "FrameMessage": {
-   "type": "object",
-   "description": "The state at time: ordinary messages, after emptying the panels of the robots in clear.",
-   "properties": {
-    "type": {
-     "const": "frame"
-    },
-    "time": {
-     "type": "number"
-    },
-    "start": {
-     "type": "number"
-    },
-    "end": {
-     "type": "number"
-    },
-    "clear": {
-     "type": "array",
-     "items": {
-      "description": "robot id (1..)",
-      "type": "integer",
-      "minimum": 1,
-      "maximum": 1000000
-     },
-     "default": []
-    },
-    "messages": {
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/FrameContent"
-     }
-    }
-   },
-   "required": [
-    "type",
-    "time",
-    "messages"
-   ],
-   "additionalProperties": false
-  },
-  "SignalsMessage": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "signals"
-    },
-    "signals": {
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/SignalInfo"
-     }
-    }
-   },
-   "required": [
-    "type",
-    "signals"
-   ],
-   "additionalProperties": false
-  },
-  "SeriesMessage": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "series"
-    },
-    "series": {
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/Series"
-     }
-    }
-   },
-   "required": [
-    "type",
-    "series"
-   ],
-   "additionalProperties": false
-  },
-  "PathsMessage": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "paths"
-    },
-    "robots": {
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/RobotPath"
-     }
-    }
-   },
-   "required": [
-    "type",
-    "robots"
-   ],
-   "additionalProperties": false
-  },
-  "ErrorMessage": {
-   "type": "object",
-   "description": "The answer to a command the server did not take.",
-   "properties": {
-    "type": {
-     "const": "error"
-    },
-    "message": {
-     "type": "string"
-    }
-   },
-   "required": [
-    "type",
-    "message"
-   ],
-   "additionalProperties": false
-  },
-  "KeyCommand": {
-   "type": "object",
-   "description": "A soft-key press.",
-   "properties": {
-    "type": {
-     "const": "key"
-    },
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "key": {
-     "description": "KEY1..KEY4",
-     "enum": [
-      1,
-      2,
-      4,
-      8
-     ]
-    }
-   },
-   "required": [
-    "type",
-    "robot",
-    "key"
-   ],
-   "additionalProperties": false
-  },
-  "PauseCommand": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "pause"
-    }
-   },
-   "required": [
-    "type"
-   ],
-   "additionalProperties": false
-  },
-  "ResumeCommand": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "resume"
-    }
-   },
-   "required": [
-    "type"
-   ],
-   "additionalProperties": false
-  },
-  "SpeedCommand": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "speed"
-    },
-    "value": {
-     "description": "a realtime factor, or \"max\"",
-     "oneOf": [
-      {
-       "type": "number",
-       "minimum": 0.01,
-       "maximum": 1000
+    "CameraMessage": {
+      "type": "object",
+      "description": "The last image a robot's program took (JPEG, base64); width x height as taken.",
+      "properties": {
+        "type": {"const": "camera"},
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "width": {"type": "integer", "minimum": 1},
+        "height": {"type": "integer", "minimum": 1},
+        "jpeg": {"type": "string", "pattern": "^[A-Za-z0-9+/]*={0,2}$"}
       },
-      {
-       "const": "max"
-      }
-     ]
+      "required": ["type", "robot", "width", "height", "jpeg"],
+      "additionalProperties": false
+    },
+    "LcdMessage": {
+      "type": "object",
+      "description": "A robot's 480x320 LCD (PNG, base64).",
+      "properties": {
+        "type": {"const": "lcd"},
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "png": {"type": "string", "pattern": "^[A-Za-z0-9+/]*={0,2}$"}
+      },
+      "required": ["type", "robot", "png"],
+      "additionalProperties": false
+    },
+    "MenuMessage": {
+      "type": "object",
+      "description": "The soft key labels KEY1..KEY4 and how the LCD shows.",
+      "properties": {
+        "type": {"const": "menu"},
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "labels": {"type": "array", "items": {"type": "string"}, "minItems": 4, "maxItems": 4},
+        "visible": {
+          "description": "whether the menu bar shows (LCD_HIDEMENU hides it)",
+          "type": "boolean",
+          "default": true
+        },
+        "rotated": {
+          "description": "LCD_FB_ROTATE: the image is shown turned by 180 degrees",
+          "type": "boolean",
+          "default": false
+        }
+      },
+      "required": ["type", "robot", "labels"],
+      "additionalProperties": false
+    },
+    "ConsoleMessage": {
+      "type": "object",
+      "description": "A chunk of a program's output (at most its last 50,000 characters).",
+      "properties": {
+        "type": {"const": "console"},
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "stream": {"enum": ["stdout", "stderr"]},
+        "text": {"type": "string"}
+      },
+      "required": ["type", "robot", "stream", "text"],
+      "additionalProperties": false
+    },
+    "ProgramMessage": {
+      "type": "object",
+      "properties": {
+        "type": {"const": "program"},
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "event": {"enum": ["started", "exited"]},
+        "name": {"type": "string"},
+        "exit_code": {"type": ["integer", "null"], "default": null}
+      },
+      "required": ["type", "robot", "event", "name"],
+      "additionalProperties": false
+    },
+    "AudioMessage": {
+      "type": "object",
+      "description": "A beep (frequency), or a WAV/MP3 file (base64 data) the robot plays.",
+      "properties": {
+        "type": {"const": "audio"},
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "sound": {"enum": ["beep", "file"]},
+        "duration": {"type": "number", "minimum": 0},
+        "frequency": {"type": "number", "exclusiveMinimum": 0},
+        "name": {"type": "string"},
+        "format": {"enum": ["wav", "mp3"]},
+        "data": {"type": "string", "pattern": "^[A-Za-z0-9+/]*={0,2}$"}
+      },
+      "required": ["type", "robot", "sound", "duration"],
+      "additionalProperties": false
+    },
+    "SerialMessage": {
+      "type": "object",
+      "properties": {
+        "type": {"const": "serial"},
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "interface": {"type": "integer", "minimum": 0, "maximum": 20},
+        "text": {"description": "bytes, one character per byte (U+0000..U+00FF)", "type": "string"}
+      },
+      "required": ["type", "robot", "interface", "text"],
+      "additionalProperties": false
+    },
+    "IoMessage": {
+      "type": "object",
+      "description": "A robot's 16 digital lines and 8 analog channels.",
+      "properties": {
+        "type": {"const": "io"},
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "digital": {"type": "array", "items": {"$ref": "#/$defs/DigitalLine"}, "maxItems": 16},
+        "analog": {"type": "array", "items": {"type": "number", "minimum": 0, "maximum": 1023}, "maxItems": 8}
+      },
+      "required": ["type", "robot", "digital", "analog"],
+      "additionalProperties": false
+    },
+    "StatusMessage": {
+      "type": "object",
+      "description": "Simulation time, pause, speed and clock; with every snapshot.",
+      "properties": {
+        "type": {"const": "status"},
+        "time": {"type": "number"},
+        "paused": {"type": "boolean"},
+        "speed": {"oneOf": [{"type": "number", "exclusiveMinimum": 0}, {"const": "max"}]},
+        "clock": {"enum": ["realtime", "deterministic"]},
+        "real_time_factor": {"type": ["number", "null"]},
+        "history_start": {"description": "the oldest time the viewer can go back to", "type": "number"}
+      },
+      "required": ["type", "time", "paused", "speed", "clock", "real_time_factor"],
+      "additionalProperties": false
+    },
+    "TimelineMessage": {
+      "type": "object",
+      "description": "What the timeline scrubs: the live run or a recording.",
+      "properties": {
+        "type": {"const": "timeline"},
+        "mode": {"enum": ["live", "replay"]},
+        "name": {"description": "the recording's file name (replay)", "type": "string"},
+        "start": {"type": "number"},
+        "end": {"type": "number"}
+      },
+      "required": ["type", "mode"],
+      "additionalProperties": false
+    },
+    "FrameMessage": {
+      "type": "object",
+      "description": "The state at time: ordinary messages, after emptying the panels of the robots in clear.",
+      "properties": {
+        "type": {"const": "frame"},
+        "time": {"type": "number"},
+        "start": {"type": "number"},
+        "end": {"type": "number"},
+        "clear": {
+          "type": "array",
+          "items": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+          "default": []
+        },
+        "messages": {"type": "array", "items": {"$ref": "#/$defs/FrameContent"}}
+      },
+      "required": ["type", "time", "messages"],
+      "additionalProperties": false
+    },
+    "SignalsMessage": {
+      "type": "object",
+      "properties": {"type": {"const": "signals"}, "signals": {"type": "array", "items": {"$ref": "#/$defs/SignalInfo"}}},
+      "required": ["type", "signals"],
+      "additionalProperties": false
+    },
+    "SeriesMessage": {
+      "type": "object",
+      "properties": {"type": {"const": "series"}, "series": {"type": "array", "items": {"$ref": "#/$defs/Series"}}},
+      "required": ["type", "series"],
+      "additionalProperties": false
+    },
+    "PathsMessage": {
+      "type": "object",
+      "properties": {"type": {"const": "paths"}, "robots": {"type": "array", "items": {"$ref": "#/$defs/RobotPath"}}},
+      "required": ["type", "robots"],
+      "additionalProperties": false
+    },
+    "ErrorMessage": {
+      "type": "object",
+      "description": "The answer to a command the server did not take.",
+      "properties": {"type": {"const": "error"}, "message": {"type": "string"}},
+      "required": ["type", "message"],
+      "additionalProperties": false
+    },
+    "KeyCommand": {
+      "type": "object",
+      "description": "A soft-key press.",
+      "properties": {
+        "type": {"const": "key"},
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "key": {"description": "KEY1..KEY4", "enum": [1, 2, 4, 8]}
+      },
+      "required": ["type", "robot", "key"],
+      "additionalProperties": false
+    },
+    "PauseCommand": {
+      "type": "object",
+      "properties": {"type": {"const": "pause"}},
+      "required": ["type"],
+      "additionalProperties": false
+    },
+    "ResumeCommand": {
+      "type": "object",
+      "properties": {"type": {"const": "resume"}},
+      "required": ["type"],
+      "additionalProperties": false
+    },
+    "SpeedCommand": {
+      "type": "object",
+      "properties": {
+        "type": {"const": "speed"},
+        "value": {
+          "description": "a realtime factor, or \"max\"",
+          "oneOf": [{"type": "number", "minimum": 0.01, "maximum": 1000}, {"const": "max"}]
+        }
+      },
+      "required": ["type", "value"],
+      "additionalProperties": false
+    },
+    "ResetCommand": {
+      "type": "object",
+      "properties": {"type": {"const": "reset"}},
+      "required": ["type"],
+      "additionalProperties": false
+    },
+    "TouchCommand": {
+      "type": "object",
+      "properties": {
+        "type": {"const": "touch"},
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "x": {"type": "integer", "minimum": 0, "maximum": 479},
+        "y": {"type": "integer", "minimum": 0, "maximum": 319}
+      },
+      "required": ["type", "robot", "x", "y"],
+      "additionalProperties": false
+    },
+    "IrtvCommand": {
+      "type": "object",
+      "properties": {
+        "type": {"const": "irtv"},
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "code": {
+          "description": "a remote button name or its IRTV code character",
+          "type": "string",
+          "minLength": 1,
+          "maxLength": 16
+        }
+      },
+      "required": ["type", "robot", "code"],
+      "additionalProperties": false
+    },
+    "SerialCommand": {
+      "type": "object",
+      "properties": {
+        "type": {"const": "serial"},
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "interface": {"type": "integer", "minimum": 0, "maximum": 20},
+        "text": {
+          "description": "bytes as characters U+0000..U+00FF",
+          "type": "string",
+          "maxLength": 50000,
+          "pattern": "^[\\u0000-\\u00ff]*$"
+        }
+      },
+      "required": ["type", "robot", "interface", "text"],
+      "additionalProperties": false
+    },
+    "DigitalCommand": {
+      "type": "object",
+      "properties": {
+        "type": {"const": "digital"},
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "line": {"type": "integer", "minimum": 1, "maximum": 16},
+        "level": {"description": "0, 1, or null to let go", "enum": [0, 1, null]}
+      },
+      "required": ["type", "robot", "line", "level"],
+      "additionalProperties": false
+    },
+    "AnalogCommand": {
+      "type": "object",
+      "properties": {
+        "type": {"const": "analog"},
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "channel": {"type": "integer", "minimum": 1, "maximum": 8},
+        "value": {"type": "integer", "minimum": 0, "maximum": 1023}
+      },
+      "required": ["type", "robot", "channel", "value"],
+      "additionalProperties": false
+    },
+    "PlaceCommand": {
+      "type": "object",
+      "description": "Moves a robot or an object (exactly one of the two ids).",
+      "properties": {
+        "type": {"const": "place"},
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "object": {"description": "object id", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "x": {"description": "m, on the floor (0..width)", "type": "number"},
+        "y": {"description": "m, on the floor (0..height)", "type": "number"},
+        "phi": {"description": "rad", "type": "number", "minimum": -1000000.0, "maximum": 1000000.0}
+      },
+      "required": ["type", "x", "y", "phi"],
+      "additionalProperties": false,
+      "oneOf": [{"required": ["robot"]}, {"required": ["object"]}],
+      "x-oneOf-message": "give either 'robot' or 'object' (an id), not both"
+    },
+    "SeekCommand": {
+      "type": "object",
+      "properties": {"type": {"const": "seek"}, "time": {"description": "s; clamped to the timeline", "type": "number"}},
+      "required": ["type", "time"],
+      "additionalProperties": false
+    },
+    "LiveCommand": {
+      "type": "object",
+      "properties": {"type": {"const": "live"}},
+      "required": ["type"],
+      "additionalProperties": false
+    },
+    "SignalsCommand": {
+      "type": "object",
+      "properties": {"type": {"const": "signals"}},
+      "required": ["type"],
+      "additionalProperties": false
+    },
+    "SeriesCommand": {
+      "type": "object",
+      "properties": {
+        "type": {"const": "series"},
+        "ids": {"type": "array", "items": {"type": "string", "maxLength": 200}, "maxItems": 32}
+      },
+      "required": ["type", "ids"],
+      "additionalProperties": false
+    },
+    "PathsCommand": {
+      "type": "object",
+      "properties": {"type": {"const": "paths"}},
+      "required": ["type"],
+      "additionalProperties": false
+    },
+    "Vec3": {
+      "description": "[x, y, z] in metres",
+      "type": "array",
+      "items": {"type": "number"},
+      "minItems": 3,
+      "maxItems": 3
+    },
+    "Quat": {
+      "description": "a rotation as [w, x, y, z]",
+      "type": "array",
+      "items": {"type": "number"},
+      "minItems": 4,
+      "maxItems": 4
+    },
+    "Rgb": {
+      "description": "colour channels 0..255",
+      "type": "array",
+      "items": {"type": "number", "minimum": 0, "maximum": 255},
+      "minItems": 3,
+      "maxItems": 3
+    },
+    "Rgba": {
+      "description": "colour and alpha, 0..255",
+      "type": "array",
+      "items": {"type": "number", "minimum": 0, "maximum": 255},
+      "minItems": 4,
+      "maxItems": 4
+    },
+    "Shape": {"enum": ["box", "sphere", "cylinder", "capsule"]},
+    "Floor": {
+      "type": "object",
+      "properties": {
+        "width": {"type": "number", "exclusiveMinimum": 0},
+        "height": {"type": "number", "exclusiveMinimum": 0},
+        "texture": {"description": "URL of the floor image, or null", "type": ["string", "null"]}
+      },
+      "required": ["width", "height", "texture"],
+      "additionalProperties": false
+    },
+    "Wall": {
+      "type": "object",
+      "properties": {
+        "x1": {"type": "number"},
+        "y1": {"type": "number"},
+        "x2": {"type": "number"},
+        "y2": {"type": "number"},
+        "thickness": {"type": "number", "exclusiveMinimum": 0},
+        "height": {"type": "number", "exclusiveMinimum": 0},
+        "color": {"$ref": "#/$defs/Rgb"}
+      },
+      "required": ["x1", "y1", "x2", "y2", "thickness", "height", "color"],
+      "additionalProperties": false
+    },
+    "RobotInfo": {
+      "type": "object",
+      "properties": {
+        "id": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "name": {"type": "string"},
+        "type": {"type": "string"},
+        "size": {"description": "[length, width, height] (m)", "$ref": "#/$defs/Vec3"},
+        "color": {"$ref": "#/$defs/Rgb"},
+        "wheel_diameter": {
+          "description": "0: no two drive wheels to draw (other drives' wheels are bodies)",
+          "type": "number",
+          "minimum": 0
+        },
+        "track": {"type": "number", "minimum": 0},
+        "mesh": {"description": "URL of its .obj model (MeshBody), drawn instead of the box", "type": "string"}
+      },
+      "required": ["id", "name", "type", "size", "color", "wheel_diameter", "track"],
+      "additionalProperties": false
+    },
+    "Part": {
+      "type": "object",
+      "description": "One shape of an object or robot body in that thing's frame; cylinders and capsules stand along z.",
+      "properties": {
+        "shape": {"$ref": "#/$defs/Shape"},
+        "size": {
+          "description": "[sx, sy, sz] box, [r] sphere, [r, h] cylinder or capsule",
+          "type": "array",
+          "items": {"type": "number", "exclusiveMinimum": 0},
+          "minItems": 1,
+          "maxItems": 3
+        },
+        "pos": {"$ref": "#/$defs/Vec3"},
+        "quat": {"$ref": "#/$defs/Quat"},
+        "color": {"$ref": "#/$defs/Rgb"}
+      },
+      "required": ["shape", "size", "pos", "quat"],
+      "additionalProperties": false
+    },
+    "ObjectInfo": {
+      "type": "object",
+      "properties": {
+        "id": {"type": "integer", "minimum": 1},
+        "type": {"type": "string"},
+        "shape": {"$ref": "#/$defs/Shape"},
+        "size": {"type": "array", "items": {"type": "number", "exclusiveMinimum": 0}, "minItems": 1, "maxItems": 3},
+        "color": {"$ref": "#/$defs/Rgb"},
+        "parts": {
+          "description": "the shapes it is drawn from, in its own frame",
+          "type": "array",
+          "items": {"$ref": "#/$defs/Part"},
+          "default": []
+        },
+        "mesh": {"description": "URL of its .obj model (MeshBody), drawn instead of parts", "type": "string"}
+      },
+      "required": ["id", "type", "shape", "size", "color"],
+      "additionalProperties": false
+    },
+    "RobotBody": {
+      "type": "object",
+      "description": "A moving part of a robot (arm link, finger, steered wheel), posed by its own snapshots.",
+      "properties": {
+        "id": {"type": "integer"},
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "parts": {"type": "array", "items": {"$ref": "#/$defs/Part"}}
+      },
+      "required": ["id", "robot", "parts"],
+      "additionalProperties": false
+    },
+    "Water": {
+      "type": "object",
+      "description": "Water from the floor up to surface (m).",
+      "properties": {"surface": {"type": "number", "exclusiveMinimum": 0}},
+      "required": ["surface"],
+      "additionalProperties": false
+    },
+    "Marker": {
+      "type": "object",
+      "properties": {"x": {"type": "number"}, "y": {"type": "number"}, "color": {"$ref": "#/$defs/Rgba"}},
+      "required": ["x", "y", "color"],
+      "additionalProperties": false
+    },
+    "SceneWarning": {
+      "type": "object",
+      "description": "What the scene loader found wrong (line and column 0 when unknown).",
+      "properties": {
+        "file": {"type": "string"},
+        "line": {"type": "integer", "minimum": 0, "default": 0},
+        "column": {"type": "integer", "minimum": 0, "default": 0},
+        "code": {"type": "string", "default": ""},
+        "message": {"type": "string"}
+      },
+      "required": ["file", "message"],
+      "additionalProperties": false
+    },
+    "SceneSettings": {
+      "type": "object",
+      "description": "Draw sensor rays (VIS) and robot paths (TRACE).",
+      "properties": {"vis": {"type": "boolean", "default": false}, "trace": {"type": "boolean", "default": false}},
+      "required": [],
+      "additionalProperties": false
+    },
+    "BodyPose": {
+      "type": "object",
+      "properties": {
+        "id": {"type": "integer"},
+        "pos": {"$ref": "#/$defs/Vec3"},
+        "quat": {"$ref": "#/$defs/Quat"},
+        "battery": {"description": "a robot's battery voltage (V), when it has a battery", "type": "number"}
+      },
+      "required": ["id", "pos", "quat"],
+      "additionalProperties": false
+    },
+    "SensorRays": {
+      "type": "object",
+      "description": "Beams of one robot's sensor(s) from a common origin.",
+      "properties": {
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "kind": {"enum": ["psd", "lidar"]},
+        "psd": {"description": "a PSD beam's sensor id as PSDGet takes it", "type": "integer"},
+        "origin": {"$ref": "#/$defs/Vec3"},
+        "ends": {"description": "flat [x, y, z, ...] end points (m)", "type": "array", "items": {"type": "number"}}
+      },
+      "required": ["robot", "kind", "origin", "ends"],
+      "additionalProperties": false
+    },
+    "DigitalLine": {
+      "type": "object",
+      "properties": {
+        "direction": {"description": "i input, o output, I pull-up, J pull-down", "enum": ["i", "o", "I", "J"]},
+        "level": {"enum": [0, 1]},
+        "driven": {"description": "the level driven from outside, or null", "enum": [0, 1, null], "default": null}
+      },
+      "required": ["direction", "level"],
+      "additionalProperties": false
+    },
+    "SignalInfo": {
+      "type": "object",
+      "properties": {
+        "id": {"type": "string"},
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "name": {"type": "string"},
+        "label": {"type": "string"},
+        "unit": {"type": "string"}
+      },
+      "required": ["id", "robot", "name", "label", "unit"],
+      "additionalProperties": false
+    },
+    "Series": {
+      "type": "object",
+      "properties": {
+        "id": {"type": "string"},
+        "times": {"type": "array", "items": {"type": "number"}},
+        "values": {"type": "array", "items": {"type": "number"}}
+      },
+      "required": ["id", "times", "values"],
+      "additionalProperties": false
+    },
+    "RobotPath": {
+      "type": "object",
+      "properties": {
+        "id": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "times": {"type": "array", "items": {"type": "number"}},
+        "points": {"description": "flat [x, y, ...] (m)", "type": "array", "items": {"type": "number"}}
+      },
+      "required": ["id", "times", "points"],
+      "additionalProperties": false
+    },
+    "MeshPart": {
+      "type": "object",
+      "properties": {
+        "color": {"$ref": "#/$defs/Rgb"},
+        "vertices": {"type": "array", "items": {"type": "number"}},
+        "triangles": {"type": "array", "items": {"type": "integer", "minimum": 0}}
+      },
+      "required": ["color", "vertices", "triangles"],
+      "additionalProperties": false
     }
-   },
-   "required": [
-    "type",
-    "value"
-   ],
-   "additionalProperties": false
-  },
-  "ResetCommand": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "reset"
-    }
-   },
-   "required": [
-    "type"
-   ],
-   "additionalProperties": false
-  },
-  "TouchCommand": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "touch"
-    },
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "x": {
-     "type": "integer",
-     "minimum": 0,
-     "maximum": 479
-    },
-    "y": {
-     "type": "integer",
-     "minimum": 0,
-     "maximum": 319
-    }
-   },
-   "required": [
-    "type",
-    "robot",
-    "x",
-    "y"
-   ],
-   "additionalProperties": false
-  },
-  "IrtvCommand": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "irtv"
-    },
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "code": {
-     "description": "a remote button name or its IRTV code character",
-     "type": "string",
-     "minLength": 1,
-     "maxLength": 16
-    }
-   },
-   "required": [
-    "type",
-    "robot",
-    "code"
-   ],
-   "additionalProperties": false
-  },
-  "SerialCommand": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "serial"
-    },
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "interface": {
-     "type": "integer",
-     "minimum": 0,
-     "maximum": 20
-    },
-    "text": {
-     "description": "bytes as characters U+0000..U+00FF",
-     "type": "string",
-     "maxLength": 50000,
-     "pattern": "^[\\u0000-\\u00ff]*$"
-    }
-   },
-   "required": [
-    "type",
-    "robot",
-    "interface",
-    "text"
-   ],
-   "additionalProperties": false
-  },
-  "DigitalCommand": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "digital"
-    },
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "line": {
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 16
-    },
-    "level": {
-     "description": "0, 1, or null to let go",
-     "enum": [
-      0,
-      1,
-      null
-     ]
-    }
-   },
-   "required": [
-    "type",
-    "robot",
-    "line",
-    "level"
-   ],
-   "additionalProperties": false
-  },
-  "AnalogCommand": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "analog"
-    },
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "channel": {
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 8
-    },
-    "value": {
-     "type": "integer",
-     "minimum": 0,
-     "maximum": 1023
-    }
-   },
-   "required": [
-    "type",
-    "robot",
-    "channel",
-    "value"
-   ],
-   "additionalProperties": false
-  },
-  "PlaceCommand": {
-   "type": "object",
-   "description": "Moves a robot or an object (exactly one of the two ids).",
-   "properties": {
-    "type": {
-     "const": "place"
-    },
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "object": {
-     "description": "object id",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "x": {
-     "description": "m, on the floor (0..width)",
-     "type": "number"
-    },
-    "y": {
-     "description": "m, on the floor (0..height)",
-     "type": "number"
-    },
-    "phi": {
-     "description": "rad",
-     "type": "number",
-     "minimum": -1000000.0,
-     "maximum": 1000000.0
-    }
-   },
-   "required": [
-    "type",
-    "x",
-    "y",
-    "phi"
-   ],
-   "additionalProperties": false,
-   "oneOf": [
-    {
-     "required": [
-      "robot"
-     ]
-    },
-    {
-     "required": [
-      "object"
-     ]
-    }
-   ],
-   "x-oneOf-message": "give either 'robot' or 'object' (an id), not both"
-  },
-  "SeekCommand": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "seek"
-    },
-    "time": {
-     "description": "s; clamped to the timeline",
-     "type": "number"
-    }
-   },
-   "required": [
-    "type",
-    "time"
-   ],
-   "additionalProperties": false
-  },
-  "LiveCommand": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "live"
-    }
-   },
-   "required": [
-    "type"
-   ],
-   "additionalProperties": false
-  },
-  "SignalsCommand": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "signals"
-    }
-   },
-   "required": [
-    "type"
-   ],
-   "additionalProperties": false
-  },
-  "SeriesCommand": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "series"
-    },
-    "ids": {
-     "type": "array",
-     "items": {
-      "type": "string",
-      "maxLength": 200
-     },
-     "maxItems": 32
-    }
-   },
-   "required": [
-    "type",
-    "ids"
-   ],
-   "additionalProperties": false
-  },
-  "PathsCommand": {
-   "type": "object",
-   "properties": {
-    "type": {
-     "const": "paths"
-    }
-   },
-   "required": [
-    "type"
-   ],
-   "additionalProperties": false
-  },
-  "Vec3": {
-   "description": "[x, y, z] in metres",
-   "type": "array",
-   "items": {
-    "type": "number"
-   },
-   "minItems": 3,
-   "maxItems": 3
-  },
-  "Quat": {
-   "description": "a rotation as [w, x, y, z]",
-   "type": "array",
-   "items": {
-    "type": "number"
-   },
-   "minItems": 4,
-   "maxItems": 4
-  },
-  "Rgb": {
-   "description": "colour channels 0..255",
-   "type": "array",
-   "items": {
-    "type": "number",
-    "minimum": 0,
-    "maximum": 255
-   },
-   "minItems": 3,
-   "maxItems": 3
-  },
-  "Rgba": {
-   "description": "colour and alpha, 0..255",
-   "type": "array",
-   "items": {
-    "type": "number",
-    "minimum": 0,
-    "maximum": 255
-   },
-   "minItems": 4,
-   "maxItems": 4
-  },
-  "Shape": {
-   "enum": [
-    "box",
-    "sphere",
-    "cylinder",
-    "capsule"
-   ]
-  },
-  "Floor": {
-   "type": "object",
-   "properties": {
-    "width": {
-     "type": "number",
-     "exclusiveMinimum": 0
-    },
-    "height": {
-     "type": "number",
-     "exclusiveMinimum": 0
-    },
-    "texture": {
-     "description": "URL of the floor image, or null",
-     "type": [
-      "string",
-      "null"
-     ]
-    }
-   },
-   "required": [
-    "width",
-    "height",
-    "texture"
-   ],
-   "additionalProperties": false
-  },
-  "Wall": {
-   "type": "object",
-   "properties": {
-    "x1": {
-     "type": "number"
-    },
-    "y1": {
-     "type": "number"
-    },
-    "x2": {
-     "type": "number"
-    },
-    "y2": {
-     "type": "number"
-    },
-    "thickness": {
-     "type": "number",
-     "exclusiveMinimum": 0
-    },
-    "height": {
-     "type": "number",
-     "exclusiveMinimum": 0
-    },
-    "color": {
-     "$ref": "#/$defs/Rgb"
-    }
-   },
-   "required": [
-    "x1",
-    "y1",
-    "x2",
-    "y2",
-    "thickness",
-    "height",
-    "color"
-   ],
-   "additionalProperties": false
-  },
-  "RobotInfo": {
-   "type": "object",
-   "properties": {
-    "id": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "name": {
-     "type": "string"
-    },
-    "type": {
-     "type": "string"
-    },
-    "size": {
-     "description": "[length, width, height] (m)",
-     "$ref": "#/$defs/Vec3"
-    },
-    "color": {
-     "$ref": "#/$defs/Rgb"
-    },
-    "wheel_diameter": {
-     "description": "0: no two drive wheels to draw (other drives' wheels are bodies)",
-     "type": "number",
-     "minimum": 0
-    },
-    "track": {
-     "type": "number",
-     "minimum": 0
-    },
-    "mesh": {
-     "description": "URL of its .obj model (MeshBody), drawn instead of the box",
-     "type": "string"
-    }
-   },
-   "required": [
-    "id",
-    "name",
-    "type",
-    "size",
-    "color",
-    "wheel_diameter",
-    "track"
-   ],
-   "additionalProperties": false
-  },
-  "Part": {
-   "type": "object",
-   "description": "One shape of an object or robot body in that thing's frame; cylinders and capsules stand along z.",
-   "properties": {
-    "shape": {
-     "$ref": "#/$defs/Shape"
-    },
-    "size": {
-     "description": "[sx, sy, sz] box, [r] sphere, [r, h] cylinder or capsule",
-     "type": "array",
-     "items": {
-      "type": "number",
-      "exclusiveMinimum": 0
-     },
-     "minItems": 1,
-     "maxItems": 3
-    },
-    "pos": {
-     "$ref": "#/$defs/Vec3"
-    },
-    "quat": {
-     "$ref": "#/$defs/Quat"
-    },
-    "color": {
-     "$ref": "#/$defs/Rgb"
-    }
-   },
-   "required": [
-    "shape",
-    "size",
-    "pos",
-    "quat"
-   ],
-   "additionalProperties": false
-  },
-  "ObjectInfo": {
-   "type": "object",
-   "properties": {
-    "id": {
-     "type": "integer",
-     "minimum": 1
-    },
-    "type": {
-     "type": "string"
-    },
-    "shape": {
-     "$ref": "#/$defs/Shape"
-    },
-    "size": {
-     "type": "array",
-     "items": {
-      "type": "number",
-      "exclusiveMinimum": 0
-     },
-     "minItems": 1,
-     "maxItems": 3
-    },
-    "color": {
-     "$ref": "#/$defs/Rgb"
-    },
-    "parts": {
-     "description": "the shapes it is drawn from, in its own frame",
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/Part"
-     },
-     "default": []
-    },
-    "mesh": {
-     "description": "URL of its .obj model (MeshBody), drawn instead of parts",
-     "type": "string"
-    }
-   },
-   "required": [
-    "id",
-    "type",
-    "shape",
-    "size",
-    "color"
-   ],
-   "additionalProperties": false
-  },
-  "RobotBody": {
-   "type": "object",
-   "description": "A moving part of a robot (arm link, finger, steered wheel), posed by its own snapshots.",
-   "properties": {
-    "id": {
-     "type": "integer"
-    },
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "parts": {
-     "type": "array",
-     "items": {
-      "$ref": "#/$defs/Part"
-     }
-    }
-   },
-   "required": [
-    "id",
-    "robot",
-    "parts"
-   ],
-   "additionalProperties": false
-  },
-  "Water": {
-   "type": "object",
-   "description": "Water from the floor up to surface (m).",
-   "properties": {
-    "surface": {
-     "type": "number",
-     "exclusiveMinimum": 0
-    }
-   },
-   "required": [
-    "surface"
-   ],
-   "additionalProperties": false
-  },
-  "Marker": {
-   "type": "object",
-   "properties": {
-    "x": {
-     "type": "number"
-    },
-    "y": {
-     "type": "number"
-    },
-    "color": {
-     "$ref": "#/$defs/Rgba"
-    }
-   },
-   "required": [
-    "x",
-    "y",
-    "color"
-   ],
-   "additionalProperties": false
-  },
-  "SceneWarning": {
-   "type": "object",
-   "description": "What the scene loader found wrong (line and column 0 when unknown).",
-   "properties": {
-    "file": {
-     "type": "string"
-    },
-    "line": {
-     "type": "integer",
-     "minimum": 0,
-     "default": 0
-    },
-    "column": {
-     "type": "integer",
-     "minimum": 0,
-     "default": 0
-    },
-    "code": {
-     "type": "string",
-     "default": ""
-    },
-    "message": {
-     "type": "string"
-    }
-   },
-   "required": [
-    "file",
-    "message"
-   ],
-   "additionalProperties": false
-  },
-  "SceneSettings": {
-   "type": "object",
-   "description": "Draw sensor rays (VIS) and robot paths (TRACE).",
-   "properties": {
-    "vis": {
-     "type": "boolean",
-     "default": false
-    },
-    "trace": {
-     "type": "boolean",
-     "default": false
-    }
-   },
-   "required": [],
-   "additionalProperties": false
-  },
-  "BodyPose": {
-   "type": "object",
-   "properties": {
-    "id": {
-     "type": "integer"
-    },
-    "pos": {
-     "$ref": "#/$defs/Vec3"
-    },
-    "quat": {
-     "$ref": "#/$defs/Quat"
-    },
-    "battery": {
-     "description": "a robot's battery voltage (V), when it has a battery",
-     "type": "number"
-    }
-   },
-   "required": [
-    "id",
-    "pos",
-    "quat"
-   ],
-   "additionalProperties": false
-  },
-  "SensorRays": {
-   "type": "object",
-   "description": "Beams of one robot's sensor(s) from a common origin.",
-   "properties": {
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "kind": {
-     "enum": [
-      "psd",
-      "lidar"
-     ]
-    },
-    "psd": {
-     "description": "a PSD beam's sensor id as PSDGet takes it",
-     "type": "integer"
-    },
-    "origin": {
-     "$ref": "#/$defs/Vec3"
-    },
-    "ends": {
-     "description": "flat [x, y, z, ...] end points (m)",
-     "type": "array",
-     "items": {
-      "type": "number"
-     }
-    }
-   },
-   "required": [
-    "robot",
-    "kind",
-    "origin",
-    "ends"
-   ],
-   "additionalProperties": false
-  },
-  "DigitalLine": {
-   "type": "object",
-   "properties": {
-    "direction": {
-     "description": "i input, o output, I pull-up, J pull-down",
-     "enum": [
-      "i",
-      "o",
-      "I",
-      "J"
-     ]
-    },
-    "level": {
-     "enum": [
-      0,
-      1
-     ]
-    },
-    "driven": {
-     "description": "the level driven from outside, or null",
-     "enum": [
-      0,
-      1,
-      null
-     ],
-     "default": null
-    }
-   },
-   "required": [
-    "direction",
-    "level"
-   ],
-   "additionalProperties": false
-  },
-  "SignalInfo": {
-   "type": "object",
-   "properties": {
-    "id": {
-     "type": "string"
-    },
-    "robot": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "name": {
-     "type": "string"
-    },
-    "label": {
-     "type": "string"
-    },
-    "unit": {
-     "type": "string"
-    }
-   },
-   "required": [
-    "id",
-    "robot",
-    "name",
-    "label",
-    "unit"
-   ],
-   "additionalProperties": false
-  },
-  "Series": {
-   "type": "object",
-   "properties": {
-    "id": {
-     "type": "string"
-    },
-    "times": {
-     "type": "array",
-     "items": {
-      "type": "number"
-     }
-    },
-    "values": {
-     "type": "array",
-     "items": {
-      "type": "number"
-     }
-    }
-   },
-   "required": [
-    "id",
-    "times",
-    "values"
-   ],
-   "additionalProperties": false
-  },
-  "RobotPath": {
-   "type": "object",
-   "properties": {
-    "id": {
-     "description": "robot id (1..)",
-     "type": "integer",
-     "minimum": 1,
-     "maximum": 1000000
-    },
-    "times": {
-     "type": "array",
-     "items": {
-      "type": "number"
-     }
-    },
-    "points": {
-     "description": "flat [x, y, ...] (m)",
-     "type": "array",
-     "items": {
-      "type": "number"
-     }
-    }
-   },
-   "required": [
-    "id",
-    "times",
-    "points"
-   ],
-   "additionalProperties": false
-  },
-  "MeshPart": {
-   "type": "object",
-   "properties": {
-    "color": {
-     "$ref": "#/$defs/Rgb"
-    },
-    "vertices": {
-     "type": "array",
-     "items": {
-      "type": "number"
-     }
-    },
-    "triangles": {
-     "type": "array",
-     "items": {
-      "type": "integer",
-      "minimum": 0
-     }
-    }
-   },
-   "required": [
-    "color",
-    "vertices",
-    "triangles"
-   ],
-   "additionalProperties": false
   }
- }
-}''')
+}
+''')
