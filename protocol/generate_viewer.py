@@ -239,7 +239,7 @@ class Generator:
 
     def typescript(self) -> str:
         out = [f"// {BANNER}", "// The viewer channel's messages (docs/viewer-channel.md): types and checking parsers.",
-               "/* eslint-disable */", RUNTIME.strip(), "", OBJECT_OF.strip(), ""]
+               RUNTIME.strip(), "", OBJECT_OF.strip(), ""]
         for name, s in self.defs.items():
             out.append(self.declaration(name, s))
             out.append("")

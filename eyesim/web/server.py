@@ -20,10 +20,10 @@ from pathlib import Path
 from aiohttp import WSMsgType, web
 from PIL import Image
 
+from eyesim import robot_input
 from eyesim.paths import STATIC_DIR
 from eyesim.protocol import generated as g
 from eyesim.record.sampling import robot_state
-from eyesim import robot_input
 from eyesim.web import channel_schema, mesh_message, messages, place_command, robot_io_commands, timeline
 from eyesim.web.access import AccessPolicy
 from eyesim.web.live_history import LiveHistory
