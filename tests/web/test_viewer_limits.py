@@ -5,7 +5,6 @@ chunks per robot; the live history keeps 2000 chunks per robot and a frame carri
 
 from __future__ import annotations
 
-import asyncio
 import json
 
 import aiohttp
@@ -110,6 +109,6 @@ def test_the_live_history_keeps_2000_chunks_per_robot_and_a_frame_carries_500():
     history.add_snapshot({"type": "snapshot", "time": 1.0, "robots": [], "objects": [], "bodies": []}, [])
     kept = history.events.stream("console", 1, -1, 10**9)
     assert [m["text"] for m in kept] == [f"{c}\n" for c in range(300, MAX_CHUNKS + 300)]
-    frame = json.loads(asyncio.run(FrameCursor().frame(history, 1_000_000)))
+    frame = json.loads(run_async(FrameCursor().frame(history, 1_000_000)))
     texts = [m["text"] for m in frame["messages"] if m["type"] == "console"]
     assert texts == [f"{c}\n" for c in range(MAX_CHUNKS + 300 - STREAM_BACKLOG, MAX_CHUNKS + 300)]
