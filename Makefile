@@ -54,10 +54,12 @@ system-packages:
 viewer:
 	cd web && npm ci --no-audit --no-fund && npm run build
 
-# Regenerate the protocol tables and the pass-through layers of the API (eyebot.h declarations, C
-# wrappers, eye modules) from protocol/protocol.json.
+# Regenerate from protocol/protocol.json the protocol tables and the pass-through layers of the API
+# (eyebot.h declarations, C wrappers, eye modules), and from protocol/viewer.schema.json the viewer
+# channel's TypeScript types and parsers and the server's copy of its schema.
 protocol:
 	$(PYTHON) protocol/generate.py
+	$(PYTHON) protocol/generate_viewer.py
 
 bench: $(INSTALLED)
 	$(BIN)/python bench/bench_roundtrip.py

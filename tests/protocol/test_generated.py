@@ -23,6 +23,13 @@ def test_generated_files_match_protocol_json():
     assert result.returncode == 0, result.stdout + result.stderr
 
 
+def test_generated_viewer_channel_code_matches_viewer_schema():
+    """web/src/generated/viewer_protocol.ts and eyesim/web/viewer_schema.py follow protocol/viewer.schema.json."""
+    result = subprocess.run([sys.executable, str(ROOT / "protocol" / "generate_viewer.py"), "--check"],
+                            capture_output=True, text=True)
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
 def test_every_operation_but_the_sessions_own_has_a_handler():
     # the handshake and the library's THREADS notice are the engine's own
     missing = [op.name for op in g.OPS.values() if op.group != "session" and op.code not in commands.HANDLERS]

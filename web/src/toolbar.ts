@@ -57,7 +57,8 @@ export class Toolbar {
     this.showSpeed(status.speed);
     if (this.replay) return;
     this.time.textContent = `t = ${status.time.toFixed(2)} s`;
-    this.rate.textContent = `${status.real_time_factor.toFixed(2)}× real time`;
+    const rate = status.real_time_factor;  // null until the server could measure it
+    this.rate.textContent = rate === null ? "" : `${rate.toFixed(2)}× real time`;
     this.clock.textContent = status.paused ? `${status.clock}, paused` : status.clock;
   }
 
