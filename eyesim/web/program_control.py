@@ -25,7 +25,7 @@ from aiohttp import web
 from eyesim import toolchain
 from eyesim.launcher import crash_reason
 from eyesim.robot.components.psd import PsdSensor
-from eyesim.web import program_files
+from eyesim.web import messages, program_files
 from eyesim.web.program_files import FileRefused
 
 log = logging.getLogger("eyesim.web")
@@ -107,7 +107,8 @@ class ProgramControl:
 
     async def settings(self, _body: dict) -> dict:
         settings = self.sim.scene.settings
-        clock = {key: value for key, value in self.sim.status().items() if key != "type"}
+        clock = {key: value for key, value in messages.status(self.sim, None).items()
+                 if key in ("time", "paused", "speed", "clock")}
         return {"vis": settings.vis, "trace": settings.trace, "psd_noise": settings.psd_noise,
                 "seed": settings.seed, **clock}
 
