@@ -1,0 +1,42 @@
+"""The `drive` line: which drive archetype (robot/drives) moves the robot, and its EyeSim 6
+motor and encoder names."""
+
+from __future__ import annotations
+
+from eyesim.robot.drives import DRIVES, drive_named, drive_of
+from eyesim.scene.diagnostics import quoted
+from eyesim.scene.parts.part import Part, PartReader
+from eyesim.scene.lexer import Line
+
+DRIVE_CHOICES = ", ".join(drive.keyword for drive in DRIVES[:-1]) + f" or {DRIVES[-1].keyword}"
+
+
+def read_drive(reader: PartReader, line: Line) -> None:
+    if not line.args:
+        reader.error(line, f"drive: expected a drive type ({DRIVE_CHOICES}), found nothing")
+        return
+    drive = drive_named(line.args[0].text)
+    if drive is None:
+        reader.error(line, f"drive: expected {DRIVE_CHOICES}, found {quoted(line.args[0].text)}", 1)
+        return
+    reader.fields["drive"] = drive.name
+    reader.fields["drive_motors"] = tuple(t.text for t in line.args[1:])
+    reader.remember("drive", line)
+
+
+def write(robot) -> list[str]:
+    return [" ".join(["drive", drive_of(robot).keyword, *robot.drive_motors])]
+
+
+PART = Part(
+    "drive",
+    fields=(("drive", str, "differential"), ("drive_motors", tuple[str, ...], ())),
+    keywords={"drive": read_drive},
+    write=write,
+    properties={
+        "drive": {"enum": [drive.name for drive in DRIVES]},
+        "drive_motors": {"type": "array", "items": {"type": "string"},
+                         "description": "EyeSim 6 motor and encoder names"},
+    },
+    json_locations=lambda robot, positions: {"drive": positions.key(["drive"])},
+)

@@ -1,0 +1,65 @@
+"""Thrusters (`thruster` lines); how they push: robot/components/thrusters.py."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from eyesim.scene.lexer import Line, format_number, quote_token
+from eyesim.scene.parts.part import Part, PartReader, coordinate, list_of, positive, record, text, whole
+
+
+@dataclass(frozen=True)
+class ThrusterSpec:
+    """A thruster: RoBIOS motor number, position (mm, robot frame), thrust direction (robot
+    frame, any length), and the thrust in newtons at motor speed 100 (negative speeds reverse)."""
+
+    name: str
+    motor: int
+    x: float
+    y: float
+    z: float
+    dx: float
+    dy: float
+    dz: float
+    max_thrust: float
+
+
+def read_thruster(reader: PartReader, line: Line) -> None:
+    if not reader.arity(line, (9,), "<NAME> <motor> <x> <y> <z> <dx> <dy> <dz> <max thrust N>"):
+        return
+    motor = reader.whole(line, 2, "motor number", 1)
+    values = reader.numbers(line, 3, ("x", "y", "z", "direction x", "direction y", "direction z",
+                                      "maximum thrust in N"))
+    if motor is None or not values or not reader.positive(line, values[6], 9, "maximum thrust"):
+        return
+    thrusters = reader.fields.setdefault("thrusters", ())
+    reader.fields["thrusters"] = thrusters + (ThrusterSpec(line.args[0].text, motor, *(v + 0.0 for v in values)),)
+    reader.remember(f"thruster:{len(thrusters)}", line)
+
+
+def write(robot) -> list[str]:
+    return [f"thruster {quote_token(t.name)} {t.motor} " +
+            " ".join(format_number(v) for v in (t.x, t.y, t.z, t.dx, t.dy, t.dz, t.max_thrust))
+            for t in robot.thrusters]
+
+
+PART = Part(
+    "thrusters",
+    fields=(("thrusters", tuple[ThrusterSpec, ...], ()),),
+    keywords={"thruster": read_thruster},
+    write=write,
+    properties={"thrusters": list_of("thruster")},
+    defs={"thruster": record("a thruster", {
+        "name": text(),
+        "motor": whole(1, "RoBIOS motor number"),
+        "x": coordinate("mm forward"),
+        "y": coordinate("mm left"),
+        "z": coordinate("mm up"),
+        "dx": coordinate(),
+        "dy": coordinate(),
+        "dz": coordinate(),
+        "max_thrust": positive("newtons at motor speed 100"),
+    }, required=("name", "motor", "x", "y", "z", "dx", "dy", "dz", "max_thrust"))},
+    json_locations=lambda robot, positions: {f"thruster:{i}": positions.value(["thrusters", i])
+                                             for i in range(len(robot.thrusters))},
+)
