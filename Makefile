@@ -9,7 +9,7 @@ BIN := $(VENV)/bin
 SOURCES := $(shell find eyesim eye robios protocol -type f -not -path '*/__pycache__/*' 2>/dev/null) pyproject.toml
 INSTALLED := $(VENV)/.installed
 
-.PHONY: demo test install viewer protocol bench clean
+.PHONY: demo test install viewer protocol schemas bench clean
 
 demo: $(INSTALLED) build/demo
 	$(BIN)/eyesim run --program 1=build/demo --open
@@ -57,6 +57,11 @@ viewer:
 # Regenerate the protocol tables from protocol/protocol.json.
 protocol:
 	$(PYTHON) protocol/generate.py
+
+# Rewrite the published JSON Schemas in docs/schemas/ (the robot schema comes from the part
+# declarations in eyesim/scene/parts/; tests/scene/test_schemas.py fails while they are stale).
+schemas: $(INSTALLED)
+	$(BIN)/eyesim schema export docs/schemas
 
 bench: $(INSTALLED)
 	$(BIN)/python bench/bench_roundtrip.py

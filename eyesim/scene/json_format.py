@@ -41,6 +41,22 @@ def schema(kind: str) -> dict:
     return json.loads((SCHEMA_DIR / f"{kind}.schema.json").read_text(encoding="utf-8"))
 
 
+def schema_text(kind: str) -> str:
+    """The schema as published in docs/schemas/<kind>.schema.json."""
+    return json.dumps(schema(kind), indent=2) + "\n"
+
+
+def export_schemas(folder: Path) -> list[Path]:
+    """Writes every kind's published schema into `folder` (docs/schemas/ in the repository)."""
+    folder.mkdir(parents=True, exist_ok=True)
+    written = []
+    for kind in KINDS:
+        path = folder / f"{kind}.schema.json"
+        path.write_text(schema_text(kind), encoding="utf-8")
+        written.append(path)
+    return written
+
+
 # -- documents to plain data -------------------------------------------------------------------
 def to_json(kind: str, document) -> dict:
     data = {"format": f"eyesim.{kind}", "version": VERSION}
