@@ -96,6 +96,23 @@ def finish(reader: PartReader) -> None:
         reader.fields["arm"] = ArmSpec(x, y, z, heading, tuple(joints or ()), gripper)
 
 
+def check(robot, diagnostics, at) -> dict:
+    for i, joint in enumerate(robot.arm.joints if robot.arm is not None else ()):
+        if joint.min > joint.max:
+            diagnostics.error(at(f"joint:{i}"), f"joint {joint.name}: expected min <= max, found "
+                              f"{format_number(joint.min)} > {format_number(joint.max)}", "bad-value")
+    return {}
+
+
+def servos(robot) -> list[tuple[int, str, str]]:
+    if robot.arm is None:
+        return []
+    users = [(joint.servo, f"joint {joint.name}", f"joint:{i}") for i, joint in enumerate(robot.arm.joints)]
+    if robot.arm.gripper is not None:
+        users.append((robot.arm.gripper.servo, "the gripper", "gripper"))
+    return users
+
+
 def write(robot) -> list[str]:
     a = robot.arm
     if a is None:
@@ -152,4 +169,6 @@ PART = Part(
         }),
     },
     json_locations=json_locations,
+    check=check,
+    servos=servos,
 )

@@ -10,6 +10,8 @@ from eyesim.scene.lexer import Line, format_number, quote_token
 from eyesim.scene.parts.part import VR_AXIS, Part, PartReader, coordinate, list_of, numbers, positive, record, text
 
 DEFAULT_HEIGHT = 80.0  # mm of a robot whose file gives only a diameter
+MAX_DENSITY = 8.0  # g/cm3: a robot heavier than solid steel of its size is a typo
+ESTIMATED_DENSITY = 0.5  # g/cm3 of a typical small robot (S4: 0.8 kg in 2.4 litres)
 COLLIDER_FORMS = {"box": ("<sx> <sy> <sz> <cx> <cy> <cz>", 6), "sphere": ("<r> <cx> <cy> <cz>", 4),
                   "capsule": ("<r> <h> <cx> <cy> <cz> [x|y|z]", 5),
                   "cylinder": ("<r> <h> <cx> <cy> <cz> [x|y|z]", 5)}
@@ -165,6 +167,18 @@ def _half_extent(collider: Collider) -> tuple[float, float, float]:
     return tuple(along if axis == collider.axis else r for axis in "xyz")
 
 
+def check(robot, diagnostics, at) -> dict:
+    volume = robot.length * robot.width * robot.height / 1000.0  # cm3
+    if volume > 0 and robot.mass * 1000.0 / volume > MAX_DENSITY:
+        estimate = float(f"{volume * ESTIMATED_DENSITY / 1000.0:.2g}")  # two significant digits
+        f = format_number
+        diagnostics.warning(at("mass"), f"mass {f(robot.mass)} kg is impossible for a {f(robot.length)} x "
+                            f"{f(robot.width)} x {f(robot.height)} mm robot (denser than steel); using "
+                            f"{f(estimate)} kg instead", "implausible-mass")
+        return {"mass": estimate}
+    return {}
+
+
 def write(robot) -> list[str]:
     f = format_number
     out = [f"name {quote_token(robot.name)}",
@@ -244,4 +258,5 @@ PART = Part(
         "axis": {"enum": ["x", "y", "z"], "description": "capsule or cylinder axis"},
     }, required=("kind", "size"))},
     json_locations=lambda robot, positions: {"mass": positions.key(["mass"])},
+    check=check,
 )

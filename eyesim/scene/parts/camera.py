@@ -113,6 +113,16 @@ def finish(reader: PartReader) -> None:
         reader.diagnostics.warning(reader.where[key], f"{key} without a camera line; ignored", "ignored-line")
 
 
+def servos(robot) -> list[tuple[int, str, str]]:
+    users = []
+    if robot.camera is not None:
+        if robot.camera.pan_servo is not None:
+            users.append((robot.camera.pan_servo, "camera pan", "camera"))
+        if robot.camera.tilt_servo is not None:
+            users.append((robot.camera.tilt_servo, "camera tilt", "camera"))
+    return users
+
+
 def write(robot) -> list[str]:
     c = robot.camera
     if c is None:
@@ -157,4 +167,5 @@ PART = Part(
         "fisheye": {"type": "boolean"},
     }, required=("x", "y", "z"))},
     json_locations=lambda robot, positions: {"camera": positions.value(["camera"])},
+    servos=servos,
 )

@@ -5,8 +5,9 @@ from __future__ import annotations
 
 from eyesim.robot.drives import DRIVES, drive_named, drive_of
 from eyesim.scene.diagnostics import quoted
-from eyesim.scene.parts.part import Part, PartReader
 from eyesim.scene.lexer import Line
+from eyesim.scene.parts.part import Part, PartReader
+from eyesim.scene.parts.wheels import DEFAULT_WHEELS
 
 DRIVE_CHOICES = ", ".join(drive.keyword for drive in DRIVES[:-1]) + f" or {DRIVES[-1].keyword}"
 
@@ -24,6 +25,18 @@ def read_drive(reader: PartReader, line: Line) -> None:
     reader.remember("drive", line)
 
 
+def check(robot, diagnostics, at) -> dict:
+    drive, changes = drive_of(robot), {}
+    if drive.wheeled and robot.wheels is None:
+        diagnostics.warning(at("drive"), f"a {robot.drive} robot needs a 'wheel' line; using the S4's wheels "
+                            "(54 mm, 3600 deg/s, 1100 ticks, track 90 mm)", "missing-wheels")
+        changes["wheels"] = DEFAULT_WHEELS
+    immobile = drive.check(robot)
+    if immobile is not None:
+        diagnostics.warning(at("drive"), *immobile)
+    return changes
+
+
 def write(robot) -> list[str]:
     return [" ".join(["drive", drive_of(robot).keyword, *robot.drive_motors])]
 
@@ -39,4 +52,5 @@ PART = Part(
                          "description": "EyeSim 6 motor and encoder names"},
     },
     json_locations=lambda robot, positions: {"drive": positions.key(["drive"])},
+    check=check,
 )

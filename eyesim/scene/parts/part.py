@@ -31,7 +31,11 @@ class Part:
     turns what was collected into fields. `write(robot)`: its `.robi` lines in our dialect.
     `properties`/`defs`: the JSON Schema of its fields (robot.schema.json `properties` and
     `$defs`). `json_locations(robot, positions)`: where its values are in a JSON file, under the
-    keys the robot type's checks use ('psd:0', 'camera', ...)."""
+    keys its checks use ('psd:0', 'camera', ...). `check(robot, diagnostics, at)`: reports
+    contradictions (errors) and what a usable robot lacks (warnings) once the robot type is read
+    from either format, `at(key)` giving where a key was written; returns the fields it fills in.
+    `servos(robot)`: (servo number, user, location key) of each servo the part drives (the robot
+    type checks that no two parts share one)."""
 
     name: str
     fields: tuple[tuple[str, Any, Any], ...]
@@ -41,6 +45,8 @@ class Part:
     defs: dict = field(default_factory=dict)
     finish: Callable[[PartReader], None] = lambda reader: None
     json_locations: Callable[[Any, Any], dict[str, Location]] = lambda robot, positions: {}
+    check: Callable[[Any, Diagnostics, Callable[[str], Location]], dict] = lambda robot, diagnostics, at: {}
+    servos: Callable[[Any], list[tuple[int, str, str]]] = lambda robot: []
 
 
 class PartReader(KeywordReader):

@@ -79,6 +79,20 @@ def finish(reader: PartReader) -> None:
     reader.fields["psds"] = tuple(result)
 
 
+def check(robot, diagnostics, at) -> dict:
+    seen: dict[int, str] = {}
+    for i, psd in enumerate(robot.psds):
+        if psd.id in seen:
+            diagnostics.error(at(f"psd:{i}"), f"PSD id {psd.id} of {psd.name} is already used by {seen[psd.id]}: "
+                              "expected a different id", "duplicate")
+        seen.setdefault(psd.id, psd.name)
+    for i, psd in enumerate(robot.psds):
+        if psd.z < 0:
+            diagnostics.warning(at(f"psd:{i}"), f"{psd.name} sits {format_number(-psd.z)} mm below the floor "
+                                f"(z = {format_number(psd.z)}); kept as written", "below-floor")
+    return {}
+
+
 def write(robot) -> list[str]:
     f = format_number
     out = []
@@ -108,4 +122,5 @@ PART = Part(
     }, required=("id", "name", "x", "y", "z", "heading"))},
     json_locations=lambda robot, positions: {f"psd:{i}": positions.value(["psds", i])
                                              for i in range(len(robot.psds))},
+    check=check,
 )

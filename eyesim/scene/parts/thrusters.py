@@ -37,6 +37,22 @@ def read_thruster(reader: PartReader, line: Line) -> None:
     reader.remember(f"thruster:{len(thrusters)}", line)
 
 
+def check(robot, diagnostics, at) -> dict:
+    seen: dict[int, str] = {}
+    for i, thruster in enumerate(robot.thrusters):
+        if thruster.motor < 1:
+            diagnostics.error(at(f"thruster:{i}"), f"thruster {thruster.name}: expected a motor number from 1, "
+                              f"found {thruster.motor}", "bad-value")
+        elif thruster.motor in seen:
+            diagnostics.error(at(f"thruster:{i}"), f"motor {thruster.motor} of thruster {thruster.name} is "
+                              f"already used by {seen[thruster.motor]}", "duplicate")
+        if (thruster.dx, thruster.dy, thruster.dz) == (0, 0, 0):
+            diagnostics.error(at(f"thruster:{i}"), f"thruster {thruster.name}: expected a direction, found 0 0 0",
+                              "bad-value")
+        seen.setdefault(thruster.motor, thruster.name)
+    return {}
+
+
 def write(robot) -> list[str]:
     return [f"thruster {quote_token(t.name)} {t.motor} " +
             " ".join(format_number(v) for v in (t.x, t.y, t.z, t.dx, t.dy, t.dz, t.max_thrust))
@@ -62,4 +78,5 @@ PART = Part(
     }, required=("name", "motor", "x", "y", "z", "dx", "dy", "dz", "max_thrust"))},
     json_locations=lambda robot, positions: {f"thruster:{i}": positions.value(["thrusters", i])
                                              for i in range(len(robot.thrusters))},
+    check=check,
 )

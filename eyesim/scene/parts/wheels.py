@@ -31,6 +31,9 @@ class SteeringSpec:
     wheels: WheelSpec | None = None
 
 
+DEFAULT_WHEELS = WheelSpec(54.0, 3600.0, 1100, 90.0)  # the S4's
+
+
 def read_axel(reader: PartReader, line: Line) -> None:
     if not reader.arity(line, (3,), "drive|turn <vertical> <forward>"):
         return
