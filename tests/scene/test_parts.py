@@ -61,6 +61,19 @@ def test_the_schema_is_assembled_from_the_parts_fragments():
             assert published["properties"][name] == definition, (part.name, name)
 
 
+def test_every_field_of_the_schema_has_a_title():
+    """The robot editor labels its form fields with them."""
+    def walk(node, path):
+        if isinstance(node, dict):
+            for name, field in node.get("properties", {}).items():
+                assert "title" in field or "$ref" in field, f"{path}/{name}"
+            for key, value in node.items():
+                walk(value, f"{path}/{key}")
+    published = schema("robot")
+    walk(published, "")
+    assert all("title" in definition for definition in published["$defs"].values())
+
+
 def test_the_schema_accepts_what_the_writer_writes_and_rejects_unknown_parts():
     robot = parse_robi(read_text(robi_files()["builtin/S4.robi"]), "S4.robi", Diagnostics())
     data = to_json("robot", robot)

@@ -61,8 +61,9 @@ ROBOT_SCHEMA_HEAD = {
 
 def robot_schema() -> dict:
     """The published JSON Schema of a robot file (robot.schema.json), from the parts' fragments."""
-    properties = {"format": {"const": "eyesim.robot", "description": "which EyeSim file format this is"},
-                  "version": {"const": 1, "description": "format version"}}
+    properties = {"format": {"title": "Format", "const": "eyesim.robot",
+                             "description": "which EyeSim file format this is"},
+                  "version": {"title": "Version", "const": 1, "description": "format version"}}
     defs: dict = {}
     for part in PARTS:
         properties.update(part.properties)

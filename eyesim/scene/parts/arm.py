@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.lexer import Line, format_number, quote_token
-from eyesim.scene.parts.part import Part, PartReader, coordinate, list_of, positive, record, ref, text, whole
+from eyesim.scene.parts.part import Part, PartReader, choice, coordinate, list_of, positive, record, ref, text, whole
 
 
 @dataclass(frozen=True)
@@ -143,28 +143,28 @@ PART = Part(
     finish=finish,
     properties={"arm": ref("arm")},
     defs={
-        "joint": record("an arm joint by its Denavit-Hartenberg parameters", {
-            "name": text(),
-            "servo": whole(1),
-            "kind": {"enum": ["revolute", "prismatic"]},
-            "d": coordinate("mm"),
-            "theta": coordinate("degrees"),
-            "a": coordinate("mm"),
-            "alpha": coordinate("degrees"),
-            "min": coordinate("degrees (revolute) or mm (prismatic)"),
-            "max": coordinate(),
+        "joint": record("Joint", "an arm joint by its Denavit-Hartenberg parameters", {
+            "name": text("Name"),
+            "servo": whole(1, "Servo"),
+            "kind": choice("Kind", ["revolute", "prismatic"]),
+            "d": coordinate("d", "mm"),
+            "theta": coordinate("theta", "degrees"),
+            "a": coordinate("a", "mm"),
+            "alpha": coordinate("alpha", "degrees"),
+            "min": coordinate("Minimum", "degrees (revolute) or mm (prismatic)"),
+            "max": coordinate("Maximum"),
         }, required=("name", "servo", "kind", "d", "theta", "a", "alpha", "min", "max")),
-        "gripper": record("a two-finger gripper", {
-            "servo": whole(1),
-            "opening": positive("mm"),
-            "force": positive("N"),
+        "gripper": record("Gripper", "a two-finger gripper", {
+            "servo": whole(1, "Servo"),
+            "opening": positive("Opening", "mm"),
+            "force": positive("Force", "N"),
         }, required=("servo", "opening", "force")),
-        "arm": record("a manipulator arm and where it is mounted", {
-            "x": coordinate(),
-            "y": coordinate(),
-            "z": coordinate(),
-            "heading": coordinate(),
-            "joints": list_of("joint"),
+        "arm": record("Arm", "a manipulator arm and where it is mounted", {
+            "x": coordinate("x"),
+            "y": coordinate("y"),
+            "z": coordinate("z"),
+            "heading": coordinate("Heading"),
+            "joints": list_of("joint", "Joints"),
             "gripper": ref("gripper"),
         }),
     },

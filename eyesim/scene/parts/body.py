@@ -7,7 +7,8 @@ from pathlib import Path
 from eyesim.scene.description import Collider, Location
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.lexer import Line, format_number, quote_token
-from eyesim.scene.parts.part import VR_AXIS, Part, PartReader, coordinate, list_of, numbers, positive, record, text
+from eyesim.scene.parts.part import (LIMIT, VR_AXIS, Part, PartReader, choice, coordinate, list_of, numbers, positive,
+                                     record, text)
 
 DEFAULT_HEIGHT = 80.0  # mm of a robot whose file gives only a diameter
 MAX_DENSITY = 8.0  # g/cm3: a robot heavier than solid steel of its size is a typo
@@ -233,29 +234,30 @@ PART = Part(
     write=write,
     finish=finish,
     properties={
-        "name": text(),
-        "mass": positive("kg"),
-        "length": positive("chassis mm"),
-        "width": positive("chassis mm"),
-        "height": positive("chassis mm"),
-        "color": numbers(3, "colour (red, green, blue), each 0..255",
+        "name": text("Name"),
+        "mass": positive("Mass", "kg"),
+        "length": positive("Length", "chassis mm"),
+        "width": positive("Width", "chassis mm"),
+        "height": positive("Height", "chassis mm"),
+        "color": numbers(3, "Colour", "colour (red, green, blue), each 0..255",
                          {"type": "integer", "minimum": 0, "maximum": 255}),
-        "max_speed": positive("mm/s"),
-        "max_turn": positive("deg/s"),
-        "axis_offset": coordinate("mm the drive axle sits ahead of the centre"),
-        "axle_height": positive("mm"),
-        "model": {**text(), "description": "3-D model file, relative to this file"},
-        "model_offset": numbers(3, "mesh offset in the mesh's axes (X right, Y up, Z forward), mm"),
-        "model_rotation": numbers(3, "mesh rotation about the mesh's X, Y, Z axes, degrees"),
-        "colliders": list_of("collider"),
-        "center_of_mass": numbers(3, POINT),
+        "max_speed": positive("Top speed", "mm/s"),
+        "max_turn": positive("Top turn rate", "deg/s"),
+        "axis_offset": coordinate("Drive axle position", "mm the drive axle sits ahead of the centre"),
+        "axle_height": positive("Drive axle height", "mm"),
+        "model": text("3-D model", "3-D model file, relative to this file"),
+        "model_offset": numbers(3, "Model offset", "mesh offset in the mesh's axes (X right, Y up, Z forward), mm"),
+        "model_rotation": numbers(3, "Model rotation", "mesh rotation about the mesh's X, Y, Z axes, degrees"),
+        "colliders": list_of("collider", "Colliders"),
+        "center_of_mass": numbers(3, "Centre of mass", POINT),
     },
-    defs={"collider": record("a collision shape (mm)", {
-        "kind": {"enum": ["box", "sphere", "capsule", "cylinder"]},
-        "size": {"type": "array", "items": positive(), "minItems": 1, "maxItems": 3,
+    defs={"collider": record("Collider", "a collision shape (mm)", {
+        "kind": choice("Shape", ["box", "sphere", "capsule", "cylinder"]),
+        "size": {"title": "Size", "type": "array", "items": {"type": "number", "exclusiveMinimum": 0, "maximum": LIMIT},
+                 "minItems": 1, "maxItems": 3,
                  "description": "box: (sx, sy, sz); sphere: (r); capsule, cylinder: (r, h) in mm"},
-        "center": numbers(3, POINT),
-        "axis": {"enum": ["x", "y", "z"], "description": "capsule or cylinder axis"},
+        "center": numbers(3, "Centre", POINT),
+        "axis": choice("Axis", ["x", "y", "z"], "capsule or cylinder axis"),
     }, required=("kind", "size"))},
     json_locations=lambda robot, positions: {"mass": positions.key(["mass"])},
     check=check,

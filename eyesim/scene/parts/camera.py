@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.lexer import Line, format_number, number
-from eyesim.scene.parts.part import Part, PartReader, coordinate, numbers, record, ref, whole
+from eyesim.scene.parts.part import Part, PartReader, between, coordinate, flag, numbers, record, ref, whole
 
 _SERVO = re.compile(r"SERVO(\d+)\(([^,()]+),([^,()]+)\)", re.IGNORECASE)
 
@@ -153,18 +153,18 @@ PART = Part(
     write=write,
     finish=finish,
     properties={"camera": ref("camera")},
-    defs={"camera": record("a camera (robot frame)", {
-        "x": coordinate("mm forward"),
-        "y": coordinate("mm left"),
-        "z": coordinate("mm up"),
-        "pan": coordinate("default pan, degrees"),
-        "tilt": coordinate("default tilt, degrees"),
-        "fov": {"type": "number", "exclusiveMinimum": 0, "maximum": 360, "description": "field of view in degrees"},
-        "pan_servo": whole(1, "servo driving the pan (its range is pan_range)"),
-        "tilt_servo": whole(1, "servo driving the tilt"),
-        "pan_range": numbers(2, "(min, max) in degrees"),
-        "tilt_range": numbers(2, "(min, max) in degrees"),
-        "fisheye": {"type": "boolean"},
+    defs={"camera": record("Camera", "a camera (robot frame)", {
+        "x": coordinate("x", "mm forward"),
+        "y": coordinate("y", "mm left"),
+        "z": coordinate("z", "mm up"),
+        "pan": coordinate("Pan", "default pan, degrees"),
+        "tilt": coordinate("Tilt", "default tilt, degrees"),
+        "fov": between(0, 360, "Field of view", "field of view in degrees"),
+        "pan_servo": whole(1, "Pan servo", "servo driving the pan (its range is pan_range)"),
+        "tilt_servo": whole(1, "Tilt servo", "servo driving the tilt"),
+        "pan_range": numbers(2, "Pan range", "(min, max) in degrees"),
+        "tilt_range": numbers(2, "Tilt range", "(min, max) in degrees"),
+        "fisheye": flag("Fisheye lens"),
     }, required=("x", "y", "z"))},
     json_locations=lambda robot, positions: {"camera": positions.value(["camera"])},
     servos=servos,

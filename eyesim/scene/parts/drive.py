@@ -6,7 +6,7 @@ from __future__ import annotations
 from eyesim.robot.drives import DRIVES, drive_named, drive_of
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.lexer import Line
-from eyesim.scene.parts.part import Part, PartReader
+from eyesim.scene.parts.part import Part, PartReader, choice
 from eyesim.scene.parts.wheels import DEFAULT_WHEELS
 
 DRIVE_CHOICES = ", ".join(drive.keyword for drive in DRIVES[:-1]) + f" or {DRIVES[-1].keyword}"
@@ -47,8 +47,8 @@ PART = Part(
     keywords={"drive": read_drive},
     write=write,
     properties={
-        "drive": {"enum": [drive.name for drive in DRIVES]},
-        "drive_motors": {"type": "array", "items": {"type": "string"},
+        "drive": choice("Drive", [drive.name for drive in DRIVES], "the drive archetype that moves the robot"),
+        "drive_motors": {"title": "EyeSim 6 motor names", "type": "array", "items": {"type": "string"},
                          "description": "EyeSim 6 motor and encoder names"},
     },
     json_locations=lambda robot, positions: {"drive": positions.key(["drive"])},

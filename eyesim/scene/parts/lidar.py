@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.lexer import Line, format_number
-from eyesim.scene.parts.part import Part, PartReader, record, ref, whole
+from eyesim.scene.parts.part import Part, PartReader, between, record, ref, whole
 
 
 @dataclass(frozen=True)
@@ -47,9 +47,8 @@ PART = Part(
     keywords={"lidar": read_lidar},
     write=write,
     properties={"lidar": ref("lidar")},
-    defs={"lidar": record("a 360-degree scanning lidar", {
-        "points": whole(1),
-        "tilt": {"type": "number", "exclusiveMinimum": -90, "exclusiveMaximum": 90,
-                 "description": "scan plane tilt in degrees"},
+    defs={"lidar": record("Lidar", "a 360-degree scanning lidar", {
+        "points": whole(1, "Points"),
+        "tilt": between(-90, 90, "Tilt", "scan plane tilt in degrees", exclusive_high=True),
     })},
 )

@@ -98,48 +98,67 @@ def name_token(name: str) -> str:
 
 
 # -- JSON Schema fragments ---------------------------------------------------------------------
-def _described(schema: dict, description: str | None) -> dict:
-    return {**schema, "description": description} if description else schema
+# Every field has a title (a label for forms) and, where it has a unit, a description naming it.
+def _field(title: str, schema: dict, description: str | None) -> dict:
+    return {"title": title, **schema, **({"description": description} if description else {})}
 
 
-def coordinate(description: str | None = None) -> dict:
+def coordinate(title: str, description: str | None = None) -> dict:
     """Any number (a position, an angle, an offset)."""
-    return _described({"type": "number", "minimum": -LIMIT, "maximum": LIMIT}, description)
+    return _field(title, {"type": "number", "minimum": -LIMIT, "maximum": LIMIT}, description)
 
 
-def positive(description: str | None = None) -> dict:
-    return _described({"type": "number", "exclusiveMinimum": 0, "maximum": LIMIT}, description)
+def positive(title: str, description: str | None = None) -> dict:
+    return _field(title, {"type": "number", "exclusiveMinimum": 0, "maximum": LIMIT}, description)
 
 
-def at_least(minimum: float, description: str | None = None) -> dict:
-    return _described({"type": "number", "minimum": minimum, "maximum": LIMIT}, description)
+def at_least(minimum: float, title: str, description: str | None = None) -> dict:
+    return _field(title, {"type": "number", "minimum": minimum, "maximum": LIMIT}, description)
 
 
-def whole(minimum: int, description: str | None = None) -> dict:
-    return _described({"type": "integer", "minimum": minimum, "maximum": LIMIT}, description)
+def between(low: float, high: float, title: str, description: str, exclusive_high: bool = False) -> dict:
+    """A number above `low` and up to `high` (below it when `exclusive_high`)."""
+    top = {"exclusiveMaximum": high} if exclusive_high else {"maximum": high}
+    return _field(title, {"type": "number", "exclusiveMinimum": low, **top}, description)
 
 
-def text() -> dict:
-    return {"type": "string", "minLength": 1}
+def whole(minimum: int, title: str, description: str | None = None) -> dict:
+    return _field(title, {"type": "integer", "minimum": minimum, "maximum": LIMIT}, description)
 
 
-def numbers(count: int, description: str | None = None, item: dict | None = None) -> dict:
+def text(title: str, description: str | None = None) -> dict:
+    return _field(title, {"type": "string", "minLength": 1}, description)
+
+
+def choice(title: str, values: list, description: str | None = None) -> dict:
+    return _field(title, {"enum": values}, description)
+
+
+def flag(title: str) -> dict:
+    return {"title": title, "type": "boolean"}
+
+
+def numbers(count: int, title: str, description: str | None = None, item: dict | None = None) -> dict:
     """A list of exactly `count` numbers (coordinates unless `item` says otherwise)."""
-    return _described({"type": "array", "items": item or coordinate(), "minItems": count, "maxItems": count},
-                      description)
+    return _field(title, {"type": "array", "items": item or _number, "minItems": count, "maxItems": count},
+                  description)
 
 
-def list_of(definition: str) -> dict:
-    return {"type": "array", "items": ref(definition)}
+_number = {"type": "number", "minimum": -LIMIT, "maximum": LIMIT}
+
+
+def list_of(definition: str, title: str) -> dict:
+    return {"title": title, "type": "array", "items": ref(definition)}
 
 
 def ref(definition: str) -> dict:
+    """A field whose schema is in `$defs` (its title is the definition's)."""
     return {"$ref": f"#/$defs/{definition}"}
 
 
-def record(description: str, properties: dict, required: tuple[str, ...] = ()) -> dict:
+def record(title: str, description: str, properties: dict, required: tuple[str, ...] = ()) -> dict:
     """An object with exactly these properties."""
-    schema = {"type": "object", "description": description}
+    schema = {"title": title, "type": "object", "description": description}
     if required:
         schema["required"] = list(required)
     return {**schema, "additionalProperties": False, "properties": properties}

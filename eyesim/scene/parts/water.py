@@ -75,17 +75,17 @@ PART = Part(
     write=write,
     properties={"buoyancy": ref("buoyancy"), "drag": ref("drag")},
     defs={
-        "buoyancy": record("buoyancy and its centre (mm)", {
-            "volume": at_least(0, "displaced litres"),
-            "x": coordinate(),
-            "y": coordinate(),
-            "z": coordinate(),
+        "buoyancy": record("Buoyancy", "buoyancy and its centre (mm)", {
+            "volume": at_least(0, "Volume", "displaced litres"),
+            "x": coordinate("x"),
+            "y": coordinate("y"),
+            "z": coordinate("z"),
         }, required=("volume",)),
-        "drag": record("linear drag in water", {
-            "x": at_least(0, "N/(m/s) along x"),
-            "y": at_least(0, "N/(m/s) along y"),
-            "z": at_least(0, "N/(m/s) along z"),
-            "rotation": at_least(0, "N*m/(rad/s)"),
+        "drag": record("Drag", "linear drag in water", {
+            "x": at_least(0, "Drag along x", "N/(m/s) along x"),
+            "y": at_least(0, "Drag along y", "N/(m/s) along y"),
+            "z": at_least(0, "Drag along z", "N/(m/s) along z"),
+            "rotation": at_least(0, "Rotational drag", "N*m/(rad/s)"),
         }, required=("x", "y", "z")),
     },
 )

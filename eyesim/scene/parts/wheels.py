@@ -113,15 +113,15 @@ PART = Part(
     finish=finish,
     properties={"wheels": ref("wheels"), "steering": ref("steering")},
     defs={
-        "wheels": record("wheels", {
-            "diameter": positive("mm"),
-            "max_speed": positive("deg/s"),
-            "ticks_per_rev": whole(1, "encoder ticks per revolution"),
-            "track": positive("full distance between the left and right wheels in mm"),
+        "wheels": record("Wheels", "wheels", {
+            "diameter": positive("Diameter", "mm"),
+            "max_speed": positive("Top speed", "deg/s"),
+            "ticks_per_rev": whole(1, "Encoder ticks", "encoder ticks per revolution"),
+            "track": positive("Track", "full distance between the left and right wheels in mm"),
         }, required=("diameter", "max_speed", "ticks_per_rev", "track")),
-        "steering": record("the steered axle (Ackermann)", {
-            "offset": coordinate("mm ahead of the robot centre"),
-            "height": positive("axle height in mm"),
+        "steering": record("Steering", "the steered axle (Ackermann)", {
+            "offset": coordinate("Position", "mm ahead of the robot centre"),
+            "height": positive("Height", "axle height in mm"),
             "wheels": ref("wheels"),
         }, required=("offset",)),
     },
