@@ -9,6 +9,8 @@ the floor. Object frame: the same axes, origin at the object's centre on the flo
 Every position below is already converted into these frames, whatever dialect the file used
 (see docs/file-formats.md); the only exception is a robot's mesh placement (`model_offset`,
 `model_rotation`), which stays in the mesh's own axes because it only concerns drawing the mesh.
+`RobotType` and the specs of its parts (PsdSpec, CameraSpec ...) are declared by the robot part
+kinds in scene/parts/ and importable from here as well.
 """
 
 from __future__ import annotations

@@ -11,8 +11,8 @@ import dataclasses
 from eyesim.scene.parts import arm, body, camera, drive, lidar, psd, thrusters, water, wheels
 from eyesim.scene.parts.part import Part
 
-# In this order the reader finishes them (the arm sits on the chassis: after the body), the
-# writer writes their lines and RobotType lists their fields.
+# In this order the reader finishes them (the arm sits on the chassis: after the body), their
+# checks run, the writer writes their lines and RobotType lists their fields.
 PARTS: tuple[Part, ...] = (
     drive.PART,
     body.PART,

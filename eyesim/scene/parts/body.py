@@ -6,8 +6,8 @@ from pathlib import Path
 
 from eyesim.scene.description import Collider, Location
 from eyesim.scene.diagnostics import quoted
-from eyesim.scene.lexer import Line, format_number, quote_token
-from eyesim.scene.parts.part import (LIMIT, VR_AXIS, Part, PartReader, choice, coordinate, list_of, numbers, positive,
+from eyesim.scene.lexer import LARGEST, Line, format_number, quote_token
+from eyesim.scene.parts.part import (VR_AXIS, Part, PartReader, choice, coordinate, list_of, numbers, positive,
                                      record, text)
 
 DEFAULT_HEIGHT = 80.0  # mm of a robot whose file gives only a diameter
@@ -253,8 +253,8 @@ PART = Part(
     },
     defs={"collider": record("Collider", "a collision shape (mm)", {
         "kind": choice("Shape", ["box", "sphere", "capsule", "cylinder"]),
-        "size": {"title": "Size", "type": "array", "items": {"type": "number", "exclusiveMinimum": 0, "maximum": LIMIT},
-                 "minItems": 1, "maxItems": 3,
+        "size": {"title": "Size", "type": "array",
+                 "items": {"type": "number", "exclusiveMinimum": 0, "maximum": LARGEST}, "minItems": 1, "maxItems": 3,
                  "description": "box: (sx, sy, sz); sphere: (r); capsule, cylinder: (r, h) in mm"},
         "center": numbers(3, "Centre", POINT),
         "axis": choice("Axis", ["x", "y", "z"], "capsule or cylinder axis"),

@@ -2,10 +2,11 @@
 
 A part kind (the PSDs, the camera, the wheels ...) owns its configuration in one module of this
 package: the fields it adds to a robot type and their spec dataclass, the `.robi` keywords it
-reads and the lines it writes, and the JSON Schema of its fields. The `.robi` reader
-(scene/robi.py), the JSON reader and writer (scene/json_format.py) and the published robot
-schema all work from these declarations (registry: scene/parts/__init__.py). These modules need
-no physics: what a part does in the simulation lives in robot/components/.
+reads and the lines it writes, the JSON Schema of its fields and the checks of what was read.
+The `.robi` reader (scene/robi.py), the JSON reader and writer (scene/json_format.py), the robot
+type's checks (scene/robot_type.py) and the published robot schema all work from these
+declarations (registry: scene/parts/__init__.py). These modules need no physics: what a part
+does in the simulation lives in robot/components/.
 """
 
 from __future__ import annotations
@@ -16,9 +17,7 @@ from typing import Any, Callable
 from eyesim.scene.description import Location
 from eyesim.scene.diagnostics import Diagnostics, quoted
 from eyesim.scene.keyword_reader import KeywordReader
-from eyesim.scene.lexer import Line, integer, number, quote_token
-
-LIMIT = 1e9  # every number in a robot JSON file is within +-LIMIT (no overflow further on)
+from eyesim.scene.lexer import LARGEST, Line, integer, number, quote_token
 
 
 @dataclass(frozen=True)
@@ -105,15 +104,15 @@ def _field(title: str, schema: dict, description: str | None) -> dict:
 
 def coordinate(title: str, description: str | None = None) -> dict:
     """Any number (a position, an angle, an offset)."""
-    return _field(title, {"type": "number", "minimum": -LIMIT, "maximum": LIMIT}, description)
+    return _field(title, {"type": "number", "minimum": -LARGEST, "maximum": LARGEST}, description)
 
 
 def positive(title: str, description: str | None = None) -> dict:
-    return _field(title, {"type": "number", "exclusiveMinimum": 0, "maximum": LIMIT}, description)
+    return _field(title, {"type": "number", "exclusiveMinimum": 0, "maximum": LARGEST}, description)
 
 
 def at_least(minimum: float, title: str, description: str | None = None) -> dict:
-    return _field(title, {"type": "number", "minimum": minimum, "maximum": LIMIT}, description)
+    return _field(title, {"type": "number", "minimum": minimum, "maximum": LARGEST}, description)
 
 
 def between(low: float, high: float, title: str, description: str, exclusive_high: bool = False) -> dict:
@@ -123,7 +122,7 @@ def between(low: float, high: float, title: str, description: str, exclusive_hig
 
 
 def whole(minimum: int, title: str, description: str | None = None) -> dict:
-    return _field(title, {"type": "integer", "minimum": minimum, "maximum": LIMIT}, description)
+    return _field(title, {"type": "integer", "minimum": minimum, "maximum": LARGEST}, description)
 
 
 def text(title: str, description: str | None = None) -> dict:
@@ -140,11 +139,8 @@ def flag(title: str) -> dict:
 
 def numbers(count: int, title: str, description: str | None = None, item: dict | None = None) -> dict:
     """A list of exactly `count` numbers (coordinates unless `item` says otherwise)."""
-    return _field(title, {"type": "array", "items": item or _number, "minItems": count, "maxItems": count},
-                  description)
-
-
-_number = {"type": "number", "minimum": -LIMIT, "maximum": LIMIT}
+    item = item or {"type": "number", "minimum": -LARGEST, "maximum": LARGEST}
+    return _field(title, {"type": "array", "items": item, "minItems": count, "maxItems": count}, description)
 
 
 def list_of(definition: str, title: str) -> dict:
