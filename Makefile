@@ -54,7 +54,8 @@ system-packages:
 viewer:
 	cd web && npm ci --no-audit --no-fund && npm run build
 
-# Regenerate the protocol tables from protocol/protocol.json.
+# Regenerate the protocol tables and the pass-through layers of the API (eyebot.h declarations, C
+# wrappers, eye modules) from protocol/protocol.json.
 protocol:
 	$(PYTHON) protocol/generate.py
 

@@ -1,4 +1,5 @@
-"""Serial ports: byte streams the simulator keeps for each robot (interface 0 serial, 1.. USB)."""
+"""The SER functions that do more than pass values through (eye/ser.py has the rest): bytes and text both
+ways, one byte per character (Latin-1)."""
 
 from __future__ import annotations
 
@@ -6,8 +7,7 @@ import ctypes
 
 from eye._library import C
 
-__all__ = ["SERInit", "SERSendChar", "SERSend", "SERReceiveChar", "SERReceive", "SERCheck", "SERFlush",
-           "SERClose"]
+__all__ = ["SERSendChar", "SERSend", "SERReceiveChar", "SERReceive"]
 
 RECEIVE_SIZE = 1024  # what SERReceive takes at most per call unless told otherwise
 
@@ -21,11 +21,6 @@ def _bytes(data: str | bytes | bytearray, function: str) -> bytes:
     except UnicodeEncodeError:
         raise ValueError(f"{function}: characters above \\xff cannot be sent; send bytes "
                          f"(e.g. text.encode('utf-8'))") from None
-
-
-def SERInit(interface: int, baud: int, handshake: int) -> int:
-    """Opens a serial interface at a baud rate (50 .. 230400). Returns 0 (1 on error)."""
-    return C.SERInit(interface, baud, handshake)
 
 
 def SERSendChar(interface: int, ch: str | bytes | int) -> int:
@@ -53,18 +48,3 @@ def SERReceive(interface: int, size: int = RECEIVE_SIZE) -> str:
     buffer = ctypes.create_string_buffer(size + 1)
     count = C.SERReceive(interface, buffer, size)
     return buffer.raw[:max(count, 0)].decode("latin-1")
-
-
-def SERCheck(interface: int) -> bool:
-    """Whether a character is waiting."""
-    return bool(C.SERCheck(interface))
-
-
-def SERFlush(interface: int) -> int:
-    """Drops what was received and not read yet. Returns 0 (1 on error)."""
-    return C.SERFlush(interface)
-
-
-def SERClose(interface: int) -> int:
-    """Closes the interface. Returns 0 (1 on error)."""
-    return C.SERClose(interface)

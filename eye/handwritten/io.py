@@ -1,4 +1,5 @@
-"""Digital and analog I/O: 16 digital lines and 8 analog channels per robot, and the battery voltage."""
+"""The DIGITAL and ANALOG functions that do more than pass values through (eye/io.py has the rest): a
+direction given as a character, and the buffer for the recording ANALOGRecord asked for."""
 
 from __future__ import annotations
 
@@ -6,8 +7,7 @@ import ctypes
 
 from eye._library import C
 
-__all__ = ["DIGITALSetup", "DIGITALRead", "DIGITALReadAll", "DIGITALWrite", "ANALOGRead", "ANALOGVoltage",
-           "ANALOGRecord", "ANALOGTransfer"]
+__all__ = ["DIGITALSetup", "ANALOGRecord", "ANALOGTransfer"]
 
 _recording = [0]  # samples asked for by the last ANALOGRecord, for ANALOGTransfer's buffer
 
@@ -17,31 +17,6 @@ def DIGITALSetup(io: int, direction: str | int) -> int:
     pull-down. Returns 0 (1 on error)."""
     code = direction if isinstance(direction, int) else ord(str(direction)[:1] or "\0")
     return C.DIGITALSetup(io, bytes([code & 0xFF]))
-
-
-def DIGITALRead(io: int) -> int:
-    """The level of a digital line (0 or 1)."""
-    return C.DIGITALRead(io)
-
-
-def DIGITALReadAll() -> int:
-    """The levels of all 16 lines as bits (bit 0 = line 1)."""
-    return C.DIGITALReadAll()
-
-
-def DIGITALWrite(io: int, state: int) -> int:
-    """Sets an output line to 0 or 1. Returns 0 (1 on error)."""
-    return C.DIGITALWrite(io, state)
-
-
-def ANALOGRead(channel: int) -> int:
-    """The value of an analog channel (1 .. 8)."""
-    return C.ANALOGRead(channel)
-
-
-def ANALOGVoltage() -> int:
-    """The battery voltage in 0.01 V (-1 on error)."""
-    return C.ANALOGVoltage()
 
 
 def ANALOGRecord(channel: int, iterations: int) -> int:

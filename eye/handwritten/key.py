@@ -1,4 +1,5 @@
-"""Keys: the four soft keys under the LCD and touches (clicks) on the screen."""
+"""Keys: every KEY function is written by hand, because key codes are unsigned in Python (ANYKEY =
+0xFFFFFFFF) and the touch functions also fill in ctypes ints, the eye.py way."""
 
 from __future__ import annotations
 

@@ -1,11 +1,12 @@
-"""Camera: frames from the robot's virtual camera, returned as new buffers as EyeSim's eye.py did."""
+"""Camera: frames from the robot's virtual camera, returned as new buffers as EyeSim's eye.py did, and the
+size CAMInit chose (every CAM function keeps or checks it, so all are written by hand)."""
 
 from __future__ import annotations
 
 import ctypes
 import sys
 
-from eye import lcd
+from eye.handwritten import lcd
 from eye._library import C, EyeSimError, library_int
 from eye._values import Buffer, new_buffer, output_buffer
 
@@ -18,7 +19,7 @@ CAMWIDTH = CAMHEIGHT = CAMPIXELS = CAMSIZE = 0
 
 def _publish_size(width: int, height: int) -> None:
     values = {"CAMWIDTH": width, "CAMHEIGHT": height, "CAMPIXELS": width * height, "CAMSIZE": 3 * width * height}
-    for module in (sys.modules[__name__], sys.modules.get("eye")):
+    for module in (sys.modules[__name__], sys.modules.get("eye.cam"), sys.modules.get("eye")):
         if module is not None:
             for name, value in values.items():
                 setattr(module, name, value)

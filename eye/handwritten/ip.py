@@ -1,7 +1,7 @@
 """Image processing, done by the C library on images of the IP size (IPSetSize, or CAMInit).
 
 Functions that make an image return a new buffer (as EyeSim's eye.py did); most also take an
-optional output buffer to fill instead, as in C."""
+optional output buffer to fill instead, as in C. IPSetSize only passes its value through (eye/ip.py)."""
 
 from __future__ import annotations
 
@@ -11,9 +11,9 @@ import os
 from eye._library import C, library_int
 from eye._values import Buffer, input_buffer, new_buffer, output_buffer, path
 
-__all__ = ["IPSetSize", "IPReadFile", "IPWriteFile", "IPWriteFileGray", "IPLaplace", "IPSobel", "IPCol2Gray",
-           "IPGray2Col", "IPRGB2Col", "IPCol2HSI", "IPOverlay", "IPOverlayGray", "IPPRGB2Col", "IPPCol2RGB",
-           "IPPCol2HSI", "IPPRGB2Hue", "IPPRGB2HSI"]
+__all__ = ["IPReadFile", "IPWriteFile", "IPWriteFileGray", "IPLaplace", "IPSobel", "IPCol2Gray", "IPGray2Col",
+           "IPRGB2Col", "IPCol2HSI", "IPOverlay", "IPOverlayGray", "IPPRGB2Col", "IPPCol2RGB", "IPPCol2HSI",
+           "IPPRGB2Hue", "IPPRGB2HSI"]
 
 
 def _size() -> tuple[int, int, str]:
@@ -35,12 +35,6 @@ def _colour(function: str, data: Buffer, what: str) -> ctypes.Array:
 def _out(function: str, data: Buffer | None, colour: bool) -> ctypes.Array:
     pixels, size, why = _size()
     return output_buffer(data, size if colour else pixels, function, "the output image", why)
-
-
-def IPSetSize(resolution: int) -> int:
-    """Makes a resolution (QQVGA .. CAM5MP) the size of the images the IP functions work on.
-    Returns 0, or 1 for anything else (CUSTOM)."""
-    return C.IPSetSize(resolution)
 
 
 def IPReadFile(filename: str | os.PathLike, img: Buffer | None = None) -> list | int:
