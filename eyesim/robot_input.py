@@ -1,5 +1,7 @@
-"""Input a robot gets from outside — the viewer, `eyesim run` scripts, tests: keys, touches, IR codes, serial
-bytes, digital and analog levels. Run on the simulation thread; bad input raises ValueError."""
+"""What input from outside does to a robot: keys, touches, IR codes, serial bytes, digital and
+analog levels. Run on the simulation thread, after eyesim.inputs checked the input (from the
+viewer, `eyesim run` options or the testing API); a robot that lost the part meanwhile raises
+ValueError."""
 
 from __future__ import annotations
 
@@ -7,7 +9,7 @@ from eyesim.robot.components.analog_io import AnalogInputs
 from eyesim.robot.components.digital_io import DigitalLines
 from eyesim.robot.components.irtv import IrReceiver
 from eyesim.robot.components.keys import Keys
-from eyesim.robot.components.lcd import HEIGHT, WIDTH, Lcd
+from eyesim.robot.components.lcd import Lcd
 from eyesim.robot.components.serial_ports import SerialPorts
 
 
@@ -31,8 +33,6 @@ def touch(sim, robot_id: int, x: int, y: int) -> None:
     """A touch on the LCD at pixel (x, y): on the shown menu bar it presses that soft key,
     anywhere else it is a touch for KEYGetXY/KEYReadXY."""
     robot, keys = _part(sim, robot_id, Keys, "touch screen")
-    if not (0 <= x < WIDTH and 0 <= y < HEIGHT):
-        raise ValueError(f"({x}, {y}) is outside the {WIDTH}x{HEIGHT} LCD")
     lcd = robot.component(Lcd)
     key = lcd.menu_key_at(x, y) if lcd is not None else None
     if key is not None:

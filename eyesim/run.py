@@ -5,18 +5,16 @@ from __future__ import annotations
 import dataclasses
 import logging
 import os
-import re
 import sys
 import webbrowser
 
-from eyesim import robot_input, scripted_input
+from eyesim import scripted_input
 from eyesim.clock import DETERMINISTIC, MAX_SPEED, REALTIME, Clock
 from eyesim.engine import DEFAULT_CALL_TIME_US, Simulation
 from eyesim.launcher import Launcher
 from eyesim.net.io_thread import IoThread
 from eyesim.net.program_server import ProgramServer
 from eyesim.protocol import generated as g
-from eyesim.robot.components.keys import KEY_NAMES
 from eyesim.robot_log import RobotLog
 from eyesim.scene.sim import MAX_CALL_TIME_MS
 
@@ -40,9 +38,7 @@ def register(subparsers) -> None:
                         help="realtime (default with the viewer) or deterministic (default headless)")
     parser.add_argument("--program", action="append", default=[], metavar="ROBOT=PATH",
                         help="run PATH for ROBOT (id or name); repeatable; overrides the scene's program")
-    parser.add_argument("--key", action="append", default=[], metavar="ROBOT:KEY@SECONDS",
-                        help="press a soft key at a simulation time, e.g. 1:KEY1@2.5; repeatable")
-    scripted_input.add_arguments(parser)  # --touch, --irtv, --serial, --digital, ...
+    scripted_input.add_arguments(parser)  # --key, --touch, --irtv, --serial, --digital, ...
     parser.add_argument("--psd-noise", type=float, metavar="MM",
                         help="standard deviation of Gaussian noise on PSD readings (default: the scene's PSDNOISE, else 0)")
     parser.add_argument("--seed", type=int, help="seed of the simulator's random numbers (default: the scene's SEED, else 0)")
@@ -93,14 +89,6 @@ def parse_program(sim: Simulation, text: str) -> tuple[int, str]:
     if not sep or not path:
         raise UsageError(f"--program {text!r}: expected ROBOT=PATH, e.g. 1=./drive")
     return find_robot(sim, selector).id, path
-
-
-def parse_key(sim: Simulation, text: str) -> tuple[int, int, float]:
-    match = re.fullmatch(r"(\w+):(KEY[1-4])@([0-9.]+)", text.strip(), flags=re.IGNORECASE)
-    if not match:
-        raise UsageError(f"--key {text!r}: expected ROBOT:KEYn@SECONDS, e.g. 1:KEY1@2.5")
-    robot = find_robot(sim, match.group(1))
-    return robot.id, KEY_NAMES[match.group(2).upper()], float(match.group(3))
 
 
 def load(path: str | None):
@@ -170,9 +158,6 @@ def simulate(args) -> int:
     for text in args.program:
         robot_id, path = parse_program(sim, text)
         programs[robot_id] = path
-    for text in args.key:
-        robot_id, key, seconds = parse_key(sim, text)
-        sim.schedule(round(seconds * 1e6), lambda s, r=robot_id, k=key: robot_input.key(s, r, k))
     try:
         scripted_input.schedule_inputs(sim, args, lambda selector: find_robot(sim, selector))
     except ValueError as error:

@@ -1,22 +1,24 @@
-"""`eyesim run` options that script a robot's outside world: touches, IR codes, serial input, I/O levels.
+"""`eyesim run` options that script a robot's outside world: keys, touches, IR codes, serial input,
+I/O levels.
 
-Each takes effect at a simulation time, so headless runs and tests behave the same every time."""
+Each option's text becomes an input command of eyesim.inputs (the same table, fields and checks as
+the browser's) that takes effect at a simulation time, so headless runs and tests behave the same
+every time."""
 
 from __future__ import annotations
 
 import re
 
-from eyesim import robot_input
-from eyesim.robot.components.analog_io import CHANNELS, MAX_VALUE
-from eyesim.robot.components.digital_io import LINES
-from eyesim.robot.components.irtv import code_of
-from eyesim.robot.components.lcd import HEIGHT, WIDTH
+from eyesim import inputs
+from eyesim.robot.components.keys import KEY_NAMES
 from eyesim.robot.components.serial_ports import INTERFACES, SerialPorts
 
 AT = r"@([0-9]+(?:\.[0-9]*)?)"
 
 
 def add_arguments(parser) -> None:
+    parser.add_argument("--key", action="append", default=[], metavar="ROBOT:KEY@SECONDS",
+                        help="press a soft key at a simulation time, e.g. 1:KEY1@2.5; repeatable")
     parser.add_argument("--touch", action="append", default=[], metavar="ROBOT:X,Y@SECONDS",
                         help="touch the LCD at pixel X,Y at a simulation time, e.g. 1:100,50@2; repeatable")
     parser.add_argument("--irtv", action="append", default=[], metavar="ROBOT:BUTTON@SECONDS",
@@ -33,60 +35,50 @@ def add_arguments(parser) -> None:
                         help="set analog channel 1..8 to 0..1023 at a simulation time; repeatable")
 
 
-def _match(pattern: str, text: str, option: str, example: str) -> re.Match:
-    match = re.fullmatch(pattern, text.strip(), flags=re.DOTALL)
-    if not match:
-        raise ValueError(f"{option} {text!r}: expected e.g. {example}")
-    return match
+def _serial_text(text: str) -> str:
+    """The option's text with its Python escapes (\\n, \\xNN) resolved, one character per byte."""
+    try:
+        return text.encode("latin-1").decode("unicode_escape")
+    except (UnicodeError, ValueError):
+        raise ValueError("the text must be Latin-1 with Python escapes (\\n, \\xNN)") from None
 
 
-def _at(sim, seconds: str, action) -> None:
-    sim.schedule(round(float(seconds) * 1e6), action)
-
-
-def _check(ok: bool, option: str, text: str, problem: str) -> None:
-    if not ok:
-        raise ValueError(f"{option} {text!r}: {problem}")
+# Option -> (pattern of its text, an example, the input command from the pattern's groups but the
+# robot and the time: the first and the last group).
+OPTIONS = {
+    "key": (r"(\w+):(KEY[1-4])" + AT, "1:KEY1@2.5",
+            lambda g: {"type": "key", "key": KEY_NAMES[g[0].upper()]}),
+    "touch": (r"(\w+):(\d+),(\d+)" + AT, "1:100,50@2.5",
+              lambda g: {"type": "touch", "x": int(g[0]), "y": int(g[1])}),
+    "irtv": (r"(\w+):([^@]+)" + AT, "1:OK@1.5", lambda g: {"type": "irtv", "code": g[0]}),
+    "serial": (r"(\w+):(\d+):(.*)" + AT, "1:0:hello\\n@2",
+               lambda g: {"type": "serial", "interface": int(g[0]), "text": _serial_text(g[1])}),
+    "digital": (r"(\w+):(\d+)=([01-])" + AT, "1:3=1@0.5",
+                lambda g: {"type": "digital", "line": int(g[0]), "level": None if g[1] == "-" else int(g[1])}),
+    "analog": (r"(\w+):(\d+)=(\d+)" + AT, "1:2=700@0.5",
+               lambda g: {"type": "analog", "channel": int(g[0]), "value": int(g[1])}),
+}
 
 
 def schedule_inputs(sim, args, find_robot) -> None:
     """Schedules every scripted input of `args`; ValueError names a bad one.
     `find_robot(selector)` turns an id or a name into the robot."""
-    for text in args.touch:
-        m = _match(r"(\w+):(\d+),(\d+)" + AT, text, "--touch", "1:100,50@2.5")
-        robot, x, y = find_robot(m[1]).id, int(m[2]), int(m[3])
-        _check(x < WIDTH and y < HEIGHT, "--touch", text, f"outside the {WIDTH}x{HEIGHT} LCD")
-        _at(sim, m[4], lambda s, r=robot, x=x, y=y: robot_input.touch(s, r, x, y))
-    for text in args.irtv:
-        m = _match(r"(\w+):([^@]+)" + AT, text, "--irtv", "1:OK@1.5")
-        robot = find_robot(m[1]).id
-        try:
-            code = code_of(m[2])
-        except ValueError as error:
-            raise ValueError(f"--irtv {text!r}: {error}") from None
-        _at(sim, m[3], lambda s, r=robot, c=code: robot_input.irtv(s, r, c))
-    for text in args.serial:
-        m = _match(r"(\w+):(\d+):(.*)" + AT, text, "--serial", "1:0:hello\\n@2")
-        robot, interface = find_robot(m[1]).id, int(m[2])
-        _check(interface in INTERFACES, "--serial", text, "the interface is not 0..20")
-        try:
-            data = m[3].encode("latin-1").decode("unicode_escape").encode("latin-1")
-        except (UnicodeError, ValueError):
-            raise ValueError(f"--serial {text!r}: the text must be Latin-1 with Python escapes (\\n, \\xNN)") from None
-        _at(sim, m[4], lambda s, r=robot, i=interface, d=data: robot_input.serial(s, r, i, d))
+    for option, (pattern, example, command_of) in OPTIONS.items():
+        for text in getattr(args, option):
+            match = re.fullmatch(pattern, text.strip(), flags=re.DOTALL | re.IGNORECASE)
+            if not match:
+                raise ValueError(f"--{option} {text!r}: expected e.g. {example}")
+            try:
+                command = {**command_of(match.groups()[1:-1]), "robot": find_robot(match[1]).id}
+                action = inputs.prepare(sim, command)
+            except ValueError as error:
+                raise ValueError(f"--{option} {text!r}: {error}") from None
+            sim.schedule(round(float(match.groups()[-1]) * 1e6), action)
     for text in args.serial_loopback:
-        m = _match(r"(\w+):(\d+)", text, "--serial-loopback", "1:0")
-        robot, interface = find_robot(m[1]), int(m[2])
-        _check(interface in INTERFACES, "--serial-loopback", text, "the interface is not 0..20")
+        match = re.fullmatch(r"(\w+):(\d+)", text.strip())
+        if not match:
+            raise ValueError(f"--serial-loopback {text!r}: expected e.g. 1:0")
+        robot, interface = find_robot(match[1]), int(match[2])
+        if interface not in INTERFACES:
+            raise ValueError(f"--serial-loopback {text!r}: the interface is not 0..20")
         robot.component(SerialPorts).port(interface).loopback = True
-    for text in args.digital:
-        m = _match(r"(\w+):(\d+)=([01-])" + AT, text, "--digital", "1:3=1@0.5")
-        robot, line, level = find_robot(m[1]).id, int(m[2]), None if m[3] == "-" else int(m[3])
-        _check(1 <= line <= LINES, "--digital", text, f"the line is not 1..{LINES}")
-        _at(sim, m[4], lambda s, r=robot, n=line, v=level: robot_input.digital(s, r, n, v))
-    for text in args.analog:
-        m = _match(r"(\w+):(\d+)=(\d+)" + AT, text, "--analog", "1:2=700@0.5")
-        robot, channel, value = find_robot(m[1]).id, int(m[2]), int(m[3])
-        _check(1 <= channel <= CHANNELS, "--analog", text, f"the channel is not 1..{CHANNELS}")
-        _check(value <= MAX_VALUE, "--analog", text, f"the value is not 0..{MAX_VALUE}")
-        _at(sim, m[4], lambda s, r=robot, c=channel, v=value: robot_input.analog(s, r, c, v))

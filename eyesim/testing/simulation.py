@@ -22,18 +22,14 @@ import threading
 from dataclasses import dataclass
 from pathlib import Path
 
-from eyesim import robot_input
+from eyesim import inputs
 from eyesim.clock import DETERMINISTIC, Clock
 from eyesim.engine import Simulation as Engine
 from eyesim.launcher import Launcher, ProgramOptions
 from eyesim.net.program_server import ProgramServer
 from eyesim.protocol import generated as g
-from eyesim.robot.components.analog_io import CHANNELS, MAX_VALUE
-from eyesim.robot.components.digital_io import LINES
-from eyesim.robot.components.irtv import code_of
 from eyesim.robot.components.keys import KEY_NAMES
-from eyesim.robot.components.lcd import HEIGHT, WIDTH
-from eyesim.robot.components.serial_ports import INTERFACES, SerialPorts
+from eyesim.robot.components.serial_ports import SerialPorts
 from eyesim.scene.description import Scene
 from eyesim.testing.callable_program import start_callable, stop_callable
 from eyesim.testing.contacts import ContactTracker
@@ -216,47 +212,32 @@ class Simulation:
         code = KEY_NAMES.get(str(key).upper()) if not isinstance(key, int) else key
         if code is None:
             raise SimulationError(f"{key!r} is not KEY1..KEY4")
-        robot_id = self._robot(robot).id
-        self.at(at, lambda s: robot_input.key(s, robot_id, code))
+        self._input(robot, at, type="key", key=code)
 
     def touch(self, robot, x: int, y: int, at: float) -> None:
-        robot_id = self._robot(robot).id
-        if not (0 <= x < WIDTH and 0 <= y < HEIGHT):
-            raise SimulationError(f"touch at ({x}, {y}) is outside the {WIDTH}x{HEIGHT} LCD")
-        self.at(at, lambda s: robot_input.touch(s, robot_id, x, y))
+        self._input(robot, at, type="touch", x=x, y=y)
 
     def irtv(self, robot, button: str, at: float) -> None:
-        robot_id, code = self._robot(robot).id, self._checked(lambda: code_of(button))
-        self.at(at, lambda s: robot_input.irtv(s, robot_id, code))
+        self._input(robot, at, type="irtv", code=button)
 
     def serial(self, robot, interface: int, data: str | bytes, at: float) -> None:
-        robot_id = self._robot(robot).id
-        if interface not in INTERFACES:
-            raise SimulationError(f"serial interface {interface} is not 0..20")
-        data = data.encode("latin-1") if isinstance(data, str) else bytes(data)
-        self.at(at, lambda s: robot_input.serial(s, robot_id, interface, data))
+        text = data if isinstance(data, str) else bytes(data).decode("latin-1")
+        self._input(robot, at, type="serial", interface=interface, text=text)
 
     def serial_loopback(self, robot, interface: int) -> None:
         self._robot(robot).component(SerialPorts).port(interface).loopback = True
 
     def digital(self, robot, line: int, level: int | None, at: float) -> None:
-        robot_id = self._robot(robot).id
-        if not 1 <= line <= LINES or level not in (0, 1, None):
-            raise SimulationError(f"digital line {line} level {level}: lines are 1..{LINES}, levels 0, 1 or None")
-        self.at(at, lambda s: robot_input.digital(s, robot_id, line, level))
+        self._input(robot, at, type="digital", line=line, level=level)
 
     def analog(self, robot, channel: int, value: int, at: float) -> None:
-        robot_id = self._robot(robot).id
-        if not (1 <= channel <= CHANNELS and 0 <= value <= MAX_VALUE):
-            raise SimulationError(f"analog channel {channel} value {value}: channels are 1..{CHANNELS}, "
-                                  f"values 0..{MAX_VALUE}")
-        self.at(at, lambda s: robot_input.analog(s, robot_id, channel, value))
+        self._input(robot, at, type="analog", channel=channel, value=value)
 
-    @staticmethod
-    def _checked(make):
+    def _input(self, robot, at: float, **command) -> None:
+        """An input of eyesim.inputs (the browser's and `eyesim run`'s table and checks) at a time."""
         try:
-            return make()
-        except ValueError as error:
+            self.at(at, inputs.prepare(self.engine, {**command, "robot": self._robot(robot).id}))
+        except inputs.InputError as error:
             raise SimulationError(str(error)) from None
 
     # -- running ---------------------------------------------------------------------------------

@@ -20,11 +20,11 @@ from pathlib import Path
 from aiohttp import WSMsgType, web
 from PIL import Image
 
-from eyesim import robot_input
+from eyesim import inputs
 from eyesim.paths import STATIC_DIR
 from eyesim.protocol import generated as g
 from eyesim.record.sampling import robot_state
-from eyesim.web import channel_schema, mesh_message, messages, place_command, robot_io_commands, timeline
+from eyesim.web import channel_schema, mesh_message, messages, timeline
 from eyesim.web.access import AccessPolicy
 from eyesim.web.live_history import LiveHistory
 from eyesim.web.program_control import ProgramControl
@@ -241,11 +241,11 @@ class ViewerHub:
         """Queue a browser command (already checked against the schema) for the simulation;
         return an error text for one the simulation state refuses."""
         kind = message["type"]
-        if kind == "key":
-            robot, key = message["robot"], message["key"]
-            if self.sim.robot_by_id(robot) is None:
-                return f"key: no robot {robot!r}"
-            self.sim.call(lambda sim: robot_input.key(sim, robot, key))
+        if kind in inputs.INPUTS:
+            try:
+                self.sim.call(inputs.prepare(self.sim, message, checked=True))
+            except inputs.InputError as error:
+                return str(error)
         elif kind in ("pause", "resume"):
             self.sim.call(lambda sim: sim.clock.set_paused(kind == "pause", sim.time_us))
         elif kind == "speed":
@@ -253,10 +253,6 @@ class ViewerHub:
             self.sim.call(lambda sim: sim.clock.set_speed(value, sim.time_us))
         elif kind == "reset":
             self.sim.call(lambda sim: sim.reset())
-        elif kind in robot_io_commands.COMMANDS:
-            return robot_io_commands.command(self.sim, message)
-        elif kind == "place":
-            return place_command.place(self.sim, message)
         else:  # in the schema but not handled here: say so in the log (see command_text)
             raise NotImplementedError(f"no handler for the viewer command {kind!r}")
         return None

@@ -4,7 +4,7 @@ import pytest
 from support.client import RemoteError
 from support.connected import connected_program
 
-from eyesim import robot_input
+from eyesim import inputs, robot_input
 from eyesim.robot.components.keys import KEY1, KEY2, KEY3, KEY4
 
 ANYKEY = -1
@@ -68,7 +68,7 @@ def test_a_touch_on_the_menu_bar_presses_the_soft_key_below_it(program):
 
 def test_touches_outside_the_lcd_are_refused():
     with connected_program() as (sim, _client):
-        with pytest.raises(ValueError, match=r"\(480, 0\) is outside the 480x320 LCD"):
-            robot_input.touch(sim, 1, 480, 0)
+        with pytest.raises(ValueError, match="touch: x must be a whole number from 0 to 479, not 480"):
+            inputs.prepare(sim, {"type": "touch", "robot": 1, "x": 480, "y": 0})
         with pytest.raises(ValueError, match="no robot 2"):
-            robot_input.touch(sim, 2, 0, 0)
+            inputs.prepare(sim, {"type": "touch", "robot": 2, "x": 0, "y": 0})

@@ -165,15 +165,14 @@ def test_camera_images_and_lidar_scans_are_recorded_as_the_program_saw_them(tmp_
 
 
 def test_inputs_and_viewer_edits_are_recorded(tmp_path):
-    from eyesim import robot_input
-    from eyesim.web import place_command
+    from eyesim import inputs, robot_input
 
     sim = Simulation(load_scene(DEFAULT_SCENE), Clock(DETERMINISTIC))
     sim.schedule(100_000, lambda s: robot_input.key(s, 1, 2))
     sim.schedule(200_000, lambda s: robot_input.touch(s, 1, 100, 50))
     sim.schedule(300_000, lambda s: robot_input.analog(s, 1, 2, 700))
     # the viewer's command is checked, then queued: done at the next step boundary
-    sim.schedule(400_000, lambda s: place_command.place(s, {"type": "place", "robot": 1, "x": 1.5, "y": 1.0, "phi": 1.0}))
+    sim.schedule(400_000, lambda s: s.call(inputs.prepare(s, {"type": "place", "robot": 1, "x": 1.5, "y": 1.0, "phi": 1.0})))
     with Recorder(sim, tmp_path / "inputs.mcap"):
         sim.run(until=1)
     with open(tmp_path / "inputs.mcap", "rb") as file:
