@@ -244,10 +244,6 @@ class Launcher:
         """The robot's most recent program run, if it had one."""
         return next((run for run in reversed(self.runs) if run.robot_id == robot_id), None)
 
-    @property
-    def all_exited(self) -> bool:
-        return all(run.process is None or run.process.poll() is not None for run in self.runs)
-
     def stop_all(self, grace: float = 2.0, let_finish: float = 0.0) -> None:
         """Stop programs still running (the run is over) and wait for their output to drain.
 

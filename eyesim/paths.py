@@ -17,9 +17,5 @@ def robios_dir() -> Path:
     return Path(override) if override else PACKAGE_DIR / "robios"
 
 
-def robios_include_dir() -> Path:
-    return robios_dir() / "include"
-
-
 def robios_lib_dir() -> Path:
     return robios_dir() / "lib"

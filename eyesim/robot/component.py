@@ -16,8 +16,6 @@ class Component:
     `before_step`/`after_step` around every physics step, and `publish` at each publish tick
     while someone shows LCD and camera images."""
 
-    kind = "component"
-
     def bind(self, world: PhysicsWorld) -> None:
         self.world = world
 

@@ -130,10 +130,6 @@ def integer(text: str) -> int | None:
     return None
 
 
-def is_number(text: str) -> bool:
-    return number(text) is not None
-
-
 def format_number(value: float) -> str:
     """The shortest text that reads back as exactly `value` ('90', '22.7', '-0.025')."""
     if value == int(value) and abs(value) < 1e15:

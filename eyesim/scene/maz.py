@@ -16,7 +16,6 @@ DEFAULT_CELL_SIZE = 360.0  # mm, EyeSim's default
 START_HEADINGS = {"s": 90.0, "u": 90.0, "d": 270.0, "l": 180.0, "r": 0.0}
 OBJECT_TYPES = {"o": "Soccer", "x": "Crate"}
 FINISH_COLOR = (0, 200, 0, 255)
-MAZE_CHARACTERS = " |_.Ff" + "".join(k + k.upper() for k in (*START_HEADINGS, *OBJECT_TYPES))
 
 
 @dataclass(frozen=True)

@@ -39,8 +39,6 @@ class Recording:
 class AnalogInputs(Component):
     """Values are set from outside (viewer, scripts) and stay until changed."""
 
-    kind = "analog_io"
-
     def __init__(self):
         self.reset()
 

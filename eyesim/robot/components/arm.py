@@ -55,7 +55,6 @@ class JointServo(Servo):
 
 
 class Arm(Component):
-    kind = "arm"
 
     def __init__(self, context):
         arm = context.robot_type.arm

@@ -17,8 +17,6 @@ class Battery(Component):
     """Voltage falls linearly with the energy used, from FULL_VOLTS to EMPTY_VOLTS. Motors use
     what their actuators deliver (|force x velocity|), so driving drains faster than standing."""
 
-    kind = "battery"
-
     def __init__(self, context):
         self.prefix = context.prefix + "/"
         self.energy_j = CAPACITY_J

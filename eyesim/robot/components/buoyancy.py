@@ -14,8 +14,6 @@ class Buoyancy(Component):
     """The hull is the robot's height above its origin; buoyancy acts at the centre of buoyancy.
     Out of the water (or in a scene without water) nothing acts and the robot simply falls."""
 
-    kind = "buoyancy"
-
     def __init__(self, context):
         robot_type = context.robot_type
         spec = robot_type.buoyancy or BuoyancySpec(0.0)

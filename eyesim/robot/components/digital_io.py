@@ -12,8 +12,6 @@ class DigitalLines(Component):
     """Every line starts as a plain input. An input reads the level the outside drives; undriven,
     it reads 1 with a pull-up ('I') and 0 otherwise. An output reads what the program wrote."""
 
-    kind = "digital_io"
-
     def __init__(self):
         self.reset()
 

@@ -27,7 +27,6 @@ ARMATURE = 0.05  # kg
 
 
 class Gripper(Component):
-    kind = "gripper"
 
     def __init__(self, context, arm: Arm):
         spec = context.robot_type.arm.gripper

@@ -28,8 +28,6 @@ def code_of(text: str) -> int:
 class IrReceiver(Component):
     """Each code is delivered once, in order, to IRTVGet or IRTVRead. The receiver is always on."""
 
-    kind = "irtv"
-
     def __init__(self):
         self.codes: deque[int] = deque(maxlen=MAX_WAITING)
 

@@ -29,8 +29,6 @@ class PsdSensor(Component):
     """The sensor is a MuJoCo site on the chassis whose x axis is the beam, so MuJoCo keeps its
     world pose up to date and a reading is a single ray cast."""
 
-    kind = "psd"
-
     def __init__(self, spec: PsdSpec, context):
         self.spec = spec
         self.robot = context.robot

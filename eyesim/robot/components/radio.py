@@ -17,8 +17,6 @@ class Radio(Component):
     Messages wait in the inbox until a program reads them, whether or not the radio was on when
     they were sent: a robot whose program starts a moment later loses nothing."""
 
-    kind = "radio"
-
     def __init__(self):
         self.inbox: deque[tuple[int, bytes]] = deque()
         self.owner = None

@@ -26,7 +26,6 @@ class SerialPort:
 
 
 class SerialPorts(Component):
-    kind = "serial"
 
     def __init__(self):
         self.ports = {number: SerialPort() for number in INTERFACES}

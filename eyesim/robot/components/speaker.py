@@ -12,8 +12,6 @@ class Speaker(Component):
     """One sound at a time: a new beep or file replaces the one playing. Playing takes simulation
     time; the viewer plays the same sound for the user."""
 
-    kind = "speaker"
-
     def __init__(self):
         self.playing_until_us = 0
 

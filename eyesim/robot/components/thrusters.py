@@ -47,7 +47,6 @@ class Thruster:
 
 
 class Thrusters(Component):
-    kind = "thrusters"
 
     def __init__(self, context):
         self.motors = {t.motor: Thruster(context.spec, context.body, f"{context.prefix}/thruster{t.motor}", t)

@@ -20,8 +20,6 @@ class ProgramTimers(Component):
     """Timers belong to the program that attached them: when another program (a new connection)
     uses them, the old program's timers are gone. They survive a world reset, like the program."""
 
-    kind = "timers"
-
     def __init__(self):
         self.owner = None
         self.timers: dict[int, Timer] = {}

@@ -67,7 +67,6 @@ class Manoeuvre:
 
 
 class VwController(Component):
-    kind = "vw"
 
     def __init__(self, drive: Kinematics, max_speed: float, max_turn: float):
         self.drive = drive
