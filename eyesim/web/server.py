@@ -30,6 +30,7 @@ from eyesim.robot.components.keys import KEYS
 from eyesim.web import mesh_message, place_command, robot_io_commands, timeline
 from eyesim.web.access import AccessPolicy
 from eyesim.web.live_history import LiveHistory
+from eyesim.web.robot_editor import RobotEditor
 from eyesim.web.scene_message import scene_message
 
 log = logging.getLogger("eyesim.web")
@@ -363,13 +364,16 @@ async def static_file(request: web.Request) -> web.StreamResponse:
 
 
 class ViewerServer:
-    def __init__(self, sim, io_thread, host: str = "127.0.0.1", port: int = 8080, token: str | None = None):
+    def __init__(self, sim, io_thread, host: str = "127.0.0.1", port: int = 8080, token: str | None = None,
+                 root: Path | None = None):
         self.sim = sim
         self.io = io_thread
         self.host = host
         self.port = port
         self.access = AccessPolicy(host, token)
         self.hub: ViewerHub | None = None
+        # robot files the editor opens and saves stay under the folder the simulator started in
+        self.robot_editor = RobotEditor(root if root is not None else Path.cwd())
         self._runner: web.AppRunner | None = None
 
     @property
@@ -387,6 +391,7 @@ class ViewerServer:
         app.router.add_get("/ws", self._websocket)
         app.router.add_get("/scene/floor-texture", self._floor_texture)
         app.router.add_get("/scene/mesh/{kind}/{id}", self._mesh)
+        self.robot_editor.add_routes(app)
         app.router.add_get("/{path:.*}", static_file)
         self._runner, self.port = await serve_app(app, self.host, self.port)
 
