@@ -12,6 +12,8 @@ export default defineConfig({
     // three.js alone is over Vite's default 500 kB warning; one file is what we want.
     chunkSizeWarningLimit: 1024,
     rolldownOptions: {
+      // the viewer and the robot editor (a page of its own)
+      input: { index: "index.html", "robot-editor": "robot-editor.html" },
       output: {
         // Fixed names keep the committed bundle's diffs readable.
         entryFileNames: "assets/[name].js",
