@@ -66,6 +66,8 @@ def checks(page) -> int:
 def set_field(page, pointer: str, value) -> None:
     before = checks(page)
     field = page.locator(f'[data-pointer="{pointer}"]')
+    if field.input_value() == str(value):
+        return  # no change, nothing to check
     field.fill(str(value))
     field.press("Tab")
     settle(page, before)

@@ -115,7 +115,7 @@ class RobotEditorPage {
 
   private scheduleCheck(): void {
     if (this.timer !== null) window.clearTimeout(this.timer);
-    this.pending += 1;
+    else this.pending += 1; // one pending check however often the robot changes before it
     this.timer = window.setTimeout(() => {
       this.timer = null;
       this.pending -= 1;

@@ -15,7 +15,7 @@ const KEYS: Record<string, [number, number]> = {
 
 export class TestDrive {
   readonly panel = element("section", "test-drive");
-  private readonly readouts = element("div", "readouts");
+  private readonly readouts = element("div", "drive-readouts");
   private readonly controls = element("div", "drive-controls");
   private readonly message = element("p", "drive-message");
   private readonly cameraImage = element("img", "drive-camera");
