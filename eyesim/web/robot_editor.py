@@ -21,7 +21,9 @@ import io
 import json
 import logging
 import math
+import os
 import threading
+import time
 from pathlib import Path
 
 import numpy as np
@@ -49,9 +51,12 @@ PREFIX = "/robot-editor/api"
 ROBOT_SUFFIXES = (".robi", ".json")
 MAX_ROBOT_BYTES = 1024 * 1024  # a robot document is small; a bigger request is refused
 MAX_LISTED_FILES = 2000
+MAX_VISITED_FILES = 50_000  # started in a home folder: list what a quick look finds
 EDITED = "robot (editor)"  # the source named in messages about the robot being edited
-PREVIEW_FLOOR = 1000.0  # mm: the preview's floor, the robot at its centre
+PREVIEW_FLOOR = 1000.0  # mm: the preview's smallest floor, the robot at its centre
 ARENA = 3000.0  # mm: the test drive's square arena
+ANSWER_TIMEOUT = 10.0  # s a test-drive request waits for the simulation thread
+IDLE_STOP = 60.0  # s without a state request (the tab was closed): the test drive stops
 CAMERA_SIZE = (160, 120)  # the test drive's camera image
 SERVO_MAX = 255
 
@@ -82,20 +87,25 @@ def confined(root: Path, relative: str) -> Path:
 
 
 def robot_files(root: Path) -> list[str]:
-    """Robot files (.robi, and .json robot documents) under the root, as relative paths."""
+    """Robot files (.robi, and .json robot documents) under the root, as relative paths; hidden
+    folders and links out of the root are skipped, and a huge folder is looked through only so far."""
     base = root.resolve()
-    found = []
-    for path in sorted(base.rglob("*")):
-        if len(found) >= MAX_LISTED_FILES:
+    found, seen = [], 0
+    for folder, folders, files in os.walk(base):
+        folders[:] = sorted(f for f in folders if not f.startswith("."))
+        seen += len(files) + len(folders)
+        for name in sorted(files):
+            path = Path(folder) / name
+            if path.suffix.lower() not in ROBOT_SUFFIXES or name.startswith("."):
+                continue
+            if base not in path.resolve().parents or not path.is_file():
+                continue
+            if path.suffix.lower() == ".json" and not _is_robot_json(path):
+                continue
+            found.append(path.relative_to(base).as_posix())
+        if len(found) >= MAX_LISTED_FILES or seen >= MAX_VISITED_FILES:
             break
-        if path.suffix.lower() not in ROBOT_SUFFIXES or not path.is_file():
-            continue
-        if base not in path.resolve().parents or any(part.startswith(".") for part in path.relative_to(base).parts):
-            continue
-        if path.suffix.lower() == ".json" and not _is_robot_json(path):
-            continue
-        found.append(path.relative_to(base).as_posix())
-    return found
+    return sorted(found[:MAX_LISTED_FILES])
 
 
 def _is_robot_json(path: Path) -> bool:
@@ -277,13 +287,15 @@ class TestDrive:
     def __init__(self, robot: RobotType):
         self.robot_type = robot
         self.sim = build(robot, ARENA, arena_walls(), Clock(REALTIME))
+        self.last_seen = time.monotonic()
+        self.sim.schedule(0, self._watch)
         self.thread = threading.Thread(target=self.sim.run, name="eyesim-test-drive", daemon=True)
         self.thread.start()
 
     def on_sim(self, action):
         """`action(sim)` on the simulation thread; its result as an awaitable."""
-        future = asyncio.get_running_loop().create_future()
         loop = asyncio.get_running_loop()
+        future = loop.create_future()
 
         def run(sim):
             try:
@@ -294,11 +306,19 @@ class TestDrive:
                 loop.call_soon_threadsafe(_settle, future, result, None)
 
         self.sim.call(run)
-        return future
+        return asyncio.wait_for(future, ANSWER_TIMEOUT)
 
     def stop(self) -> None:
         self.sim.stop()
         self.thread.join(timeout=5)
+
+    def _watch(self, sim) -> None:
+        """Once a simulated second: a test drive nobody looks at any more ends by itself."""
+        if time.monotonic() - self.last_seen > IDLE_STOP:
+            log.info("robot editor: test drive stopped (no page asked for it for %.0f s)", IDLE_STOP)
+            sim.stop()
+        else:
+            sim.schedule(sim.time_us + 1_000_000, self._watch)
 
     # -- on the simulation thread ---------------------------------------------------------
     def command(self, sim, message: dict) -> None:
@@ -336,6 +356,7 @@ class TestDrive:
             raise EditorError(f"unknown test-drive command {kind!r}: expected vw, motor, servo or reset")
 
     def state(self, sim) -> dict:
+        self.last_seen = time.monotonic()
         robot = sim.robots[0]
         state = sensors(sim, f"{PREFIX}/mesh/drive")
         state.pop("scene")
@@ -454,7 +475,8 @@ class RobotEditor:
             return {"problems": problems, "preview": None}
         origin = self._origin(body)
         async with self.lock:
-            sim = await _off_loop(build, resolved_model(robot, origin), PREVIEW_FLOOR)
+            floor = max(PREVIEW_FLOOR, 3 * max(robot.length, robot.width))
+            sim = await _off_loop(build, resolved_model(robot, origin), floor)
             self.preview = sim
             preview = await _off_loop(sensors, sim, f"{PREFIX}/mesh/preview")
         return {"problems": problems, "preview": preview, "robi": write_robi(robot)}
@@ -506,13 +528,15 @@ class RobotEditor:
             return web.json_response(await drive.on_sim(drive.state))
         except EditorError as error:
             return web.json_response({"error": str(error)}, status=error.status)
+        except asyncio.TimeoutError:
+            return web.json_response({"error": "the test drive did not answer"}, status=504)
 
     async def _drive_stop(self, request: web.Request) -> web.Response:
         await _off_loop(self.stop_drive)
         return web.json_response({"ok": True})
 
     def _running_drive(self) -> TestDrive:
-        if self.drive is None:
+        if self.drive is None or not self.drive.thread.is_alive():
             raise EditorError("no test drive is running: start one first", 409)
         return self.drive
 

@@ -4,6 +4,7 @@ handles, test-drive it, save it, and run a C program on the saved robot in a sce
 from __future__ import annotations
 
 import math
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -14,6 +15,7 @@ from support.viewer import viewer_simulation
 
 import eyesim
 
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "robots"
 SHOTS = Path(__file__).resolve().parents[2] / "build" / "screenshots"
 READ_PSDS = r"""
 #include <stdio.h>
@@ -115,6 +117,14 @@ def test_a_new_differential_robot_with_three_psds_and_a_camera_is_built_saved_an
     assert origins["PSD_LEFT"] == pytest.approx([centre[0], centre[1] + 0.075, 0.04], abs=1e-4)
     assert preview["camera"]["position"] == pytest.approx([centre[0] + 0.08, centre[1], 0.07], abs=1e-4)
 
+    # A click on the right PSD's beam selects that PSD and its part of the form.
+    beam = next(b for b in preview["psds"] if b["name"] == "PSD_RIGHT")
+    on_beam = page.evaluate("p => eyesimRobotEditor.screenOf(p)",
+                            [v + d * 0.2 for v, d in zip(beam["origin"], beam["direction"])])
+    page.mouse.click(on_beam["x"], on_beam["y"])
+    assert page.locator("#selection").inner_text() == "Selected /psds/2"
+    assert "selected" in page.locator('fieldset[data-pointer="/psds/2"]').get_attribute("class")
+
     # Select the front PSD and drag its handle: it moves on the robot, and the form follows.
     page.evaluate("eyesimRobotEditor.select('/psds/0')")
     start = page.evaluate("eyesimRobotEditor.handleAt('/psds/0', 'move')")
@@ -198,6 +208,24 @@ def test_the_s4_with_bigger_wheels_still_drives_1000_mm_with_vwstraight(editor):
         sim.run(until=20)
         assert sim.robot(1).exit_code == 0
         assert sim.robot(1).pose.x - 300 == pytest.approx(1000, abs=15)
+
+
+def test_the_arm_on_a_base_moves_its_joints_with_sliders_in_the_test_drive(editor):
+    page, server, root = editor
+    shutil.copy(EXAMPLES / "Picker.robi", root / "Picker.robi")
+    open_editor(page, server, "file:Picker.robi")
+    assert [j["name"] for j in robot(page)["arm"]["joints"]] == ["BASE", "SHOULDER", "WRIST"]
+    page.locator("#try").click()
+    page.wait_for_function("() => eyesimRobotEditor.drive() !== null")
+    shoulder = page.locator('input[type="range"][data-servo="2"]')
+    assert page.locator('input[type="range"][data-servo]').count() == 4  # three joints and the gripper
+    before = page.evaluate("eyesimRobotEditor.drive().snapshot.bodies")
+    shoulder.fill("230")
+    page.wait_for_function(
+        """before => eyesimRobotEditor.drive().snapshot.bodies.some((body, i) =>
+               Math.abs(body.pos[2] - before[i].pos[2]) > 0.02)""", arg=before, timeout=30_000)
+    shot(page, "arm-sliders")
+    page.locator("#end-try").click()
 
 
 def test_paths_outside_the_scene_folder_are_refused(editor):
