@@ -203,7 +203,9 @@ def open_robot(root: Path, source: str) -> tuple[RobotType, Path | None, list[di
     return robot, path, problems
 
 
-def save_robot(root: Path, robot: RobotType, relative: str, overwrite: bool) -> Path:
+def save_robot(root: Path, robot: RobotType, relative: str, overwrite: bool, origin: Path | None = None) -> Path:
+    """Writes the robot as .robi or JSON (by the name's ending) under the root; `origin`, the file
+    it came from, keeps its model reference pointing at the same model file."""
     path = confined(root, relative)
     suffix = path.suffix.lower()
     if suffix not in ROBOT_SUFFIXES:
@@ -215,9 +217,21 @@ def save_robot(root: Path, robot: RobotType, relative: str, overwrite: bool) -> 
         raise EditorError(f"{relative!r} exists: overwrite it?", 409)
     if path.is_symlink() or (path.exists() and not path.is_file()):
         raise EditorError(f"{relative!r} is not a plain file: not overwritten", 403)
+    robot = moved_model(robot, origin, path)
     text = write_robi(robot) if suffix == ".robi" else json_format.dumps(json_format.to_json("robot", robot))
     path.write_text(text, encoding="utf-8")
     return path
+
+
+def moved_model(robot: RobotType, origin: Path | None, target: Path) -> RobotType:
+    """The robot with its model reference written from `target`'s folder, so that a robot saved
+    somewhere else than it came from still finds its model."""
+    if robot.model is None or origin is None or origin.parent.resolve() == target.parent.resolve():
+        return robot
+    found = paths.resolve(robot.model, origin)
+    if found is None:
+        return robot
+    return dataclasses.replace(robot, model=Path(os.path.relpath(found, target.parent.resolve())).as_posix())
 
 
 def resolved_model(robot: RobotType, origin: Path | None) -> RobotType:
@@ -489,7 +503,8 @@ class RobotEditor:
         if robot is None:
             raise EditorError("the robot has errors: " + "; ".join(
                 f"{p['pointer'] or 'robot'}: {p['message']}" for p in problems if p["kind"] == "error"))
-        path = await _off_loop(save_robot, self.root, robot, body.get("path"), body.get("overwrite") is True)
+        path = await _off_loop(save_robot, self.root, robot, body.get("path"), body.get("overwrite") is True,
+                               self._origin(body))
         diagnostics = Diagnostics()
         _, again = read_document(path, diagnostics, ("robot",))  # what `eyesim check` will say
         return {"path": path.relative_to(self.root.resolve()).as_posix(),

@@ -48,6 +48,7 @@ class RobotEditorPage {
       (state) => this.preview.place(state),
       () => this.check(),
       () => ({ v: Number(this.robot?.max_speed ?? 300) / 2, w: Number(this.robot?.max_turn ?? 90) / 2 }),
+      () => this.robot,
     );
     byId("side").append(this.drive.panel);
     byId("open").addEventListener("click", () => void this.open());

@@ -30,6 +30,7 @@ export class TestDrive {
     private readonly updated: (state: DriveState) => void,
     private readonly stopped: () => void,
     private readonly speeds: () => { v: number; w: number },
+    private readonly robot: () => unknown,
   ) {
     this.panel.hidden = true;
     this.cameraImage.alt = "the robot's camera";
@@ -144,11 +145,33 @@ export class TestDrive {
     } else {
       for (const motor of r.motors) this.controls.append(this.slider(`Motor ${motor}`, -100, 100, 0, "motor", motor, "speed"));
     }
-    for (const servo of r.servos) this.controls.append(this.slider(`Servo ${servo}`, 0, 255, 128, "servo", servo, "position"));
+    for (const servo of r.servos) {
+      const user = this.servoUser(servo);
+      this.controls.append(this.slider(`Servo ${servo}${user ? ` (${user})` : ""}`, 0, 255, 128, "servo", servo, "position"));
+    }
     const reset = element("button", "drive-reset", "Back to start");
     reset.type = "button";
     reset.addEventListener("click", () => void this.command({ type: "reset" }));
     this.controls.append(reset);
+  }
+
+  /** What a servo moves, from the robot's values: the part with that `servo` (an arm joint's
+   * name, "gripper"), or the value that names it ("pan_servo" -> "camera pan"). */
+  private servoUser(servo: number): string {
+    let found = "";
+    const visit = (value: unknown, key: string, owner: string): void => {
+      if (found || typeof value !== "object" || value === null) return;
+      for (const [k, v] of Object.entries(value)) {
+        if (v === servo && k === "servo") {
+          const name = (value as Record<string, unknown>).name;
+          found = typeof name === "string" ? name : key;
+        } else if (v === servo && k.endsWith("_servo")) {
+          found = `${owner || key} ${k.slice(0, -"_servo".length)}`;
+        } else visit(v, Array.isArray(value) ? key : k, Array.isArray(value) ? owner : key);
+      }
+    };
+    visit(this.robot(), "", "");
+    return found;
   }
 
   private slider(label: string, min: number, max: number, value: number, type: string, number: number, field: string): HTMLElement {
