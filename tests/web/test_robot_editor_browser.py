@@ -100,6 +100,10 @@ def test_a_new_differential_robot_with_three_psds_and_a_camera_is_built_saved_an
     settle(page, before)
     set_field(page, "/camera/x", 80)
     set_field(page, "/camera/z", 70)
+    before = checks(page)
+    page.locator('button[data-add="lidar"]').click()  # no required values: the scanner's defaults
+    settle(page, before)
+    set_field(page, "/lidar/points", 180)
 
     # A bad value: the loader's message at the field, and saving is off until it is fixed.
     set_field(page, "/mass", "-2")
@@ -116,6 +120,7 @@ def test_a_new_differential_robot_with_three_psds_and_a_camera_is_built_saved_an
     centre = preview["snapshot"]["robots"][0]["pos"]
     assert origins["PSD_LEFT"] == pytest.approx([centre[0], centre[1] + 0.075, 0.04], abs=1e-4)
     assert preview["camera"]["position"] == pytest.approx([centre[0] + 0.08, centre[1], 0.07], abs=1e-4)
+    assert preview["lidar"]["points"] == 180
 
     # A click on the right PSD's beam selects that PSD and its part of the form.
     beam = next(b for b in preview["psds"] if b["name"] == "PSD_RIGHT")
@@ -155,6 +160,8 @@ def test_a_new_differential_robot_with_three_psds_and_a_camera_is_built_saved_an
     page.keyboard.up("ArrowUp")
     assert page.locator(".psd-readings .reading").count() == 3
     page.wait_for_function("() => eyesimRobotEditor.drive().readings.camera !== undefined")
+    lidar = page.evaluate("eyesimRobotEditor.drive().readings.lidar")
+    assert len(lidar) == 180 and min(lidar) < 2000  # the arena's walls are within reach
     shot(page, "test-drive")
     page.locator("#end-try").click()
 
