@@ -262,15 +262,22 @@ def build(robot: RobotType, floor: float, walls=(), clock: Clock | None = None):
     return Simulation(scratch_scene(robot, floor, walls), clock)
 
 
-def sensors(sim, mesh: str) -> dict:
-    """What the editor draws of the built robot: the scene message (as the viewer gets it), the
-    poses, each PSD's beam, the lidar's scan plane and the camera's view (world frame, m)."""
+def preview_of(sim, mesh: str) -> dict:
+    """The built robot as the viewer gets it (its scene message, with the mesh served from `mesh`)
+    and its sensors."""
     robot = sim.robots[0]
     message = scene_message(sim, None)
     for entry in message["robots"]:
         entry.pop("mesh", None)
         if has_mesh(sim, robot.body):
             entry["mesh"] = mesh
+    return {"scene": message, **sensors(sim)}
+
+
+def sensors(sim) -> dict:
+    """What the editor draws over the built robot: the poses, each PSD's beam, the lidar's scan
+    plane and the camera's view (world frame, m)."""
+    robot = sim.robots[0]
     psds = []
     for sensor in robot.components_of(PsdSensor):
         origin, direction, hit = sensor.beam()
@@ -279,16 +286,17 @@ def sensors(sim, mesh: str) -> dict:
     lidar = None
     scanner = robot.component(LidarScanner)
     if scanner is not None and robot.type.lidar is not None:
-        rotation = sim.world.data.xmat[robot.body].reshape(3, 3)
-        lidar = {"origin": _list(sim.world.data.xpos[robot.body] + rotation @ scanner.mount),
-                 "directions": _list((scanner._local @ rotation.T).ravel()), "points": scanner.points}
+        if scanner.last_scan is None:
+            scanner.scan()  # the preview's: where the beams start and which way they go
+        origin, directions, _ = scanner.last_scan
+        lidar = {"origin": _list(origin), "directions": _list(directions), "points": len(directions)}
     camera = None
     cam = robot.component(Camera)
     if cam is not None:
         view = cam.view(*CAMERA_SIZE)
         camera = {"position": _list(view.position), "forward": _list(view.forward), "up": _list(view.up),
                   "fov": view.fov, "aspect": CAMERA_SIZE[0] / CAMERA_SIZE[1], "fisheye": view.fisheye}
-    return {"scene": message, "snapshot": sim.snapshot(), "psds": psds, "lidar": lidar, "camera": camera}
+    return {"snapshot": sim.snapshot(), "psds": psds, "lidar": lidar, "camera": camera}
 
 
 def _list(values) -> list[float]:
@@ -372,24 +380,20 @@ class TestDrive:
     def state(self, sim) -> dict:
         self.last_seen = time.monotonic()
         robot = sim.robots[0]
-        state = sensors(sim, f"{PREFIX}/mesh/drive")
-        state.pop("scene")
-        state["time"] = sim.time
-        state["readings"] = {"psd": {str(s.id): s.distance_mm() for s in robot.components_of(PsdSensor)}}
+        readings = {"psd": {str(s.id): s.distance_mm() for s in robot.components_of(PsdSensor)},
+                    "servos": sorted(robot.servos), "motors": sorted(robot.motors)}
         scanner = robot.component(LidarScanner)
         if scanner is not None and robot.type.lidar is not None:
-            state["readings"]["lidar"] = scanner.scan().tolist()
+            readings["lidar"] = scanner.scan().tolist()  # before sensors(): it draws this scan
         cam = robot.component(Camera)
         if cam is not None:
             cam.start(*CAMERA_SIZE)
-            state["readings"]["camera"] = _jpeg(cam.capture())
+            readings["camera"] = _jpeg(cam.capture())
         vw = robot.component(VwController)
         if vw is not None:
             v, w = vw.measured_speed()
-            state["readings"]["vw"] = [round(v * 1000), round(math.degrees(w))]
-        state["readings"]["servos"] = sorted(robot.servos)
-        state["readings"]["motors"] = sorted(robot.motors)
-        return state
+            readings["vw"] = [round(v * 1000), round(math.degrees(w))]
+        return {**sensors(sim), "time": sim.time, "readings": readings}
 
 
 def _settle(future: asyncio.Future, result, error) -> None:
@@ -492,7 +496,7 @@ class RobotEditor:
             floor = max(PREVIEW_FLOOR, 3 * max(robot.length, robot.width))
             sim = await _off_loop(build, resolved_model(robot, origin), floor)
             self.preview = sim
-            preview = await _off_loop(sensors, sim, f"{PREFIX}/mesh/preview")
+            preview = await _off_loop(preview_of, sim, f"{PREFIX}/mesh/preview")
         return {"problems": problems, "preview": preview, "robi": write_robi(robot)}
 
     async def _save(self, request: web.Request) -> web.Response:
