@@ -54,7 +54,8 @@ MAX_LISTED_FILES = 2000
 MAX_VISITED_FILES = 50_000  # started in a home folder: list what a quick look finds
 EDITED = "robot (editor)"  # the source named in messages about the robot being edited
 PREVIEW_FLOOR = 1000.0  # mm: the preview's smallest floor, the robot at its centre
-ARENA = 3000.0  # mm: the test drive's square arena
+ARENA = 3000.0  # mm: the test drive's square arena (at least)
+ARENA_START = 0.35  # of the arena's width: where the robot starts, facing the inner wall
 ANSWER_TIMEOUT = 10.0  # s a test-drive request waits for the simulation thread
 IDLE_STOP = 60.0  # s without a state request (the tab was closed): the test drive stops
 CAMERA_SIZE = (160, 120)  # the test drive's camera image
@@ -243,23 +244,29 @@ def resolved_model(robot: RobotType, origin: Path | None) -> RobotType:
 
 
 # -- building: preview and test drive ----------------------------------------------------------
-def scratch_scene(robot: RobotType, floor: float, walls: tuple[Wall, ...] = ()) -> Scene:
+def scratch_scene(robot: RobotType, floor: float, walls: tuple[Wall, ...] = (), at: float = 0.5) -> Scene:
+    """The robot alone on a square floor, `at` of the way along x, halfway along y, facing +x."""
     world = World(EDITED, floor, floor, walls=walls)
-    placement = RobotPlacement(robot.name, Pose(floor / 2, floor / 2, 0.0), location=Location(EDITED))
+    placement = RobotPlacement(robot.name, Pose(floor * at, floor / 2, 0.0), location=Location(EDITED))
     return Scene(EDITED, world, {robot.name: robot}, robots=(placement,))
 
 
-def arena_walls() -> tuple[Wall, ...]:
-    """A square room with an inner wall, so PSDs, the lidar and the camera see something."""
-    a = ARENA
+def arena_size(robot: RobotType) -> float:
+    """The test arena grows with the robot, so a big one fits with room to move."""
+    return max(ARENA, 6 * max(robot.length, robot.width))
+
+
+def arena_walls(size: float) -> tuple[Wall, ...]:
+    """A square room with an inner wall ahead of the robot, so PSDs, the lidar and the camera see something."""
+    a = size
     return (Wall(0, 0, a, 0), Wall(a, 0, a, a), Wall(a, a, 0, a), Wall(0, a, 0, 0),
-            Wall(a * 0.7, a * 0.3, a * 0.7, a * 0.7, color=(200, 60, 60)))
+            Wall(a * 0.75, a * 0.3, a * 0.75, a * 0.7, color=(200, 60, 60)))
 
 
-def build(robot: RobotType, floor: float, walls=(), clock: Clock | None = None):
+def build(robot: RobotType, floor: float, walls=(), clock: Clock | None = None, at: float = 0.5):
     from eyesim.engine import Simulation  # the engine pulls in the physics: only when building
 
-    return Simulation(scratch_scene(robot, floor, walls), clock)
+    return Simulation(scratch_scene(robot, floor, walls, at), clock)
 
 
 def preview_of(sim, mesh: str) -> dict:
@@ -308,7 +315,8 @@ class TestDrive:
 
     def __init__(self, robot: RobotType):
         self.robot_type = robot
-        self.sim = build(robot, ARENA, arena_walls(), Clock(REALTIME))
+        size = arena_size(robot)
+        self.sim = build(robot, size, arena_walls(size), Clock(REALTIME), at=ARENA_START)
         self.last_seen = time.monotonic()
         self.sim.schedule(0, self._watch)
         self.thread = threading.Thread(target=self.sim.run, name="eyesim-test-drive", daemon=True)

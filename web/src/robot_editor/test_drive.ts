@@ -22,6 +22,7 @@ export class TestDrive {
   private readonly lidarCanvas = element("canvas", "drive-lidar");
   private timer: number | null = null;
   private sliders = "";
+  private readonly held = new Set<string>(); // arrow keys held down
   running = false;
   last: DriveState | null = null;
 
@@ -86,13 +87,21 @@ export class TestDrive {
     }
   }
 
+  /** Arrow keys held together add up: up and left drive an arc (all a car can do). */
   private key(event: KeyboardEvent, down: boolean): void {
     if (!this.running || !(event.key in KEYS)) return;
     const target = event.target as HTMLElement | null;
     if (target && (target.tagName === "INPUT" || target.tagName === "SELECT")) return;
     event.preventDefault();
     if (event.repeat) return;
-    const [v, w] = down ? KEYS[event.key] : [0, 0];
+    if (down) this.held.add(event.key);
+    else this.held.delete(event.key);
+    let v = 0;
+    let w = 0;
+    for (const key of this.held) {
+      v += KEYS[key][0];
+      w += KEYS[key][1];
+    }
     const { v: speed, w: turn } = this.speeds();
     void this.command({ type: "vw", v: v * speed, w: w * turn });
   }
