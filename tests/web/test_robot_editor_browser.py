@@ -245,3 +245,29 @@ def test_paths_outside_the_scene_folder_are_refused(editor):
         assert "scene folder" in page.locator("#editor-status").inner_text()
         page.evaluate("document.querySelector('#editor-status').classList.remove('error')")
     assert not (root.parent / "out.robi").exists()
+
+
+def test_a_part_the_schema_gains_appears_in_the_editor_without_editor_code(editor, monkeypatch):
+    """The forms come from the published schema alone: a part added to it gets its section, its
+    fields with their units, and the loader's checks."""
+    from eyesim.scene import json_format
+
+    published = json_format.schema("robot")
+    extended = {**published, "properties": {**published["properties"], "sonar": {"$ref": "#/$defs/sonar"}},
+                "$defs": {**published["$defs"], "sonar": {
+                    "type": "object", "description": "an ultrasonic range finder", "required": ["range"],
+                    "additionalProperties": False,
+                    "properties": {"range": {"type": "number", "exclusiveMinimum": 0, "description": "mm"}}}}}
+    monkeypatch.setattr(json_format, "schema", lambda kind: extended if kind == "robot" else published)
+    page, server, _ = editor
+    open_editor(page, server, "builtin:S4")
+    section = page.locator('section[data-pointer="/sonar"]')
+    assert "an ultrasonic range finder" in section.inner_text()
+    before = checks(page)
+    section.locator('button[data-add="sonar"]').click()
+    settle(page, before)
+    assert robot(page)["sonar"] == {"range": 1}
+    set_field(page, "/sonar/range", 0)
+    row = page.locator('[data-pointer="/sonar/range"]').locator("xpath=..")
+    assert row.locator(".field-unit").inner_text() == "mm"
+    assert row.locator(".field-message").inner_text() == "expected a number > 0, found 0"
