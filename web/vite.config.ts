@@ -18,6 +18,9 @@ export default defineConfig({
         // Fixed names keep the committed bundle's diffs readable.
         entryFileNames: "assets/[name].js",
         chunkFileNames: "assets/[name].js",
+        // What both pages use (three.js, the world builder, the common styles) goes into one
+        // chunk with a name that says so.
+        codeSplitting: { groups: [{ name: "shared", minShareCount: 2 }] },
         assetFileNames: "assets/[name][extname]",
       },
     },
