@@ -271,3 +271,14 @@ def test_a_part_the_schema_gains_appears_in_the_editor_without_editor_code(edito
     row = page.locator('[data-pointer="/sonar/range"]').locator("xpath=..")
     assert row.locator(".field-unit").inner_text() == "mm"
     assert row.locator(".field-message").inner_text() == "expected a number > 0, found 0"
+
+
+def test_the_viewer_links_to_the_editor(editor, browser_context):
+    page, server, _ = editor
+    page.goto(f"http://127.0.0.1:{server.port}/")
+    with browser_context.expect_page() as opened:
+        page.locator("#robot-editor-link").click()
+    tab = opened.value
+    tab.wait_for_function("() => window.eyesimRobotEditor && eyesimRobotEditor.checks() > 0")
+    assert tab.evaluate("eyesimRobotEditor.robot().name") == "S4"  # the editor starts from the S4
+    tab.close()
