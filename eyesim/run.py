@@ -9,7 +9,7 @@ import re
 import sys
 import webbrowser
 
-from eyesim import scripted_input
+from eyesim import robot_input, scripted_input
 from eyesim.clock import DETERMINISTIC, MAX_SPEED, REALTIME, Clock
 from eyesim.engine import DEFAULT_CALL_TIME_US, Simulation
 from eyesim.launcher import Launcher
@@ -172,7 +172,7 @@ def simulate(args) -> int:
         programs[robot_id] = path
     for text in args.key:
         robot_id, key, seconds = parse_key(sim, text)
-        sim.schedule(round(seconds * 1e6), lambda s, r=robot_id, k=key: s.press_key(r, k))
+        sim.schedule(round(seconds * 1e6), lambda s, r=robot_id, k=key: robot_input.key(s, r, k))
     try:
         scripted_input.schedule_inputs(sim, args, lambda selector: find_robot(sim, selector))
     except ValueError as error:
@@ -188,13 +188,14 @@ def simulate(args) -> int:
     except OSError as error:
         raise UsageError(f"cannot listen for programs on {args.host}:{args.port}: {error.strerror} "
                          f"(is another simulator running? try --port 0)") from None
+    launcher = Launcher(sim, args.host, server.port)
     viewer = None
     if not args.headless:
         from eyesim.web.server import ViewerServer
 
         io = IoThread()
         io.start()
-        viewer = ViewerServer(sim, io, args.host, args.viewer_port)
+        viewer = ViewerServer(sim, io, args.host, args.viewer_port, launcher=launcher)
         try:
             viewer.start()
         except OSError as error:
@@ -210,7 +211,6 @@ def simulate(args) -> int:
           f"({mode} clock{'' if speed == 1 else f', speed {args.speed}'})", flush=True)
 
     recorders = start_recorders(sim, args)
-    launcher = Launcher(sim, args.host, server.port)
     for robot_id, path in sorted(programs.items()):
         launcher.start(robot_id, path)
     # Headless with programs and no time limit: the run ends when the last program is done.

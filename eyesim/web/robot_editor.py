@@ -43,8 +43,8 @@ from eyesim.scene.diagnostics import Diagnostics
 from eyesim.scene.jsonpos import json_positions
 from eyesim.scene.loader import read_document
 from eyesim.scene.robi import write_robi
+from eyesim.web import messages
 from eyesim.web.mesh_message import has_mesh, mesh_message
-from eyesim.web.scene_message import scene_message
 
 log = logging.getLogger("eyesim.web")
 PREFIX = "/robot-editor/api"
@@ -273,7 +273,7 @@ def preview_of(sim, mesh: str) -> dict:
     """The built robot as the viewer gets it (its scene message, with the mesh served from `mesh`)
     and its sensors."""
     robot = sim.robots[0]
-    message = scene_message(sim, None)
+    message = messages.scene(sim, None)
     for entry in message["robots"]:
         entry.pop("mesh", None)
         if has_mesh(sim, robot.body):
@@ -303,7 +303,7 @@ def sensors(sim) -> dict:
         view = cam.view(*CAMERA_SIZE)
         camera = {"position": _list(view.position), "forward": _list(view.forward), "up": _list(view.up),
                   "fov": view.fov, "aspect": CAMERA_SIZE[0] / CAMERA_SIZE[1], "fisheye": view.fisheye}
-    return {"snapshot": sim.snapshot(), "psds": psds, "lidar": lidar, "camera": camera}
+    return {"snapshot": messages.snapshot(sim), "psds": psds, "lidar": lidar, "camera": camera}
 
 
 def _list(values) -> list[float]:
@@ -535,7 +535,7 @@ class RobotEditor:
         async with self.lock:
             self.stop_drive()
             self.drive = await _off_loop(TestDrive, robot)
-            message = await self.drive.on_sim(lambda sim: scene_message(sim, None))
+            message = await self.drive.on_sim(lambda sim: messages.scene(sim, None))
         for entry in message["robots"]:
             if "mesh" in entry:
                 entry["mesh"] = f"{PREFIX}/mesh/drive"
