@@ -14,8 +14,9 @@ from support.scenes import arena
 from support.viewer import viewer_simulation
 
 import eyesim
+from eyesim.scene import builtins
 
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "robots"
+EXAMPLES = builtins.ROBOTS_DIR
 SHOTS = Path(__file__).resolve().parents[2] / "build" / "screenshots"
 READ_PSDS = r"""
 #include <stdio.h>

@@ -1,5 +1,5 @@
-"""The robot editor's open-edit-save-open path keeps every value: every built-in robot, every
-example robot and every .robi in the shared corpus goes through the editor's JSON form, is checked
+"""The robot editor's open-edit-save-open path keeps every value: every built-in robot (also
+opened as a file) and every .robi in the shared corpus goes through the editor's JSON form, is checked
 as the browser's edits are, saved as .robi and as JSON, and opened again unchanged."""
 
 from __future__ import annotations
@@ -14,7 +14,6 @@ from support.corpus import CORPUS
 from eyesim.scene import builtins
 from eyesim.web.robot_editor import EditorError, check_document, full_json, open_robot, save_robot
 
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "robots"
 CORPUS_ROBOTS = sorted(CORPUS.rglob("*.robi"))
 
 
@@ -38,8 +37,8 @@ def test_every_builtin_robot_opens_and_saves_unchanged(tmp_path, name):
     round_trip(tmp_path, f"builtin:{name}")
 
 
-@pytest.mark.parametrize("path", sorted(EXAMPLES.glob("*.robi")), ids=lambda p: p.name)
-def test_every_example_robot_opens_and_saves_unchanged(tmp_path, path):
+@pytest.mark.parametrize("path", sorted(builtins.ROBOTS_DIR.glob("*.robi")), ids=lambda p: p.name)
+def test_every_robot_file_opens_and_saves_unchanged(tmp_path, path):
     shutil.copy(path, tmp_path / path.name)
     round_trip(tmp_path, f"file:{path.name}")
 
