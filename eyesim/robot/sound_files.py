@@ -20,6 +20,10 @@ _SYNC = re.compile(rb"\xff(?=[\xe2-\xe7\xf2-\xf7\xfa-\xff])")
 # Bytes after the ID3 tag searched for the first frame: real files start at once or after a little
 # padding; searching a whole file of anything else cost seconds of the simulation thread.
 FIRST_FRAME_WITHIN = 64 * 1024
+# Frames walked one by one; a longer file's rest is timed at the average rate of those (exact at a
+# constant bit rate). Walking 8 MB of the smallest frames cost 250 ms of the simulation thread.
+FRAMES_WALKED = 2048
+WAV_CHUNKS = 64  # chunks looked at for 'fmt ' and 'data' (real files have a handful)
 
 
 class SoundError(ValueError):
@@ -38,7 +42,9 @@ def sound_length(data: bytes) -> tuple[str, float]:
 
 def _wav_seconds(data: bytes) -> float:
     offset, byte_rate, data_size = 12, None, None
-    while offset + 8 <= len(data):
+    for _ in range(WAV_CHUNKS):
+        if offset + 8 > len(data) or (byte_rate and data_size is not None):
+            break
         chunk, size = data[offset:offset + 4], struct.unpack_from("<I", data, offset + 4)[0]
         if chunk == b"fmt " and size >= 16:
             byte_rate = struct.unpack_from("<I", data, offset + 16)[0]
@@ -81,8 +87,13 @@ def _mp3_seconds(data: bytes) -> float | None:
             break
     else:
         return None
-    seconds = 0.0
-    while (frame := _frame(data, offset)) is not None and offset + frame[0] <= len(data):
+    seconds, first = 0.0, offset
+    for _ in range(FRAMES_WALKED):
+        frame = _frame(data, offset)
+        if frame is None or offset + frame[0] > len(data):
+            return seconds
         seconds += frame[1]
         offset += frame[0]
-    return seconds
+    if _frame(data, offset) is None:
+        return seconds
+    return seconds * (len(data) - first) / (offset - first)  # the rest at the walked frames' rate
