@@ -39,8 +39,13 @@ class Camera(Component):
         self.image: np.ndarray | None = None  # the last image taken, for the viewer
 
     # -- set-up ----------------------------------------------------------------------------
+    def bind(self, world) -> None:
+        super().bind(world)
+        render.prepare(world)
+
     def start(self, width: int, height: int) -> None:
         self.size = (width, height)
+        render.prepare(self.world, width, height)
 
     def stop(self) -> None:
         self.size = None
