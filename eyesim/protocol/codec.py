@@ -66,14 +66,18 @@ def encode_payload(layout: Sequence[tuple[str, str]], values: Sequence) -> bytes
     return b"".join(out)
 
 
-def decode_payload(layout: Sequence[tuple[str, str]], payload: bytes | memoryview) -> tuple:
-    """Decode `payload` by `layout`; raises ProtocolError(BAD_PAYLOAD) on any mismatch. Text is
-    decoded straight from the payload (a memoryview is not copied first); bytes are copied once."""
+def decode_payload(layout: Sequence[tuple[str, str]], payload: bytes | memoryview,
+                   lengths: Sequence[tuple[int, int]] = ()) -> tuple:
+    """Decode `payload` by `layout`; raises ProtocolError(BAD_PAYLOAD) on any mismatch, and
+    ProtocolError(BAD_ARGUMENT) for a field longer than `lengths` allows (an OpSpec's: (field
+    index, most bytes)), before it is decoded. Text is decoded straight from the payload (a
+    memoryview is not copied first); bytes are copied once."""
+    most = dict(lengths)
     values = []
     pos = 0
     end = len(payload)
     try:
-        for name, typ in layout:
+        for index, (name, typ) in enumerate(layout):
             if typ == "i32":
                 values.append(_I32.unpack_from(payload, pos)[0])
                 pos += 4
@@ -86,6 +90,8 @@ def decode_payload(layout: Sequence[tuple[str, str]], payload: bytes | memoryvie
             else:
                 (n,) = _U32.unpack_from(payload, pos)
                 pos += 4
+                if n > most.get(index, n):
+                    raise ProtocolError(g.ERR_BAD_ARGUMENT, f"{name}: {n} bytes is too large (at most {most[index]})")
                 size = n * 4 if typ == "i32s" else n
                 if pos + size > end:
                     raise ProtocolError(g.ERR_BAD_PAYLOAD, f"field {name!r}: length {n} runs past the payload")
