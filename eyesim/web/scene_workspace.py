@@ -100,7 +100,11 @@ class SceneWorkspace:
             self.draft = Draft.of_scene(scene)
             self.undo_stack.clear()
             self.redo_stack.clear()
-            self.editing = False
+            if self.editing:  # the new scene runs as the old one did before editing
+                self.editing = False
+                paused = self._paused_before
+                await self._on_sim(lambda sim: sim.clock.set_paused(paused, sim.time_us))
+            self.browse_at_start = False
             self._note_recent(path)
             return web.json_response(dict(self.state(), warnings=[_diagnostic(d) for d in scene.warnings]))
 
