@@ -6,6 +6,7 @@ JSON routes under /scenes/ (behind the viewer's access checks like every route):
     GET  /scenes/catalog         robot and object types, programs: what the editor can add
     GET  /scenes/state           the scene being edited: its items, undo/redo, file
     POST /scenes/open            {"root", "path"}: replace the running scene with that file
+    POST /scenes/new             {"width", "height"}: an empty floor of that size (mm), to build on
     POST /scenes/edit            {"editing": true|false}: start or end editing
     POST /scenes/edit            {"op": ...}: one edit (eyesim/web/scene_editing.py)
     POST /scenes/undo, /redo
@@ -26,14 +27,15 @@ from pathlib import Path
 
 from aiohttp import web
 
-from eyesim.scene import SceneError, builtins, load_scene
-from eyesim.web.scene_editing import Draft, EditError, apply, saved_files
+from eyesim.scene import SceneError, World, builtins, load_scene
+from eyesim.web.scene_editing import Draft, EditError, apply, saved_files, set_floor
 from eyesim.web.scene_files import FileAccessError, SceneRoots
 
 log = logging.getLogger("eyesim.web")
 MAX_RECENT = 10
 MAX_UNDO = 200
 MAX_BODY = 64 * 1024
+NEW_FLOOR = 2000  # mm, each side of a new scene's floor
 SWAP_TIMEOUT = 30.0  # s to wait for the simulation thread to build a new world
 
 
@@ -57,6 +59,7 @@ class SceneWorkspace:
         app.router.add_get("/scenes/catalog", self._catalog)
         app.router.add_get("/scenes/state", self._state)
         app.router.add_post("/scenes/open", self._open)
+        app.router.add_post("/scenes/new", self._new)
         app.router.add_post("/scenes/edit", self._edit)
         app.router.add_post("/scenes/undo", self._undo)
         app.router.add_post("/scenes/redo", self._redo)
@@ -107,6 +110,24 @@ class SceneWorkspace:
             self.browse_at_start = False
             self._note_recent(path)
             return web.json_response(dict(self.state(), warnings=[_diagnostic(d) for d in scene.warnings]))
+
+    async def _new(self, request: web.Request) -> web.Response:
+        body = await _body(request)
+        async with self._lock:
+            size = {"op": "new", "width": body.get("width", NEW_FLOOR), "height": body.get("height", NEW_FLOOR)}
+            try:
+                draft = set_floor(Draft(self._untitled(), World(str(self._untitled()))), size, None)
+            except EditError as error:
+                return _refused(str(error))
+            await self._set_editing(True)
+            self.undo_stack.clear()
+            self.redo_stack.clear()
+            return await self._take(draft, self.undo_stack, clear_redo=True)
+
+    def _untitled(self) -> Path:
+        """Where a new scene resolves its references from: the first writable root."""
+        folder = next((r.path for r in self.roots.roots if r.writable), Path.cwd())
+        return folder / "untitled.sim"
 
     async def _edit(self, request: web.Request) -> web.Response:
         body = await _body(request)

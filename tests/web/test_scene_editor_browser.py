@@ -126,7 +126,10 @@ def test_open_build_edit_undo_save_and_reopen(browser_context, simulator, worksp
     # the new scene is drawn (robot 1 where the fields put it) before robot 2 is grabbed
     page.wait_for_function("() => Math.abs((window.eyesimViewer.displayedRobotPose(1)?.pos[0] ?? 0) - 0.8) < 0.01 "
                            "&& window.eyesimViewer.robotScreenPosition(2) !== null")
-    grab = page.evaluate("() => window.eyesimViewer.robotScreenPosition(2)")
+    # grabbed on its top, off the cross of its PSD beams (a press near a beam picks the beam)
+    robot = editor_state(page)["items"]["robots"][1]
+    grab = page.evaluate("([x, y]) => window.eyesimViewer.worldScreenPosition(x, y, 0.15)",
+                         [(robot["x"] + 60) / 1000, (robot["y"] - 55) / 1000])
     target = screen_of(page, 3000, 1500)
     page.mouse.move(grab["x"], grab["y"])
     page.mouse.down()
@@ -135,7 +138,7 @@ def test_open_build_edit_undo_save_and_reopen(browser_context, simulator, worksp
     wait_for_edits(page, edits + 5)
     robots = editor_state(page)["items"]["robots"]
     assert (robots[0]["x"], robots[0]["y"], robots[0]["phi"]) == (800, 900, 45)
-    assert abs(robots[1]["x"] - 3000) < 60 and abs(robots[1]["y"] - 1500) < 60
+    assert abs(robots[1]["x"] - 3000) < 100 and abs(robots[1]["y"] - 1500) < 100
 
     # Delete the can, undo it back; duplicate it, delete the copy.
     page.click("#editor-items li[data-kind=object][data-index='0']")
@@ -223,3 +226,55 @@ def test_scene_routes_refuse_paths_out_of_the_roots_and_overwriting(browser_cont
     status, body = page.evaluate(post, ["/scenes/edit", {"op": "add-robot", "type": "R2D2", "x": 1, "y": 1}])
     assert status == 422 and "unknown robot type" in body["error"]
     assert process.poll() is None
+
+
+def test_a_new_arena_built_in_the_page_is_saved_and_reopened_the_same(browser_context, simulator, workspace):
+    process, url = simulator
+    viewer = open_viewer(browser_context, url)
+    page = viewer.page
+    page.wait_for_selector("#scene-browser[open]")
+    page.click("#scene-new")
+    page.wait_for_selector("#editor:not([hidden])")
+    page.wait_for_function("() => window.eyesimViewer.robotIds().length === 0 && window.eyesimViewer.scene().walls === 0")
+    page.wait_for_function("() => document.querySelectorAll('#editor-program option').length > 1")
+    edits = page.evaluate("() => window.eyesimEditor.editCount")
+    for n, button in enumerate(["#editor-add-robot", "#editor-add-robot", "#editor-add-object"], start=1):
+        page.click(button)
+        wait_for_edits(page, edits + n)
+    page.click("#editor-draw-wall")
+    page.click("#editor-snap")  # whole millimetres now
+    for n, (a, b) in enumerate([((300, 1500), (1200, 1500)), ((1200, 1500), (1200, 700))], start=4):
+        page.mouse.move(*screen_of(page, *a))
+        page.mouse.down()
+        page.mouse.move(*screen_of(page, *b), steps=5)
+        page.mouse.up()
+        wait_for_edits(page, edits + n)
+    for index in (0, 1):
+        page.click(f"#editor-items li[data-kind=robot][data-index='{index}']")
+        page.select_option("#editor-program", label="current folder / lcd_and_key")
+        wait_for_edits(page, edits + 6 + index)
+    built = editor_state(page)["items"]
+    assert len(built["robots"]) == 2 and len(built["objects"]) == 1 and len(built["walls"]) == 2
+    assert all(r["program"] for r in built["robots"])
+    page.click("#editor-save")
+    page.fill("#save-name", "built")
+    page.select_option("#save-format", "json")
+    page.click("#save-confirm")
+    wait_for_edits(page, edits + 8)
+    assert (workspace / "built.json").is_file() and (workspace / "built.world.json").is_file()
+    shot(page, "5-new-arena")
+
+    # Run it, then reopen the saved file from the scene browser: the same scene.
+    page.click("#edit-scene")
+    page.wait_for_function("() => window.eyesimViewer.programState(2)?.event === 'started'")
+    page.click("#open-scenes")
+    page.fill("#scene-search", "built.json")  # not built.world.json, which is listed too (a world)
+    page.wait_for_function("() => document.querySelectorAll('#scene-files button').length === 1")
+    page.click("#scene-files button")
+    page.wait_for_selector("#scene-browser", state="hidden")
+    reopened = editor_state(page)["items"]
+    assert reopened["robots"] == built["robots"] and reopened["objects"] == built["objects"]
+    assert reopened["walls"] == built["walls"] and reopened["floor"] == built["floor"] == {"width": 2000, "height": 2000}
+    check = subprocess.run(eyesim_command("check", "built.json"), capture_output=True, text=True, cwd=workspace)
+    assert check.returncode == 0, check.stdout + check.stderr
+    assert viewer.errors == []

@@ -21,7 +21,8 @@ export class SceneBrowser {
     this.element.className = "scene-dialog";
     this.element.innerHTML = `
       <form method="dialog" class="dialog-head"><h2>Open a scene</h2><button id="scene-browser-close">Close</button></form>
-      <input id="scene-search" type="search" placeholder="Search scene files…" aria-label="Search scene files" />
+      <div class="editor-row"><input id="scene-search" type="search" placeholder="Search scene files…" aria-label="Search scene files" />
+        <button id="scene-new" type="button" title="An empty 2 m × 2 m floor to build a scene on">New empty scene</button></div>
       <h3>Recent</h3><ul id="scene-recent" class="file-list"></ul>
       <h3>Scene files</h3><ul id="scene-files" class="file-list"></ul>
       <pre id="scene-browser-message" class="editor-message" role="status"></pre>`;
@@ -30,6 +31,7 @@ export class SceneBrowser {
     this.recent = this.element.querySelector("#scene-recent")!;
     this.files = this.element.querySelector("#scene-files")!;
     this.message = this.element.querySelector("#scene-browser-message")!;
+    this.element.querySelector("#scene-new")!.addEventListener("click", () => void this.create());
     this.search.addEventListener("input", () => {
       window.clearTimeout(this.searchTimer);
       this.searchTimer = window.setTimeout(() => void this.refresh(), SEARCH_DELAY_MS);
@@ -73,6 +75,16 @@ export class SceneBrowser {
       }),
     );
     if (!places.length) list.innerHTML = `<li class="empty">none</li>`;
+  }
+
+  private async create(): Promise<void> {
+    try {
+      const state = await postJson<EditorState>("/scenes/new", {});
+      this.element.close();
+      this.opened(state);
+    } catch (error) {
+      this.message.textContent = errorText(error);
+    }
   }
 
   private async open(place: Place): Promise<void> {

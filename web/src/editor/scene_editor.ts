@@ -18,6 +18,7 @@ import {
   type SceneFiles,
 } from "./api";
 import { SceneBrowser } from "./scene_browser";
+import { SelectionMark } from "./selection_mark";
 import { WallTool } from "./wall_tool";
 
 type Kind = "robot" | "object" | "marker" | "wall";
@@ -28,7 +29,7 @@ interface Selection {
 }
 
 const ROTATE_STEP = 15; // degrees per press of a turn button
-const NEW_THING_SPACING = 200; // mm between things added one after another
+const NEW_THING_SPACING = 300; // mm between things added one after another
 
 function element<T extends HTMLElement>(root: HTMLElement, selector: string): T {
   return root.querySelector<T>(selector)!;
@@ -42,6 +43,7 @@ export class SceneEditor {
   readonly browser: SceneBrowser;
   readonly panel: HTMLElement;
   readonly walls: WallTool;
+  private readonly mark: SelectionMark;
   private state: EditorState | null = null;
   private catalog: Catalog | null = null;
   private roots: SceneFiles["roots"] = [];
@@ -133,6 +135,7 @@ export class SceneEditor {
       <pre id="editor-message" class="editor-message" role="status"></pre>`;
     layout.insertBefore(this.panel, layout.querySelector("#robots"));
     this.message = element(this.panel, "#editor-message");
+    this.mark = new SelectionMark(viewer.world);
     this.walls = new WallTool(viewer.world, worldElement, (wall) => this.edit({ op: "add-wall", ...wall }));
     this.wire();
     viewer.commandWatchers.push((command) => {
@@ -256,8 +259,10 @@ export class SceneEditor {
     }
   }
 
-  private say(text: string): void {
+  /** A message under the panel: what went wrong (red), or what was done. */
+  private say(text: string, problem = true): void {
     this.message.textContent = text;
+    this.message.classList.toggle("problem", problem);
   }
 
   // -- what the panel shows --------------------------------------------------------------------
@@ -333,6 +338,7 @@ export class SceneEditor {
     const box = element(this.panel, "#editor-selected");
     const thing = this.selected();
     box.hidden = !thing;
+    this.mark.show(this.state?.editing && thing ? (thing as { x: number; y: number }) : null);
     if (!thing || !this.selection) return;
     const { kind, index } = this.selection;
     element(this.panel, "#editor-selected-title").textContent =
@@ -469,6 +475,6 @@ export class SceneEditor {
       saved = state.saved ?? [];
       return state;
     });
-    if (saved.length) this.say(`Saved ${saved.map((p) => placeText(p, this.roots)).join(" and ")}`);
+    if (saved.length) this.say(`Saved ${saved.map((p) => placeText(p, this.roots)).join(" and ")}`, false);
   }
 }
