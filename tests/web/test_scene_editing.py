@@ -151,3 +151,19 @@ def test_an_unchanged_world_is_named_not_copied(tmp_path):
     (source / "copy.sim").write_text(files[source / "copy.sim"])
     same_scene(load_scene(source / "copy.sim"), draft.scene())
     assert os.path.exists(source / "obstacles4k.wld")
+
+
+def test_a_maze_scene_with_a_drawn_wall_is_saved_as_a_world_of_its_own(tmp_path):
+    source = tmp_path / "lab7"
+    shutil.copytree(CORPUS / "met4000__AUTO4508-labs" / "lab7", source)
+    original = load_scene(source / "maze.sim")
+    draft = apply(Draft.of_scene(original), {"op": "add-wall", "x1": 10, "y1": 10, "x2": 300, "y2": 10}, None)
+    assert draft.world_file is None and draft.robots[0].pose == original.robots[0].pose  # the start S, placed
+    files = saved_files(draft, tmp_path / "mine.sim", False)
+    for path, text in files.items():
+        path.write_text(text)
+    saved = load_scene(tmp_path / "mine.sim")
+    same_scene(saved, draft.scene())
+    assert len(saved.world.walls) == len(original.world.walls) + 1
+    check = subprocess.run(eyesim_command("check", str(tmp_path / "mine.sim")), capture_output=True, text=True)
+    assert check.returncode == 0, check.stdout + check.stderr

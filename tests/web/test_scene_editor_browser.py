@@ -3,11 +3,14 @@ editor (robots, objects, walls drawn on the floor, moves, deletes, undo), give a
 save, and read the saved file back with `eyesim check` and `eyesim run`; against the real
 simulator in headless Chromium."""
 
+import json
 import os
 import re
 import shutil
 import subprocess
 import sys
+import urllib.error
+import urllib.request
 from pathlib import Path
 
 import pytest
@@ -225,6 +228,13 @@ def test_scene_routes_refuse_paths_out_of_the_roots_and_overwriting(browser_cont
     assert "Teapot" in (workspace / "broken.sim").read_text()
     status, body = page.evaluate(post, ["/scenes/edit", {"op": "add-robot", "type": "R2D2", "x": 1, "y": 1}])
     assert status == 422 and "unknown robot type" in body["error"]
+    # another site's page in the same browser cannot use the routes (the viewer's Origin check)
+    request = urllib.request.Request(url.rstrip("/") + "/scenes/open", method="POST",
+                                     data=json.dumps({"root": 0, "path": "broken.sim"}).encode(),
+                                     headers={"Origin": "http://evil.example", "Content-Type": "application/json"})
+    with pytest.raises(urllib.error.HTTPError) as refused:
+        urllib.request.urlopen(request, timeout=10)
+    assert refused.value.code == 403 and "foreign Origin" in refused.value.read().decode()
     assert process.poll() is None
 
 
