@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from eyesim.scene import builtins
-from eyesim.scene.description import Marker, ObjectPlacement, Pose, Scene, Settings, Wall, World
+from eyesim.scene.description import Marker, Pose, Scene, Settings, Wall, World
 from eyesim.scene.json_format import dumps, to_json
 from eyesim.scene.loader import build_scene, load_object_type, load_robot_type
 from eyesim.scene.sim import Placement, Reference, SimDocument, write_sim

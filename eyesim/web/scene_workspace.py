@@ -182,7 +182,10 @@ class SceneWorkspace:
                     path.write_text(text, encoding="utf-8")
             except OSError as error:
                 return _refused(f"cannot write {error.filename}: {error.strerror}")
-            self.draft = Draft.of_scene(await _in_thread(load_scene, target))  # now named as saved
+            try:
+                self.draft = Draft.of_scene(await _in_thread(load_scene, target))  # now named as saved
+            except SceneError as error:  # written, but not readable as written: say so, keep editing
+                return _refused(f"{target.name} was written but does not load back", error.diagnostics)
             self._note_recent(target)
             return web.json_response(dict(self.state(), saved=[self._shown(p) for p in files]))
 

@@ -451,7 +451,7 @@ export class SceneEditor {
   private openSave(): void {
     const name = element<HTMLInputElement>(this.panel, "#save-name");
     if (this.state?.place && this.roots[this.state.place.root]?.writable) {
-      name.value = this.state.place.path;
+      name.value = this.state.place.path.replace(/\.(wld|maz)$/i, ".sim"); // a bare world is saved as a scene
       element<HTMLSelectElement>(this.panel, "#save-root").value = String(this.state.place.root);
     }
     element<HTMLDialogElement>(this.panel, "#editor-save-dialog").showModal();
