@@ -79,6 +79,7 @@ def test_open_build_edit_undo_save_and_reopen(browser_context, simulator, worksp
     page.click("#scene-files button")
     page.wait_for_function("() => document.querySelector('#scene-browser-message').textContent.includes('broken.sim:3')")
     assert "Teapot" in page.inner_text("#scene-browser-message")
+    shot(page, "1b-broken-file")
     assert viewer.state("robotIds") == [1] and viewer.state("scene")["markers"] == 0
 
     # A corpus scene replaces the arena.
@@ -288,3 +289,17 @@ def test_a_new_arena_built_in_the_page_is_saved_and_reopened_the_same(browser_co
     check = subprocess.run(eyesim_command("check", "built.json"), capture_output=True, text=True, cwd=workspace)
     assert check.returncode == 0, check.stdout + check.stderr
     assert viewer.errors == []
+
+
+def test_more_scene_roots_with_the_scenes_option(workspace, tmp_path_factory):
+    extra = tmp_path_factory.mktemp("course")
+    (extra / "week1.sim").write_text("S4 500 500 0\n")
+    with simulator_with_viewer("--scenes", str(extra), cwd=workspace) as (process, url):
+        with urllib.request.urlopen(url.rstrip("/") + "/scenes/files?q=week1", timeout=10) as answer:
+            listing = json.load(answer)
+    roots = {root["name"]: root for root in listing["roots"]}
+    assert roots[str(extra)]["writable"] and not roots["examples"]["writable"]
+    assert listing["files"] == [{"root": roots[str(extra)]["index"], "path": "week1.sim"}]
+    missing = subprocess.run(eyesim_command("run", "--scenes", str(extra / "nowhere"), "--port", "0",
+                                            "--viewer-port", "0"), capture_output=True, text=True, cwd=workspace)
+    assert missing.returncode == 2 and "--scenes" in missing.stderr and "no such folder" in missing.stderr
