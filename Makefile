@@ -9,7 +9,7 @@ BIN := $(VENV)/bin
 SOURCES := $(shell find eyesim eye robios protocol -type f -not -path '*/__pycache__/*' 2>/dev/null) pyproject.toml
 INSTALLED := $(VENV)/.installed
 
-.PHONY: demo test install viewer protocol bench clean
+.PHONY: demo test install viewer protocol schemas bench clean
 
 demo: $(INSTALLED) build/demo
 	$(BIN)/eyesim run --program 1=build/demo --open
@@ -54,9 +54,17 @@ system-packages:
 viewer:
 	cd web && npm ci --no-audit --no-fund && npm run build
 
-# Regenerate the protocol tables from protocol/protocol.json.
+# Regenerate from protocol/protocol.json the protocol tables and the pass-through layers of the API
+# (eyebot.h declarations, C wrappers, eye modules), and from protocol/viewer.schema.json the viewer
+# channel's TypeScript types and parsers and the server's copy of its schema.
 protocol:
 	$(PYTHON) protocol/generate.py
+	$(PYTHON) protocol/generate_viewer.py
+
+# Rewrite the published JSON Schemas in docs/schemas/ (the robot schema comes from the part
+# declarations in eyesim/scene/parts/; tests/scene/test_schemas.py fails while they are stale).
+schemas: $(INSTALLED)
+	$(BIN)/eyesim schema export docs/schemas
 
 bench: $(INSTALLED)
 	$(BIN)/python bench/bench_roundtrip.py

@@ -33,10 +33,6 @@ from eyesim.net.program_server import ProgramSockets
 from eyesim.physics.builder import build_world
 from eyesim.protocol import encode_error, encode_message, generated as g
 from eyesim.robot.component import Component
-from eyesim.robot.components.battery import Battery
-from eyesim.robot.components.keys import Keys
-from eyesim.robot.components.lcd import Lcd
-from eyesim.robot.sensor_rays import camera_images, sensor_rays
 from eyesim.scene.description import Scene
 from eyesim.session import Pending, Request, Session
 
@@ -72,8 +68,7 @@ class Simulation:
         self._sequence = itertools.count()
         self._stopping = False
         self._last_snapshot = 0.0
-        self._lcd_sent: dict[int, int] = {}
-        self._camera_sent: dict[int, int] = {}
+        self._publish_again = False  # every component publishes its state at the next tick
         self.step_observers: list = []  # called as observer(sim) after every physics step
         call_time_ms = scene.settings.call_time
         self.call_time_us = DEFAULT_CALL_TIME_US if call_time_ms is None else round(call_time_ms * 1000)
@@ -92,6 +87,8 @@ class Simulation:
         components = [c for robot in self.robots for c in robot.components]
         self._before_step = [c.before_step for c in components if type(c).before_step is not Component.before_step]
         self._after_step = [c.after_step for c in components if type(c).after_step is not Component.after_step]
+        self._publishers = [(robot.id, c) for robot in self.robots for c in robot.components
+                            if type(c).publish is not Component.publish]
         for robot in self.robots:
             for component in robot.components:
                 component.reset()
@@ -102,7 +99,7 @@ class Simulation:
         for robot in self.robots:
             for component in robot.components:
                 component.reset()
-        self.events.emit({"type": "reset"})
+        self.events.reset()
 
     def replace_scene(self, scene: Scene) -> None:
         """Put another scene in place of this one (the viewer's scene browser and editor), on the
@@ -114,9 +111,8 @@ class Simulation:
         self.scene = scene
         call_time_ms = scene.settings.call_time
         self.call_time_us = DEFAULT_CALL_TIME_US if call_time_ms is None else round(call_time_ms * 1000)
-        self._lcd_sent.clear()
-        self._camera_sent.clear()
         self._build(built)
+        self._publish_again = True  # the new robots' LCD and camera images, whether they change or not
         self.events.emit({"type": "new-scene"})
 
     def shutdown_programs(self) -> None:
@@ -160,13 +156,6 @@ class Simulation:
     def schedule(self, time_us: int, action) -> None:
         """Run `action(sim)` at the first step boundary at or after `time_us` (scripted input)."""
         heapq.heappush(self._scheduled, (time_us, next(self._sequence), action))
-
-    def press_key(self, robot_id: int, key: int) -> None:
-        robot = self.robot_by_id(robot_id)
-        if robot is None:
-            raise ValueError(f"no robot {robot_id}")
-        robot.component(Keys).press(key)
-        self.events.input(robot_id, "key", key=key)
 
     # -- the loop --------------------------------------------------------------------------------
     def run(self, until: float | None = None) -> None:
@@ -527,40 +516,13 @@ class Simulation:
         if not force and now - self._last_snapshot < SNAPSHOT_PERIOD:
             return
         self._last_snapshot = now
-        if self.events.wants_lcd:
-            for robot in self.robots:
-                lcd = robot.component(Lcd)
-                if lcd is not None and self._lcd_sent.get(robot.id) != lcd.version:
-                    self._lcd_sent[robot.id] = lcd.version
-                    self.events.emit({"type": "lcd", "robot": robot.id, "pixels": lcd.screen().copy()})
-            for event in camera_images(self.robots, self._camera_sent):  # the last image each program took
-                self.events.emit(event)
-        self.events.snapshot(self.snapshot())
+        if self.events.wants_lcd:  # LCD and camera images: only while someone shows them
+            again, self._publish_again = self._publish_again, False
+            for robot_id, component in self._publishers:
+                component.publish(robot_id, self.events, again)
+        self.events.snapshot(self)
 
     def republish_lcd(self) -> None:
-        """Send every robot's LCD again at the next publish tick (a browser has just connected)."""
-        self._lcd_sent.clear()
-        self._camera_sent.clear()
-
-    def snapshot(self) -> dict:
-        data = self.world.data
-        robots = [{"id": r.id, "pos": [float(v) for v in data.xpos[r.body]],
-                   "quat": [float(v) for v in data.xquat[r.body]]} for r in self.robots]
-        for entry, robot in zip(robots, self.robots):
-            battery = robot.component(Battery)
-            if battery is not None:
-                entry["battery"] = round(battery.volts, 3)
-        objects = [{"id": o.id, "pos": data.xpos[o.body].tolist(), "quat": data.xquat[o.body].tolist()}
-                   for o in self.objects]
-        # Moving parts of robots (arm links, fingers, steered wheels), by their body number.
-        bodies = [{"id": body, "pos": data.xpos[body].tolist(), "quat": data.xquat[body].tolist()}
-                  for robot in self.robots for body in robot.shown_parts]
-        snapshot = {"type": "snapshot", "time": self.time, "robots": robots, "objects": objects, "bodies": bodies}
-        if self.scene.settings.vis:
-            snapshot["rays"] = sensor_rays(self.robots)
-        return snapshot
-
-    def status(self) -> dict:
-        speed = "max" if self.clock.speed == float("inf") else self.clock.speed
-        return {"type": "status", "time": self.time, "paused": self.clock.paused, "speed": speed,
-                "clock": self.clock.mode}
+        """Send every robot's LCD and camera image again at the next publish tick (a browser has
+        just connected)."""
+        self._publish_again = True

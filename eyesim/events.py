@@ -1,11 +1,14 @@
 """What the simulation tells its observers (the viewer, the console): events and snapshots.
 
-Messages follow docs/viewer-channel.md. Events are ordered and never dropped; snapshots replace
+Messages follow docs/viewer-channel.md and are built by eyesim/web/messages.py; `lcd`, `camera`,
+`reset`, `input` and `edit` are events of the simulation that listeners turn into what they need. Events are ordered and never dropped; snapshots replace
 each other. Listeners are called on the simulation thread and must return quickly."""
 
 from __future__ import annotations
 
 from typing import Protocol
+
+from eyesim.web import messages
 
 
 class Listener(Protocol):
@@ -34,30 +37,39 @@ class EventBus:
         for listener in self.listeners:
             listener.on_event(message)
 
-    def snapshot(self, message: dict) -> None:
+    def snapshot(self, sim) -> None:
+        """A publish tick: every listener gets where everything is now."""
+        message = messages.snapshot(sim)
         for listener in self.listeners:
             listener.on_snapshot(message)
 
-    # -- the event kinds ---------------------------------------------------------------------
-    def menu(self, robot) -> None:
-        from eyesim.robot.components.lcd import Lcd
+    # -- the event kinds (their messages: eyesim/web/messages.py) -------------------------------
+    def reset(self) -> None:
+        """The world went back to the scene's initial state."""
+        self.emit({"type": "reset"})
 
-        lcd = robot.component(Lcd)
-        self.emit({"type": "menu", "robot": robot.id, "labels": list(lcd.menu or ["", "", "", ""]),
-                   "visible": lcd.menu_visible, "rotated": lcd.rotated})
+    def lcd(self, robot_id: int, pixels) -> None:
+        """The LCD shows something new (`pixels`: a copy); the viewer encodes it off this thread."""
+        self.emit({"type": "lcd", "robot": robot_id, "pixels": pixels})
+
+    def camera(self, robot_id: int, pixels) -> None:
+        """The robot's program took a new camera image."""
+        self.emit({"type": "camera", "robot": robot_id, "pixels": pixels})
+
+    def menu(self, robot) -> None:
+        self.emit(messages.menu(robot))
 
     def console(self, robot_id: int, stream: str, text: str) -> None:
-        self.emit({"type": "console", "robot": robot_id, "stream": stream, "text": text})
+        self.emit(messages.console(robot_id, stream, text))
 
     def program(self, robot_id: int, event: str, name: str, exit_code: int | None) -> None:
-        self.emit({"type": "program", "robot": robot_id, "event": event, "name": name, "exit_code": exit_code})
+        self.emit(messages.program(robot_id, event, name, exit_code))
 
     def serial(self, robot_id: int, interface: int, data: bytes) -> None:
-        # Bytes as text one to one (Latin-1), so any byte survives JSON.
-        self.emit({"type": "serial", "robot": robot_id, "interface": interface, "text": data.decode("latin-1")})
+        self.emit(messages.serial(robot_id, interface, data))
 
     def sound(self, robot_id: int, sound: dict) -> None:
-        self.emit({"type": "audio", "robot": robot_id, **sound})
+        self.emit(messages.audio(robot_id, sound))
 
     def input(self, robot_id: int, kind: str, **values) -> None:
         """Input from outside (key, touch, irtv, serial, digital, analog): for recorders, not browsers."""
@@ -68,12 +80,6 @@ class EventBus:
         self.emit({"type": "edit", **change})
 
     def io(self, robot) -> None:
-        from eyesim.robot.components.analog_io import AnalogInputs
-        from eyesim.robot.components.digital_io import LINES, DigitalLines
-
-        digital, analog = robot.component(DigitalLines), robot.component(AnalogInputs)
-        if digital is None or analog is None:
-            return
-        lines = [{"direction": digital.directions[k], "level": digital.read(k + 1), "driven": digital.driven[k]}
-                 for k in range(LINES)]
-        self.emit({"type": "io", "robot": robot.id, "digital": lines, "analog": list(analog.values)})
+        message = messages.robot_io(robot)
+        if message is not None:
+            self.emit(message)

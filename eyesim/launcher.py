@@ -149,10 +149,10 @@ class Launcher:
         threads = [threading.Thread(target=self._forward, args=(run, stream), daemon=True)
                    for stream in ("stdout", "stderr")]
         threads.append(threading.Thread(target=self._wait, args=(run,), daemon=True))
+        self._threads += threads
+        self._run_threads[id(run)] = threads  # before they start: _wait looks its output threads up
         for thread in threads:
             thread.start()
-        self._threads += threads
-        self._run_threads[id(run)] = threads
         return run
 
     def settle(self, wait: float = 0.0) -> None:
@@ -203,6 +203,10 @@ class Launcher:
     def _wait(self, run: ProgramRun) -> None:
         run.exit_code = run.process.wait()
         robot_id = run.robot_id
+        if run.signal is not None and not run.stopped_by_us:
+            for thread in self._run_threads.get(id(run), ())[:2]:
+                thread.join(timeout=2.0)  # its last words first, then why it ended
+            self._print(run, "stderr", f"eyesim: {run.name} {crash_reason(run.signal)}\n")
 
         def exited(sim):
             sim.events.program(robot_id, "exited", run.name, run.exit_code)
@@ -218,6 +222,27 @@ class Launcher:
                 _kill_group(run.process.pid)
             else:
                 run.process.kill()
+
+    def stop(self, run: ProgramRun, grace: float = 2.0) -> None:
+        """Stop one program (the viewer's Stop button): asked to end, then killed after `grace` s.
+        Blocks until it is gone; run it off the loops."""
+        if run.process is None or run.process.poll() is not None:
+            return
+        run.stopped_by_us = True
+        run.process.terminate()
+        try:
+            run.process.wait(timeout=grace)
+        except subprocess.TimeoutExpired:
+            run.process.kill()
+            run.process.wait()
+        if run.options.own_group:
+            _kill_group(run.process.pid)
+        for thread in self._run_threads.get(id(run), ()):
+            thread.join(timeout=grace)
+
+    def latest(self, robot_id: int) -> ProgramRun | None:
+        """The robot's most recent program run, if it had one."""
+        return next((run for run in reversed(self.runs) if run.robot_id == robot_id), None)
 
     @property
     def all_exited(self) -> bool:
@@ -250,6 +275,17 @@ class Launcher:
         for thread in self._threads:
             thread.join(timeout=grace)
 
+
+
+def crash_reason(number: int) -> str:
+    """Why a program that a signal ended stopped, in words: 'crashed: segmentation fault (SIGSEGV)'."""
+    try:
+        name = signal.Signals(number).name
+    except ValueError:
+        return f"was ended by signal {number}"
+    words = (signal.strsignal(number) or name).lower()
+    verb = "was ended" if number in (signal.SIGTERM, signal.SIGKILL, signal.SIGINT, signal.SIGHUP) else "crashed"
+    return f"{verb}: {words} ({name})"
 
 
 def _kill_group(pgid: int) -> None:

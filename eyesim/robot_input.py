@@ -1,4 +1,4 @@
-"""Input a robot gets from outside — the viewer, `eyesim run` scripts, tests: touches, IR codes, serial
+"""Input a robot gets from outside — the viewer, `eyesim run` scripts, tests: keys, touches, IR codes, serial
 bytes, digital and analog levels. Run on the simulation thread; bad input raises ValueError."""
 
 from __future__ import annotations
@@ -19,6 +19,12 @@ def _part(sim, robot_id: int, cls, what: str):
     if part is None:
         raise ValueError(f"robot {robot_id} has no {what}")
     return robot, part
+
+
+def key(sim, robot_id: int, key: int) -> None:
+    """A soft-key press (KEY1..KEY4), as KEYGet/KEYRead see it."""
+    _part(sim, robot_id, Keys, "keys")[1].press(key)
+    sim.events.input(robot_id, "key", key=key)
 
 
 def touch(sim, robot_id: int, x: int, y: int) -> None:

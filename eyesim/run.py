@@ -9,7 +9,7 @@ import re
 import sys
 import webbrowser
 
-from eyesim import scripted_input
+from eyesim import robot_input, scripted_input
 from eyesim.clock import DETERMINISTIC, MAX_SPEED, REALTIME, Clock
 from eyesim.engine import DEFAULT_CALL_TIME_US, Simulation
 from eyesim.launcher import Launcher
@@ -175,7 +175,7 @@ def simulate(args) -> int:
         programs[robot_id] = path
     for text in args.key:
         robot_id, key, seconds = parse_key(sim, text)
-        sim.schedule(round(seconds * 1e6), lambda s, r=robot_id, k=key: s.press_key(r, k))
+        sim.schedule(round(seconds * 1e6), lambda s, r=robot_id, k=key: robot_input.key(s, r, k))
     try:
         scripted_input.schedule_inputs(sim, args, lambda selector: find_robot(sim, selector))
     except ValueError as error:
@@ -198,7 +198,7 @@ def simulate(args) -> int:
 
         io = IoThread()
         io.start()
-        viewer = ViewerServer(sim, io, args.host, args.viewer_port)
+        viewer = ViewerServer(sim, io, args.host, args.viewer_port, launcher=launcher)
         viewer.workspace = scene_workspace(sim, launcher, args)
         try:
             viewer.start()

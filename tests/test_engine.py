@@ -7,6 +7,7 @@ from support.client import ProgramClient
 from support.scenes import arena, with_call_time
 from support.simulator import running_simulation
 
+from eyesim import robot_input
 from eyesim.engine import DEFAULT_CALL_TIME_US
 from eyesim.protocol import generated as g
 from eyesim.robot.components.keys import KEY2
@@ -119,7 +120,7 @@ def test_key_get_waits_for_a_press_while_other_calls_go_on():
         other.hello("2")
         request = waiter.send("KEY_GET")
         assert other.call("PSD_GET", 1)[0] > 0  # the blocked call holds up nobody
-        sim.call(lambda s: s.press_key(1, KEY2))
+        sim.call(lambda s: robot_input.key(s, 1, KEY2))
         assert waiter.reply("KEY_GET", request) == (KEY2,)
         assert waiter.call("KEY_READ") == (0,)
 
@@ -177,3 +178,16 @@ def test_the_simulator_survives_a_handler_crash(monkeypatch):
         with pytest.raises(Exception, match="internal simulator error"):
             client.call("PSD_GET", 1)
         assert client.call("OS_GET_COUNT")[0] >= 0
+
+
+def test_the_engine_imports_no_component_and_no_viewer_code():
+    """Components and the web layer collect what they need; the engine only says when (events)."""
+    import ast
+    from pathlib import Path
+
+    import eyesim.engine
+
+    tree = ast.parse(Path(eyesim.engine.__file__).read_text())
+    modules = {node.module for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)}
+    modules |= {alias.name for node in ast.walk(tree) if isinstance(node, ast.Import) for alias in node.names}
+    assert [m for m in modules if m.startswith(("eyesim.robot.components", "eyesim.web"))] == []

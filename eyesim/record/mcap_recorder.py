@@ -26,9 +26,7 @@ from eyesim.record import sampling, schemas
 from eyesim.robot.components.camera import Camera
 from eyesim.robot.components.lcd import Lcd
 from eyesim.robot.components.lidar import LidarScanner
-from eyesim.robot.sensor_rays import sensor_rays
-from eyesim.web import mesh_message
-from eyesim.web.scene_message import scene_message
+from eyesim.web import mesh_message, messages
 
 DEFAULT_POSE_RATE = 100.0  # Hz of simulation time: the CSV's 10 ms rows
 DEFAULT_LCD_RATE = 30.0  # Hz: at most this many LCD images per robot and simulated second
@@ -132,7 +130,7 @@ class Recorder:
                 if mesh_message.has_mesh(sim, thing.body):
                     self._writer.add_attachment(0, sim.time_us * 1000, f"mesh/{kind}/{thing.id}", "application/json",
                                                 _json(mesh_message.mesh_message(sim.world.model, thing.body)))
-        viewer_scene = scene_message(sim, "/scene/floor-texture" if has_texture else None)
+        viewer_scene = messages.scene(sim, "/scene/floor-texture" if has_texture else None)
         description = json.loads(json.dumps(dataclasses.asdict(sim.scene), default=str))
         self._add(schemas.SCENE, sim.time_us, _json({"viewer": viewer_scene, "description": description}))
 
@@ -147,7 +145,7 @@ class Recorder:
                 state = sampling.robot_state(robot)
                 self._put(schemas.robot_topic(robot.id, "state"), now, lambda state=state: _json(state))
             if sim.scene.settings.vis:
-                rays = sensor_rays(sim.robots)
+                rays = messages.sensor_rays(sim.robots)
                 self._put(schemas.RAYS, now, lambda: _json({"rays": rays}))
         if now >= self._next_lcd_us:
             self._sample_lcds(sim)

@@ -16,6 +16,7 @@ import numpy as np
 from mcap.reader import SeekingReader
 
 from eyesim.record import schemas
+from eyesim.web import messages
 
 MAGIC = b"\x89MCAP0\r\n"
 IMAGE_CHANNELS = ("lcd", "camera")
@@ -158,20 +159,17 @@ class Recording:
         for robot_id in self.robot_ids:
             pose = self.pose(schemas.robot_frame(robot_id), index)
             if pose is not None:
-                entry = {"id": robot_id, "pos": pose[0], "quat": pose[1]}
                 state = self._latest(self.states.get(robot_id, ()), sample_us)
-                if state is not None and state.get("battery") is not None:
-                    entry["battery"] = round(state["battery"], 3)
-                robots.append(entry)
-        objects = [{"id": o["id"], "pos": p[0], "quat": p[1]} for o in self.scene["objects"]
+                robots.append(messages.pose(robot_id, pose[0], pose[1], state.get("battery") if state else None))
+        objects = [messages.pose(o["id"], p[0], p[1]) for o in self.scene["objects"]
                    if (p := self.pose(schemas.object_frame(o["id"]), index)) is not None]
-        bodies = [{"id": b["id"], "pos": p[0], "quat": p[1]} for b in self.scene["bodies"]
+        bodies = [messages.pose(b["id"], p[0], p[1]) for b in self.scene["bodies"]
                   if (p := self.pose(schemas.body_frame(b["id"]), index)) is not None]
-        snapshot = {"type": "snapshot", "time": time_us / 1e6, "robots": robots, "objects": objects, "bodies": bodies}
+        rays = None
         if self.scene["settings"].get("vis"):
             at = bisect.bisect_right(self._ray_times, time_us) - 1
-            snapshot["rays"] = self.rays[at][1] if at >= 0 else []
-        return snapshot
+            rays = self.rays[at][1] if at >= 0 else []
+        return messages.snapshot_of(time_us / 1e6, robots, objects, bodies, rays)
 
     @staticmethod
     def _latest(samples, time_us: int):

@@ -13,7 +13,8 @@ class Component:
 
     Life cycle: created while the MuJoCo model is built (adding their bodies/actuators to the
     spec), `bind` once the model is compiled, `reset` to their initial state, then
-    `before_step`/`after_step` around every physics step."""
+    `before_step`/`after_step` around every physics step, and `publish` at each publish tick
+    while someone shows LCD and camera images."""
 
     kind = "component"
 
@@ -28,3 +29,7 @@ class Component:
 
     def after_step(self, dt: float) -> None:
         pass
+
+    def publish(self, robot_id: int, events, again: bool) -> None:
+        """Emit what changed since the last tick on `events` (eyesim.events); `again`: also what
+        did not (a browser has just connected)."""

@@ -10,7 +10,7 @@ from eyesim.scene import builtins, summary
 from eyesim.scene.convert import convert, default_output
 from eyesim.scene.description import Diagnostic, Location
 from eyesim.scene.diagnostics import Diagnostics, SceneError, sorted_diagnostics
-from eyesim.scene.json_format import KINDS, schema
+from eyesim.scene.json_format import KINDS, export_schemas, schema_text
 from eyesim.scene.loader import kind_of, load_scene, read_definition, read_document
 
 SCHEMA_ALIASES = {"sim": "scene", "wld": "world", "maz": "maze", "robi": "robot", "esobj": "object"}
@@ -24,8 +24,11 @@ def register(subparsers) -> None:
     conv.add_argument("file", metavar="FILE")
     conv.add_argument("-o", "--output", metavar="OUT", help="output file ('-' or none: print it)")
     conv.set_defaults(func=run_convert)
-    sch = subparsers.add_parser("schema", help="print the JSON Schema of a file kind")
-    sch.add_argument("kind", metavar="KIND", help="scene, world, maze, robot or object (or sim, wld, maz, robi, esObj)")
+    sch = subparsers.add_parser("schema", help="print the JSON Schema of a file kind, or write them all: "
+                                "'eyesim schema export DIR'")
+    sch.add_argument("kind", metavar="KIND", help="scene, world, maze, robot or object (or sim, wld, maz, robi, esObj)"
+                     ", or export")
+    sch.add_argument("dir", metavar="DIR", nargs="?", help="export: the folder to write <kind>.schema.json to")
     sch.set_defaults(func=run_schema)
 
 
@@ -96,11 +99,26 @@ def run_convert(args) -> int:
 
 
 def run_schema(args) -> int:
+    if args.kind == "export":
+        if args.dir is None:
+            print("eyesim schema export: expected the folder to write the schemas to", file=sys.stderr)
+            return 2
+        try:
+            for path in export_schemas(Path(args.dir)):
+                print(path)
+        except OSError as e:
+            print(f"eyesim schema export: cannot write {e.filename}: {e.strerror}", file=sys.stderr)
+            return 1
+        return 0
     kind = SCHEMA_ALIASES.get(args.kind.lower(), args.kind.lower())
     if kind not in KINDS:
-        print(f"eyesim schema: unknown kind {args.kind!r}: expected one of {', '.join(KINDS)}", file=sys.stderr)
+        print(f"eyesim schema: unknown kind {args.kind!r}: expected one of {', '.join(KINDS)} (or export DIR)",
+              file=sys.stderr)
         return 2
-    sys.stdout.write(json.dumps(schema(kind), indent=2) + "\n")
+    if args.dir is not None:
+        print(f"eyesim schema: unexpected argument {args.dir!r} (only 'export' takes a folder)", file=sys.stderr)
+        return 2
+    sys.stdout.write(schema_text(kind))
     return 0
 
 

@@ -9,6 +9,8 @@ the floor. Object frame: the same axes, origin at the object's centre on the flo
 Every position below is already converted into these frames, whatever dialect the file used
 (see docs/file-formats.md); the only exception is a robot's mesh placement (`model_offset`,
 `model_rotation`), which stays in the mesh's own axes because it only concerns drawing the mesh.
+`RobotType` and the specs of its parts (PsdSpec, CameraSpec ...) are declared by the robot part
+kinds in scene/parts/ and importable from here as well.
 """
 
 from __future__ import annotations
@@ -105,72 +107,6 @@ class World:
 
 
 @dataclass(frozen=True)
-class WheelSpec:
-    """Wheels of a wheeled drive: diameter mm, max speed deg/s, encoder ticks per revolution,
-    track = full distance between the left and right wheel contact points in mm."""
-
-    diameter: float
-    max_speed: float
-    ticks_per_rev: int
-    track: float
-
-
-@dataclass(frozen=True)
-class SteeringSpec:
-    """The steered axle of an Ackermann robot: `offset` mm ahead (+) of the robot centre,
-    axle `height` mm above the floor (None = wheel radius) and its wheels (None = as driven)."""
-
-    offset: float
-    height: float | None = None
-    wheels: WheelSpec | None = None
-
-
-@dataclass(frozen=True)
-class PsdSpec:
-    """A PSD distance sensor: RoBIOS id (PSD_FRONT=1 ...), name, position in the robot frame (mm)
-    and beam direction (heading deg, left positive; pitch deg, up positive)."""
-
-    id: int
-    name: str
-    x: float
-    y: float
-    z: float
-    heading: float
-    pitch: float = 0.0
-
-
-@dataclass(frozen=True)
-class CameraSpec:
-    """A camera at a robot-frame position (mm) with default pan/tilt (deg) and field of view.
-
-    `pan_range`/`tilt_range` are the mechanical limits in degrees (min, max). When a servo
-    drives pan or tilt (`pan_servo`/`tilt_servo`, RoBIOS servo numbers), SERVOSet 0..255 maps
-    linearly onto that range. `fisheye` marks a fisheye lens whose field of view is `fov`.
-    """
-
-    x: float
-    y: float
-    z: float
-    pan: float = 0.0
-    tilt: float = 0.0
-    fov: float = 60.0
-    pan_servo: int | None = None
-    tilt_servo: int | None = None
-    pan_range: tuple[float, float] = (-90.0, 90.0)
-    tilt_range: tuple[float, float] = (-90.0, 90.0)
-    fisheye: bool = False
-
-
-@dataclass(frozen=True)
-class LidarSpec:
-    """A scanning lidar: `points` beams over 360 degrees, scan plane tilted by `tilt` degrees
-    against the driving plane."""
-
-    points: int = 360
-    tilt: float = 0.0
-
-
-@dataclass(frozen=True)
 class Collider:
     """A collision shape in the robot/object frame (mm): kind 'box' (size = sx, sy, sz),
     'sphere' (size = (r,)), 'capsule' (size = (r, h)) or 'cylinder' (size = (r, h)), with its
@@ -181,125 +117,6 @@ class Collider:
     size: tuple[float, ...]
     center: tuple[float, float, float] = (0.0, 0.0, 0.0)
     axis: str = "z"
-
-
-@dataclass(frozen=True)
-class ThrusterSpec:
-    """A thruster: RoBIOS motor number, position (mm, robot frame), thrust direction (robot
-    frame, any length), and the thrust in newtons at motor speed 100 (negative speeds reverse)."""
-
-    name: str
-    motor: int
-    x: float
-    y: float
-    z: float
-    dx: float
-    dy: float
-    dz: float
-    max_thrust: float
-
-
-@dataclass(frozen=True)
-class BuoyancySpec:
-    """Displaced volume in litres (1 litre of water lifts about 1 kg) acting at the centre of
-    buoyancy (mm, robot frame)."""
-
-    volume: float
-    x: float = 0.0
-    y: float = 0.0
-    z: float = 0.0
-
-
-@dataclass(frozen=True)
-class DragSpec:
-    """Linear drag in water: force per speed along the robot's x, y, z axes in N/(m/s), and a
-    rotational drag torque per turn rate in N*m/(rad/s)."""
-
-    x: float
-    y: float
-    z: float
-    rotation: float = 0.0
-
-
-@dataclass(frozen=True)
-class JointSpec:
-    """One arm joint by its standard Denavit-Hartenberg parameters (link i: rotate theta about
-    z, move d along z, move a along x, rotate alpha about x). A 'revolute' joint turns: theta is
-    its zero offset and the limits are degrees; a 'prismatic' joint slides: d is its zero offset
-    and the limits are mm. SERVOSet(servo, 0..255) maps linearly onto [min, max]."""
-
-    name: str
-    servo: int
-    kind: str  # 'revolute' | 'prismatic'
-    d: float
-    theta: float
-    a: float
-    alpha: float
-    min: float
-    max: float
-
-
-@dataclass(frozen=True)
-class GripperSpec:
-    """A two-finger gripper on the last joint: servo 0 = closed, 255 = open `opening` mm;
-    it squeezes with at most `force` newtons."""
-
-    servo: int
-    opening: float
-    force: float
-
-
-@dataclass(frozen=True)
-class ArmSpec:
-    """A manipulator arm mounted at (x, y, z) mm on the robot (robot frame), its base turned
-    by `heading` degrees; joints from the base outwards."""
-
-    x: float = 0.0
-    y: float = 0.0
-    z: float = 0.0
-    heading: float = 0.0
-    joints: tuple[JointSpec, ...] = ()
-    gripper: GripperSpec | None = None
-
-
-@dataclass(frozen=True)
-class RobotType:
-    """A robot type: what a .robi file (or a built-in definition) says about a robot.
-
-    `drive` is one of 'differential', 'ackermann', 'omni', 'submarine' (thrusters, no wheels) or
-    'arm' (a manipulator on a fixed base). A wheeled robot may also carry an `arm`: drive
-    commands then move the base and servo commands the arm. Dimensions: `length`, `width`,
-    `height` of the chassis in mm. `axle_height` is the drive axle's height (None = wheel
-    radius). `drive_motors` lists the EyeSim 6 motor/encoder names of the `drive` line.
-    """
-
-    name: str
-    source: str
-    drive: str = "differential"
-    mass: float = 0.6  # kg
-    length: float = 180.0
-    width: float = 150.0
-    height: float = 80.0
-    color: tuple[int, int, int] = (40, 90, 200)
-    max_speed: float = 600.0  # mm/s
-    max_turn: float = 300.0  # deg/s
-    axis_offset: float = 0.0  # mm the drive axle sits ahead (+) of the robot centre
-    wheels: WheelSpec | None = None
-    psds: tuple[PsdSpec, ...] = ()
-    camera: CameraSpec | None = None
-    lidar: LidarSpec | None = None
-    model: str | None = None
-    colliders: tuple[Collider, ...] = ()
-    drive_motors: tuple[str, ...] = ()
-    center_of_mass: tuple[float, float, float] | None = None  # mm, robot frame
-    axle_height: float | None = None
-    steering: SteeringSpec | None = None  # Ackermann only
-    model_offset: tuple[float, float, float] = (0.0, 0.0, 0.0)  # mm, mesh axes (X right, Y up, Z forward)
-    model_rotation: tuple[float, float, float] = (0.0, 0.0, 0.0)  # deg about the mesh's X, Y, Z
-    thrusters: tuple[ThrusterSpec, ...] = ()
-    buoyancy: BuoyancySpec | None = None
-    drag: DragSpec | None = None
-    arm: ArmSpec | None = None
 
 
 @dataclass(frozen=True)
@@ -378,3 +195,20 @@ class Scene:
     markers: tuple[Marker, ...] = ()
     settings: Settings = Settings()
     warnings: tuple[Diagnostic, ...] = ()
+
+
+# The robot type and its parts' specs are declared by the part kinds (scene/parts/); imported at the
+# end because the part modules use the classes above.
+from eyesim.scene.parts import RobotType  # noqa: E402
+from eyesim.scene.parts.arm import ArmSpec, GripperSpec, JointSpec  # noqa: E402
+from eyesim.scene.parts.camera import CameraSpec  # noqa: E402
+from eyesim.scene.parts.lidar import LidarSpec  # noqa: E402
+from eyesim.scene.parts.psd import PsdSpec  # noqa: E402
+from eyesim.scene.parts.thrusters import ThrusterSpec  # noqa: E402
+from eyesim.scene.parts.water import BuoyancySpec, DragSpec  # noqa: E402
+from eyesim.scene.parts.wheels import SteeringSpec, WheelSpec  # noqa: E402
+
+__all__ = ["Location", "Pose", "Wall", "StartPosition", "ObjectPlacement", "Marker", "World", "Collider",
+           "ObjectType", "RobotPlacement", "Settings", "Diagnostic", "Scene", "RobotType", "ArmSpec", "GripperSpec",
+           "JointSpec", "CameraSpec", "LidarSpec", "PsdSpec", "ThrusterSpec", "BuoyancySpec", "DragSpec",
+           "SteeringSpec", "WheelSpec"]

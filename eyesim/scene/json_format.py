@@ -2,7 +2,8 @@
 
 Each JSON file says what it is in `"format"` (eyesim.scene, eyesim.world, eyesim.maze,
 eyesim.robot, eyesim.object) and `"version"`. Fields at their default value are left out when
-writing. The schemas in eyesim/scene/schemas/ are the published definition (docs/schemas/).
+writing. The schemas in eyesim/scene/schemas/ and the robot schema, which the part kinds declare
+(scene/parts/), are the published definition (`eyesim schema export docs/schemas`).
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ from eyesim.scene.description import Location, Marker, ObjectPlacement, ObjectTy
 from eyesim.scene.diagnostics import Diagnostics, quoted
 from eyesim.scene.jsonpos import json_positions
 from eyesim.scene.maz import MazeDocument
+from eyesim.scene.parts import PARTS, robot_schema
 from eyesim.scene.robot_type import finish_robot_type
 from eyesim.scene.sim import Placement, Reference, SimDocument
 from eyesim.scene.wld import BALL_TYPE
@@ -34,7 +36,25 @@ _SKIP = {"source", "location", "row_lines"}
 @lru_cache(maxsize=None)
 def schema(kind: str) -> dict:
     """The published JSON Schema of one kind."""
+    if kind == "robot":
+        return robot_schema()
     return json.loads((SCHEMA_DIR / f"{kind}.schema.json").read_text(encoding="utf-8"))
+
+
+def schema_text(kind: str) -> str:
+    """The schema as published in docs/schemas/<kind>.schema.json."""
+    return json.dumps(schema(kind), indent=2) + "\n"
+
+
+def export_schemas(folder: Path) -> list[Path]:
+    """Writes every kind's published schema into `folder` (docs/schemas/ in the repository)."""
+    folder.mkdir(parents=True, exist_ok=True)
+    written = []
+    for kind in KINDS:
+        path = folder / f"{kind}.schema.json"
+        path.write_text(schema_text(kind), encoding="utf-8")
+        written.append(path)
+    return written
 
 
 # -- documents to plain data -------------------------------------------------------------------
@@ -340,16 +360,9 @@ def _read_maze(data, source, positions, diagnostics) -> MazeDocument:
 
 def _read_robot(data, source, positions, diagnostics) -> RobotType:
     robot = build(RobotType, {**_body(data), "source": source})
-    where = {"mass": positions.key(["mass"]), "drive": positions.key(["drive"])}
-    for i in range(len(robot.psds)):
-        where[f"psd:{i}"] = positions.value(["psds", i])
-    for i in range(len(robot.thrusters)):
-        where[f"thruster:{i}"] = positions.value(["thrusters", i])
-    if robot.arm is not None:
-        for i in range(len(robot.arm.joints)):
-            where[f"joint:{i}"] = positions.value(["arm", "joints", i])
-        where["gripper"] = positions.value(["arm", "gripper"])
-    where["camera"] = positions.value(["camera"])
+    where = {}
+    for part in PARTS:
+        where.update(part.json_locations(robot, positions))
     return finish_robot_type(robot, diagnostics, where, Location(source, 1, 1))
 
 

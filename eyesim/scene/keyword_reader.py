@@ -24,10 +24,13 @@ class KeywordReader:
         and the line ignored, as every EyeSim version did."""
         handler = getattr(self, "kw_" + keyword, None)
         if handler is None:
-            self.diagnostics.warning(self.at(line), f"unknown keyword {quoted(line.keyword)}: line ignored",
-                                     "unknown-keyword")
+            self.unknown_keyword(line)
             return
         handler(line)
+
+    def unknown_keyword(self, line: Line) -> None:
+        self.diagnostics.warning(self.at(line), f"unknown keyword {quoted(line.keyword)}: line ignored",
+                                 "unknown-keyword")
 
     def arity(self, line: Line, counts: tuple[int, ...], form: str) -> bool:
         """True when the line has one of the argument counts; else reports what it should look like."""

@@ -217,7 +217,7 @@ class Simulation:
         if code is None:
             raise SimulationError(f"{key!r} is not KEY1..KEY4")
         robot_id = self._robot(robot).id
-        self.at(at, lambda s: s.press_key(robot_id, code))
+        self.at(at, lambda s: robot_input.key(s, robot_id, code))
 
     def touch(self, robot, x: int, y: int, at: float) -> None:
         robot_id = self._robot(robot).id

@@ -18,7 +18,7 @@ from pathlib import Path
 from aiohttp import WSMsgType, web
 
 from eyesim.record.recording import Recording, RecordingError
-from eyesim.web import timeline
+from eyesim.web import channel_schema, messages, timeline
 from eyesim.web.access import AccessPolicy
 from eyesim.web.server import MAX_COMMAND_BYTES, TEXTURE_TYPES, _reject_constant, serve_app, static_file, viewer_url
 
@@ -85,8 +85,8 @@ class ReplayServer:
         """The scene, the timeline and the first frame of the recording shown now."""
         source = self.source
         await ws.send_str(json.dumps(self.recording.scene))
-        await ws.send_str(json.dumps({"type": "timeline", "mode": "replay", "name": self.recording.path.name,
-                                      "start": source.start_us / 1e6, "end": source.end_us / 1e6}))
+        await ws.send_str(json.dumps(messages.timeline("replay", self.recording.path.name, source.start_us / 1e6,
+                                                       source.end_us / 1e6)))
         await ws.send_str(await cursor.frame(source, source.start_us))
 
     async def _floor_texture(self, request: web.Request) -> web.StreamResponse:
@@ -128,9 +128,10 @@ class ReplayServer:
             data = json.loads(text, parse_constant=_reject_constant)
         except (ValueError, RecursionError) as error:
             return _error(f"not valid JSON: {error}")
-        if not isinstance(data, dict):
-            return _error("expected a JSON object")
-        if data.get("type") not in timeline.TIMELINE_COMMANDS:
+        problem = channel_schema.command_problem(data)
+        if problem:
+            return _error(problem)
+        if data["type"] not in timeline.TIMELINE_COMMANDS:
             return _error(f"{reprlib.repr(data.get('type'))}: this is a replay of {self.recording.path.name}; "
                           "it can be watched, not changed")
         try:
@@ -140,7 +141,7 @@ class ReplayServer:
 
 
 def _error(text: str) -> str:
-    return json.dumps({"type": "error", "message": text})
+    return json.dumps(messages.error(text))
 
 
 def _image_kind(data: bytes) -> str | None:

@@ -8,12 +8,9 @@ LCD images are PNG-encoded off both threads, in a worker."""
 from __future__ import annotations
 
 import asyncio
-import base64
-import io
 import json
 import logging
 import math
-import reprlib
 import socket
 import time
 from collections import deque
@@ -23,29 +20,21 @@ from pathlib import Path
 from aiohttp import WSMsgType, web
 from PIL import Image
 
+from eyesim import robot_input
 from eyesim.paths import STATIC_DIR
 from eyesim.protocol import generated as g
 from eyesim.record.sampling import robot_state
-from eyesim.robot.components.keys import KEYS
-from eyesim.web import mesh_message, place_command, robot_io_commands, timeline
+from eyesim.web import channel_schema, mesh_message, messages, place_command, robot_io_commands, timeline
 from eyesim.web.access import AccessPolicy
 from eyesim.web.live_history import LiveHistory
-from eyesim.web.scene_message import scene_message
+from eyesim.web.program_control import ProgramControl
 
 log = logging.getLogger("eyesim.web")
 CONSOLE_BACKLOG = 500  # console chunks per robot replayed to a browser that connects late
 PANEL_CHARACTERS = 50_000  # the viewer's console keeps no more (serial: less): a longer chunk is cut to its end
-CAMERA_VIEW_WIDTH = 320  # pixels: larger camera images are sent to the viewer scaled down by a whole factor
-MIN_SPEED, MAX_SPEED = 0.01, 1000.0  # realtime factors a browser may set ('max' for as fast as possible)
 MAX_COMMAND_BYTES = 64 * 1024  # a browser command is a small JSON object; larger ones close the socket
 RECORDER_ONLY = ("input", "edit")  # events for recordings (eyesim/record); browsers see their effects
 TEXTURE_TYPES = {"PNG": "image/png", "JPEG": "image/jpeg", "BMP": "image/bmp", "GIF": "image/gif"}
-
-
-def encode_lcd(pixels) -> str:
-    buffer = io.BytesIO()
-    Image.fromarray(pixels).save(buffer, format="PNG", compress_level=1)
-    return base64.b64encode(buffer.getvalue()).decode("ascii")
 
 
 class Browser:
@@ -119,7 +108,7 @@ class ViewerHub:
 
     def on_snapshot(self, message: dict) -> None:
         states = [robot_state(robot) for robot in self.sim.robots]  # for the history's plots
-        self.loop.call_soon_threadsafe(self._snapshot, message, self.sim.status(), states)
+        self.loop.call_soon_threadsafe(self._snapshot, message, messages.status(self.sim, None), states)
 
     def on_request(self, robot, request, reply) -> None:
         """A request observer (engine): PSD readings, for the history's plots."""
@@ -149,11 +138,11 @@ class ViewerHub:
             message = dict(message, text=message["text"][-PANEL_CHARACTERS:])  # 16 MiB once cost 330 MB here
         if kind == "new-scene":  # another scene replaced the running one (scene browser, editor)
             self._forget_scene()
-            message = dict(scene_message(self.sim, self._texture_url()), new_scene=True)
+            message = messages.scene(self.sim, self._texture_url())
             kind = "reset"
             self.sim.call(_publish_io)
         elif kind == "reset":
-            message = scene_message(self.sim, self._texture_url())
+            message = messages.scene(self.sim, self._texture_url())
             self.sim.call(_publish_io)
         else:
             self.history.add_event(time_us, message)
@@ -206,8 +195,8 @@ class ViewerHub:
         return "/scene/floor-texture" if texture and Path(texture).is_file() else None
 
     async def attach(self, browser: Browser) -> None:
-        browser.add_event(json.dumps(scene_message(self.sim, self._texture_url())))
-        browser.add_event(json.dumps({"type": "timeline", "mode": "live"}))
+        browser.add_event(json.dumps(messages.scene(self.sim, self._texture_url())))
+        browser.add_event(json.dumps(messages.timeline("live")))
         self._present(browser)
         self.browsers.add(browser)
         # A browser that connects now needs the current LCD images even if nothing changes.
@@ -241,8 +230,7 @@ class ViewerHub:
             if message["type"] == "live":
                 browser.reviewing = False
                 browser.cursor = timeline.FrameCursor()
-                browser.add_event(json.dumps({"type": "frame", "time": self.sim.time, "clear": self.history.robot_ids,
-                                              "messages": []}))
+                browser.add_event(messages.frame_text(self.sim.time, self.history.robot_ids, []))
                 self._present(browser)
                 return
             if message["type"] == "seek":
@@ -250,49 +238,43 @@ class ViewerHub:
             try:
                 reply = await timeline.answer(self.history, browser.cursor, message)
             except ValueError as error:
-                reply = json.dumps({"type": "error", "message": str(error)})
+                reply = json.dumps(messages.error(str(error)))
             except Exception:  # a bad value the checks missed: this browser gets an error, nobody else notices
                 log.exception("viewer command %.200r failed", message)
-                reply = json.dumps({"type": "error", "message": f"{message['type']}: the simulator could not "
-                                                                f"carry out this command"})
+                reply = json.dumps(messages.error(f"{message['type']}: the simulator could not carry out this command"))
             browser.add_event(reply)
 
     def detach(self, browser: Browser) -> None:
         self.browsers.discard(browser)
 
+    def resend_scene(self) -> None:
+        """The scene's description changed (its settings): every browser gets it afresh. Any thread."""
+        self.loop.call_soon_threadsafe(self._event, {"type": "reset"}, self.sim.time_us)
+
     # -- commands from a browser -------------------------------------------------------------
     def command(self, message: dict) -> str | None:
-        """Queue a browser command for the simulation; return an error text for a bad one."""
-        kind = message.get("type")
-        if not isinstance(kind, str):
-            return f"unknown message type {reprlib.repr(kind)}"
+        """Queue a browser command (already checked against the schema) for the simulation;
+        return an error text for one the simulation state refuses."""
+        kind = message["type"]
         if kind == "key":
-            robot, key = message.get("robot"), message.get("key")
-            if not isinstance(robot, int) or isinstance(robot, bool) or self.sim.robot_by_id(robot) is None:
-                return f"key: no robot {reprlib.repr(robot)}"
-            if not isinstance(key, int) or key not in KEYS:
-                return f"key: {key!r} is not one of 1, 2, 4, 8"
-            self.sim.call(lambda sim: sim.press_key(robot, key))
+            robot, key = message["robot"], message["key"]
+            if self.sim.robot_by_id(robot) is None:
+                return f"key: no robot {robot!r}"
+            self.sim.call(lambda sim: robot_input.key(sim, robot, key))
         elif kind in ("pause", "resume"):
             self.sim.call(lambda sim: sim.clock.set_paused(kind == "pause", sim.time_us))
         elif kind == "speed":
-            value = message.get("value")
-            if value == "max":
-                value = math.inf
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or \
-                    not (value == math.inf or MIN_SPEED <= value <= MAX_SPEED):
-                return f"speed: {reprlib.repr(value)} is not a number from {MIN_SPEED:g} to {MAX_SPEED:g} or 'max'"
-            self.sim.call(lambda sim: sim.clock.set_speed(float(value), sim.time_us))
+            value = math.inf if message["value"] == "max" else float(message["value"])
+            self.sim.call(lambda sim: sim.clock.set_speed(value, sim.time_us))
         elif kind == "reset":
             self.sim.call(lambda sim: sim.reset())
         elif kind in robot_io_commands.COMMANDS:
             return robot_io_commands.command(self.sim, message)
         elif kind == "place":
             return place_command.place(self.sim, message)
-        else:
-            return f"unknown message type {reprlib.repr(kind)}"
+        else:  # in the schema but not handled here: say so in the log (see command_text)
+            raise NotImplementedError(f"no handler for the viewer command {kind!r}")
         return None
-
 
     def command_text(self, text: str, browser: Browser) -> str | None:
         """A command as the browser sent it: the error text for a bad one, else None."""
@@ -300,9 +282,10 @@ class ViewerHub:
             data = json.loads(text, parse_constant=_reject_constant)
         except (ValueError, RecursionError) as error:
             return f"not valid JSON: {error}"
-        if not isinstance(data, dict):
-            return "expected a JSON object"
-        if data.get("type") in timeline.TIMELINE_COMMANDS + ("live",):
+        problem = channel_schema.command_problem(data)
+        if problem:
+            return problem
+        if data["type"] in timeline.TIMELINE_COMMANDS + ("live",):
             self.loop.create_task(self.timeline_command(browser, data))
             return None
         try:
@@ -333,16 +316,11 @@ def _publish_io(sim) -> None:
 
 
 def _lcd_message(robot: int, pixels) -> str:
-    return json.dumps({"type": "lcd", "robot": robot, "png": encode_lcd(pixels)})
+    return json.dumps(messages.lcd(robot, pixels))
 
 
 def _camera_message(robot: int, pixels) -> str:
-    height, width = pixels.shape[:2]
-    step = max(1, width // CAMERA_VIEW_WIDTH)  # a panel shows no more: skip the rest early
-    buffer = io.BytesIO()
-    Image.fromarray(pixels[::step, ::step]).save(buffer, format="JPEG", quality=85)
-    return json.dumps({"type": "camera", "robot": robot, "width": width, "height": height,
-                       "jpeg": base64.b64encode(buffer.getvalue()).decode("ascii")})
+    return json.dumps(messages.camera(robot, pixels))
 
 
 async def serve_app(app: web.Application, host: str, port: int) -> tuple[web.AppRunner, int]:
@@ -378,8 +356,13 @@ async def static_file(request: web.Request) -> web.StreamResponse:
 
 
 class ViewerServer:
-    def __init__(self, sim, io_thread, host: str = "127.0.0.1", port: int = 8080, token: str | None = None):
+    def __init__(self, sim, io_thread, host: str = "127.0.0.1", port: int = 8080, token: str | None = None,
+                 launcher=None, run_folder: Path | None = None):
+        """`launcher` runs the programs the page starts (none: the page cannot start programs);
+        `run_folder` is the first scene root (default: the current folder)."""
         self.sim = sim
+        self.launcher = launcher
+        self.run_folder = run_folder or Path.cwd()
         self.io = io_thread
         self.host = host
         self.port = port
@@ -403,6 +386,8 @@ class ViewerServer:
         app.router.add_get("/ws", self._websocket)
         app.router.add_get("/scene/floor-texture", self._floor_texture)
         app.router.add_get("/scene/mesh/{kind}/{id}", self._mesh)
+        if self.launcher is not None:
+            ProgramControl(self.sim, self.launcher, self.run_folder, self.hub.resend_scene).add_routes(app.router)
         if self.workspace is not None:
             self.workspace.add_routes(app)
         app.router.add_get("/{path:.*}", static_file)
@@ -452,7 +437,7 @@ class ViewerServer:
                 else:
                     continue
                 if error:
-                    browser.add_event(json.dumps({"type": "error", "message": error}))
+                    browser.add_event(json.dumps(messages.error(error)))
         finally:
             self.hub.detach(browser)
             pump.cancel()

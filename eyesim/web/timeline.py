@@ -19,6 +19,7 @@ from collections import defaultdict
 from PIL import Image
 
 from eyesim.record import signals
+from eyesim.web import messages as viewer_messages
 
 LATEST_KINDS = ("menu", "program", "io")  # only the last one before a time matters
 STREAM_KINDS = ("console", "serial")  # everything before a time matters
@@ -93,10 +94,10 @@ class RecordingTimeline:
                 self._images.clear()
             image = self.recording.image(robot_id, kind, image_us)
             if kind == "lcd":
-                message = {"type": "lcd", "robot": robot_id, "png": image["data"]}
+                message = viewer_messages.lcd_encoded(robot_id, image["data"])
             else:
                 width, height = Image.open(io.BytesIO(base64.b64decode(image["data"]))).size
-                message = {"type": "camera", "robot": robot_id, "width": width, "height": height, "jpeg": image["data"]}
+                message = viewer_messages.camera_encoded(robot_id, width, height, image["data"])
             self._images[key] = json.dumps(message)
         return self._images[key]
 
@@ -122,9 +123,8 @@ class FrameCursor:
         snapshot = source.snapshot_at(time_us)
         if snapshot is not None:
             messages.append(json.dumps(snapshot))
-        clear = json.dumps(list(source.robot_ids) if afresh else [])
-        return (f'{{"type":"frame","time":{time_us / 1e6!r},"start":{source.start_us / 1e6!r},'
-                f'"end":{source.end_us / 1e6!r},"clear":{clear},"messages":[{",".join(messages)}]}}')
+        return viewer_messages.frame_text(time_us / 1e6, list(source.robot_ids) if afresh else [], messages,
+                                          source.start_us / 1e6, source.end_us / 1e6)
 
     async def _robot(self, source, robot_id: int, after_us: float, time_us: int, messages: list[str]) -> None:
         for kind in LATEST_KINDS:  # a panel that starts afresh (`clear`) has none of these
@@ -156,7 +156,7 @@ def paths(source) -> dict:
                 kept_times.append(time_us / 1e6)
                 points += [round(x, 4), round(y, 4)]
         robots.append({"id": robot_id, "times": kept_times, "points": points})
-    return {"type": "paths", "robots": robots}
+    return viewer_messages.paths(robots)
 
 
 async def answer(source, cursor: FrameCursor, message: dict) -> str:
@@ -169,7 +169,7 @@ async def answer(source, cursor: FrameCursor, message: dict) -> str:
         seconds = min(max(seconds, -1e12), 1e12)  # the frame clamps it to the timeline; 1e308 s in us overflows
         return await cursor.frame(source, round(seconds * 1e6))
     if kind == "signals":
-        return json.dumps({"type": "signals", "signals": signals.catalogue(source)})
+        return json.dumps(viewer_messages.signals(signals.catalogue(source)))
     if kind == "series":
         ids = message.get("ids")
         if not isinstance(ids, list) or not all(isinstance(i, str) for i in ids) or len(ids) > 32:
@@ -180,7 +180,7 @@ async def answer(source, cursor: FrameCursor, message: dict) -> str:
             if values is None:
                 raise ValueError(f"series: no signal {reprlib.repr(signal_id)}")
             found.append({"id": signal_id, "times": values[0], "values": values[1]})
-        return json.dumps({"type": "series", "series": found})
+        return json.dumps(viewer_messages.series(found))
     if kind == "paths":
         return json.dumps(paths(source))
     raise ValueError(f"unknown message type {kind!r}")

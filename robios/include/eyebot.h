@@ -233,49 +233,59 @@ typedef BYTE CAM5MPgray[CAM5MP_PIXELS];
  * answers a call with an error, the library prints "eyesim: <function>: <reason>" to stderr and
  * returns the error value given below. Units: mm, mm/s, degrees, degrees/s, milliseconds. */
 
-/* ---- LCD: a 480 x 320 screen; text cells are addressed by row and column ---------------------- */
+/* ==== Generated from the "api" groups of protocol/protocol.json down to "End of the generated
+ * declarations": change them there and run `make protocol`. ==== */
 
-int LCDPrintf(const char *format, ...) EYEBOT_PRINTF(1, 2);               /* print at the cursor */
+/* ---- LCD: a 480 x 320 screen; text cells are addressed by row and column --------------------- */
+
+int LCDPrintf(const char *format, ...) EYEBOT_PRINTF(1, 2); /* print at the cursor */
 int LCDSetPrintf(int row, int column, const char *format, ...) EYEBOT_PRINTF(3, 4);
-int LCDClear(void);                                                      /* clear to black */
-int LCDMenu(const char *key1, const char *key2, const char *key3, const char *key4); /* soft-key labels */
-int LCDMenuI(int pos, const char *string, COLOR fg, COLOR bg); /* one soft-key label (pos 1..4), its colours */
-int LCDSetPos(int row, int column);        /* move the text cursor; 1 if outside the text grid */
-int LCDGetPos(int *row, int *column);      /* the text cursor */
-int LCDSetColor(COLOR fg, COLOR bg);       /* text colours (default WHITE on BLACK) */
-int LCDSetFont(int font, int variation);   /* HELVETICA/TIMES/COURIER, NORMAL/BOLD/ITALICS (or BOLD|ITALICS) */
-int LCDSetFontSize(int fontsize);          /* 8..24 (default 10: 60 x 21 cells of 8 x 13 pixels); 1 if invalid */
-int LCDSetMode(int mode);                  /* OR of LCD_* mode flags, e.g. LCD_NOSCROLLING | LCD_HIDEMENU */
-int LCDRefresh(void);                      /* show what was drawn (needed with LCD_NOAUTOREFRESH) */
-int LCDGetSize(int *x, int *y);            /* 480 x 320 pixels */
-int LCDPixel(int x, int y, COLOR col);     /* drawing is clipped to the screen */
-COLOR LCDGetPixel(int x, int y);           /* the colour drawn there (-1 outside the screen) */
-int LCDLine(int x1, int y1, int x2, int y2, COLOR col);
+                                                        /* move the text cursor to row, column, then print
+                                                           as LCDPrintf */
+int LCDClear(void);                                     /* clear to black */
+int LCDMenu(const char *st1, const char *st2, const char *st3, const char *st4); /* soft-key labels */
+int LCDMenuI(int pos, const char *string, COLOR fg, COLOR bg);
+                                                        /* one soft-key label (pos 1..4), its colours */
+int LCDSetPos(int row, int column);                     /* move the text cursor; 1 if outside the text grid */
+int LCDGetPos(int *row, int *column);                   /* the text cursor */
+int LCDSetColor(COLOR fg, COLOR bg);                    /* text colours (default WHITE on BLACK) */
+int LCDSetFont(int font, int variation);                /* HELVETICA/TIMES/COURIER, NORMAL/BOLD/ITALICS (or
+                                                           BOLD|ITALICS) */
+int LCDSetFontSize(int fontsize);                       /* 8..24 (default 10: 60 x 21 cells of 8 x 13
+                                                           pixels); 1 if invalid */
+int LCDSetMode(int mode);                               /* OR of LCD_* mode flags, e.g. LCD_NOSCROLLING |
+                                                           LCD_HIDEMENU */
+int LCDRefresh(void);                                   /* show what was drawn (needed with
+                                                           LCD_NOAUTOREFRESH) */
+int LCDGetSize(int *x, int *y);                         /* 480 x 320 pixels */
+int LCDPixel(int x, int y, COLOR col);                  /* drawing is clipped to the screen */
+COLOR LCDGetPixel(int x, int y);                        /* the colour drawn there (-1 outside the screen) */
+int LCDLine(int x1, int y1, int x2, int y2, COLOR col); /* a line between two points, both included */
 int LCDArea(int x1, int y1, int x2, int y2, COLOR col, int fill); /* corners included; fill 1 or outline 0 */
-int LCDCircle(int x1, int y1, int size, COLOR col, int fill);     /* centre, radius; fill 1 or outline 0 */
-int LCDImageSize(int t);                   /* size of the images LCDImage* get: QQVGA..CAM5MP (QVGA);
-                                              CUSTOM keeps LCDImageStart's size */
-int LCDImageStart(int x, int y, int xs, int ys); /* where images show, and their size: the next images
-                                                    have xs x ys pixels, shown 1:1 */
-int LCDImage(const BYTE *img);             /* colour image: 3 bytes (R, G, B) per pixel */
-int LCDImageGray(const BYTE *g);           /* gray image: 1 byte per pixel, 0 black .. 255 white */
-int LCDImageBinary(const BYTE *b);         /* 1 byte per pixel: non-zero black, 0 white */
+int LCDCircle(int x1, int y1, int size, COLOR col, int fill); /* centre, radius; fill 1 or outline 0 */
+int LCDImageSize(int t);                                /* size of the images LCDImage* get: QQVGA..CAM5MP
+                                                           (QVGA); CUSTOM keeps LCDImageStart's size */
+int LCDImageStart(int x, int y, int xs, int ys);        /* where images show, and their size: the next
+                                                           images have xs x ys pixels, shown 1:1 */
+int LCDImage(const BYTE *img);                          /* colour image: 3 bytes (R, G, B) per pixel */
+int LCDImageGray(const BYTE *g);                        /* gray image: 1 byte per pixel, 0 black .. 255
+                                                           white */
+int LCDImageBinary(const BYTE *b);                      /* 1 byte per pixel: non-zero black, 0 white */
 
 /* ---- Keys ------------------------------------------------------------------------------------ */
 
-int KEYGet(void);  /* blocks until a soft key is pressed; KEY1..KEY4 (NOKEY on error) */
-int KEYRead(void); /* the key pressed now, or NOKEY; never blocks */
-int KEYWait(int key);             /* blocks until a key in the mask (KEY1..KEY4, ANYKEY) is pressed; returns it */
-int KEYGetXY(int *x, int *y);     /* blocks until the LCD is touched above the menu bar; pixel coordinates */
-int KEYReadXY(int *x, int *y);    /* 0 and the touch's coordinates, or 1 if there was none; never blocks */
+int KEYGet(void);              /* blocks until a soft key is pressed; KEY1..KEY4 (NOKEY on error) */
+int KEYRead(void);             /* the key pressed now, or NOKEY; never blocks */
+int KEYWait(int key);          /* blocks until a key in the mask (KEY1..KEY4, ANYKEY) is pressed; returns
+                                  it */
+int KEYGetXY(int *x, int *y);  /* blocks until the LCD is touched above the menu bar; pixel coordinates */
+int KEYReadXY(int *x, int *y); /* 0 and the touch's coordinates, or 1 if there was none; never blocks */
 
-/* ---- Time (the simulator's clock) and system ---------------------------------------------------- */
+/* ---- Time (the simulator's clock) and system ------------------------------------------------- */
 
-int OSWait(int ms);     /* blocks for ms milliseconds of simulation time */
-int OSGetCount(void);   /* milliseconds of simulation time (-1 on error) */
+int OSWait(int n);                    /* blocks for n milliseconds of simulation time */
+int OSGetCount(void);                 /* milliseconds of simulation time (-1 on error) */
 int OSGetTime(int *hrs, int *mins, int *secs, int *ticks); /* simulation time; ticks in ms */
-TIMER OSAttachTimer(int scale, void (*fct)(void)); /* call fct every scale ms of simulation time; 0 on error */
-int OSDetachTimer(TIMER t);                        /* fct is not called again once this returns */
 char *OSExecute(const char *command); /* runs a shell command, returns its output (free() it) or NULL */
 int OSVersion(char *buf);             /* the library's version text */
 int OSVersionIO(char *buf);           /* the simulated I/O board's version text */
@@ -284,73 +294,88 @@ int OSMachineType(void);              /* VEHICLE, or PLATFORM for a manipulator 
 int OSMachineName(char *buf);         /* the robot's name from the scene */
 int OSMachineID(void);                /* the robot's id (1.. in scene order) */
 
-/* ---- Serial interfaces: 0 = serial port, 1..20 = USB; byte streams the simulator carries -------- */
+/* ---- Timers: functions the library calls every so many ms of simulation time ----------------- */
 
-#define RTSCTS 1 /* SERInit handshake; 0 = none */
+TIMER OSAttachTimer(int scale, void (*fct)(void)); /* call fct every scale ms of simulation time; 0 on
+                                                      error */
+int OSDetachTimer(TIMER t);                        /* fct is not called again once this returns */
+
+/* ---- Serial interfaces: 0 = serial port, 1..20 = USB; byte streams the simulator carries ----- */
+
+#define RTSCTS 1                                     /* SERInit handshake; 0 = none */
 int SERInit(int interface, int baud, int handshake); /* baud 50..230400 */
-int SERSendChar(int interface, char ch);
+int SERSendChar(int interface, char ch);             /* one byte */
 int SERSend(int interface, const char *buf);         /* a NUL-terminated string */
 char SERReceiveChar(int interface);                  /* blocks until a byte arrives */
 int SERReceive(int interface, char *buf, int size);  /* up to size bytes already there (NUL added if room);
                                                         never blocks; -1 on error */
 bool SERCheck(int interface);                        /* true when a byte is waiting */
 int SERFlush(int interface);                         /* drops the bytes waiting */
-int SERClose(int interface);
+int SERClose(int interface);                         /* close the interface */
 
-/* ---- Audio ------------------------------------------------------------------------------------ */
+/* ---- Audio ----------------------------------------------------------------------------------- */
 
-int AUBeep(void);                    /* a short beep (0.2 s) */
-int AUPlay(const char *filename);    /* plays a WAV or MP3 file in the background */
-int AUDone(void);                    /* 1 when nothing plays any more, 0 while playing */
-int AUMicrophone(void);              /* one microphone sample, 0..1023 (silence 512) */
+int AUBeep(void);                 /* a short beep (0.2 s) */
+int AUPlay(const char *filename); /* plays a WAV or MP3 file in the background */
+int AUDone(void);                 /* 1 when nothing plays any more, 0 while playing */
+int AUMicrophone(void);           /* one microphone sample, 0..1023 (silence 512) */
 
-/* ---- Digital and analog I/O ------------------------------------------------------------------- */
+/* ---- Digital and analog I/O ------------------------------------------------------------------ */
 
-int DIGITALSetup(int io, char direction); /* line 1..16: 'i' in, 'o' out, 'I' in pull-up, 'J' in pull-down */
-int DIGITALRead(int io);                  /* 0 or 1 (-1 on error) */
-int DIGITALReadAll(void);                 /* bit k-1 = line k */
-int DIGITALWrite(int io, int state);      /* an output line: 0 or 1 */
-int ANALOGRead(int channel);              /* channel 1..8 (8 = microphone): 0..1023 (-1 on error) */
-int ANALOGVoltage(void);                  /* battery voltage in 0.01 V */
+int DIGITALSetup(int io, char direction);      /* line 1..16: 'i' in, 'o' out, 'I' in pull-up, 'J' in
+                                                  pull-down */
+int DIGITALRead(int io);                       /* 0 or 1 (-1 on error) */
+int DIGITALReadAll(void);                      /* bit k-1 = line k */
+int DIGITALWrite(int io, int state);           /* an output line: 0 or 1 */
+int ANALOGRead(int channel);                   /* channel 1..8 (8 = microphone): 0..1023 (-1 on error) */
+int ANALOGVoltage(void);                       /* battery voltage in 0.01 V */
 int ANALOGRecord(int channel, int iterations); /* starts sampling at 1 kHz; never blocks */
-int ANALOGTransfer(BYTE *buffer);         /* waits for the recording: 2 bytes per sample (little-endian);
-                                             returns the number of bytes (-1 on error) */
+int ANALOGTransfer(BYTE *buffer);              /* waits for the recording: 2 bytes per sample
+                                                  (little-endian); returns the number of bytes (-1 on
+                                                  error) */
 
-/* ---- IR remote control ------------------------------------------------------------------------ */
+/* ---- IR remote control ----------------------------------------------------------------------- */
 
 int IRTVGet(void);       /* blocks until a code (IRTV_*) arrives */
 int IRTVRead(void);      /* the next code, or 0 if none; never blocks */
 int IRTVFlush(void);     /* drops the codes waiting */
 int IRTVGetStatus(void); /* 1: the receiver is on */
 
-/* ---- Distance sensors ------------------------------------------------------------------------- */
+/* ---- PSD distance sensors -------------------------------------------------------------------- */
 
 int PSDGet(int psd);    /* distance in mm measured by PSD_FRONT/LEFT/RIGHT/BACK or 1..6 (-1 on error) */
 int PSDGetRaw(int psd); /* raw 10-bit reading, 102300 / (mm + 100): 1023 at 0 mm, 93 at 1 m (-1 on error) */
 
-/* LIDAR: index LIDAR_RESOLUTION/2 looks straight ahead, indices grow clockwise seen from above
- * (360 points over 360 degrees: 0 behind, 90 left, 180 ahead, 270 right); 9999 = nothing in range. */
-extern int LIDAR_RESOLUTION;                      /* points per scan: 360 until LIDARSet changes it;
-                                                     LIDARGet never writes more */
-int LIDARSet(int range, int tilt, int points);    /* field 1..360 deg centred ahead, tilt deg (front down
-                                                     positive), points 1..3600 */
-int LIDARGet(int distance[]);                     /* one scan in mm into LIDAR_RESOLUTION ints */
+/* ---- LIDAR --------------------------------------------------------------------------------------
+ * index LIDAR_RESOLUTION/2 looks straight ahead, indices grow clockwise seen from above (360 points
+ * over 360 degrees: 0 behind, 90 left, 180 ahead, 270 right); 9999 = nothing in range. */
 
-/* ---- Camera: frames are rendered from the camera's pose on the robot --------------------------- */
+extern int LIDAR_RESOLUTION;                   /* points per scan: 360 until LIDARSet changes it; LIDARGet
+                                                  never writes more */
+int LIDARSet(int range, int tilt, int points); /* field 1..360 deg centred ahead, tilt deg (front down
+                                                  positive), points 1..3600 */
+int LIDARGet(int distance[]);                  /* one scan in mm into LIDAR_RESOLUTION ints */
+int SIMLaserScan(int scan[360]);               /* EyeSim 6's scan: 360 level beams in mm, one per degree,
+                                                  index 0 ahead, counter-clockwise (a wall point is at x +
+                                                  d*cos(phi + i)); the LIDARSet settings and
+                                                  LIDAR_RESOLUTION stay */
+
+/* ---- Camera: frames are rendered from the camera's pose on the robot ------------------------- */
 
 extern int CAMWIDTH, CAMHEIGHT, CAMPIXELS, CAMSIZE; /* the size CAMInit chose (0 before) */
-int CAMInit(int resolution);   /* QQVGA .. CAM5MP (not CUSTOM); also sets the IP and LCD image size;
-                                  0 = OK, CAM_FAILURE on error */
-int CAMRelease(void);          /* 0 = OK */
-int CAMGet(BYTE *buf);         /* CAMSIZE bytes: R, G, B per pixel, row by row from the top left */
-int CAMGetGray(BYTE *buf);     /* CAMPIXELS bytes: (R + G + B) / 3 per pixel */
+int CAMInit(int resolution);                        /* QQVGA .. CAM5MP (not CUSTOM); also sets the IP and
+                                                       LCD image size; 0 = OK, CAM_FAILURE on error */
+int CAMRelease(void);                               /* 0 = OK */
+int CAMGet(BYTE *buf);                              /* CAMSIZE bytes: R, G, B per pixel, row by row from
+                                                       the top left */
+int CAMGetGray(BYTE *buf);                          /* CAMPIXELS bytes: (R + G + B) / 3 per pixel */
 
-/* ---- Radio: messages between the robots of the scene; ids are robot ids (1.. in scene order) ---- */
+/* ---- Radio: messages between the robots of the scene; ids are robot ids (1.. in scene order) - */
 
 int RADIOInit(void);                               /* switch the radio on; 0 = OK */
 int RADIOGetID(void);                              /* this robot's id */
-int RADIOSend(int id, const char *buf);            /* queue a text of at most 1024 bytes for robot id;
-                                                      1 for an unknown id or before RADIOInit */
+int RADIOSend(int id, const char *buf);            /* queue a text of at most 1024 bytes for robot id; 1
+                                                      for an unknown id or before RADIOInit */
 int RADIOReceive(int *id_no, char *buf, int size); /* blocks for the oldest message; its sender and text
                                                       (cut to size - 1 bytes, NUL added); returns the
                                                       number of bytes stored, -1 on error */
@@ -359,20 +384,23 @@ int RADIOStatus(int IDlist[]);                     /* ids of all robots with the
                                                       returns their number */
 int RADIORelease(void);                            /* switch the radio off */
 
-/* ---- Servos, motors and encoders; numbers per drive type in docs/api/motor.md and servo.md ---- */
+/* ---- Servos; numbers per robot in docs/api/servo.md ------------------------------------------ */
 
-int SERVOSet(int servo, int angle);              /* position 0..255 within the servo's SERVORange */
-int SERVOSetRaw(int servo, int angle);           /* raw position 0..255, ignoring SERVORange */
-int SERVORange(int servo, int low, int high);    /* the raw positions SERVOSet 0 and 255 stand for */
-int MOTORDrive(int motor, int speed);            /* open loop, -100..100 percent */
-int MOTORDriveRaw(int motor, int speed);         /* the same (the simulator has no HDT table) */
-int MOTORPID(int motor, int p, int i, int d);    /* closed-loop gains 0..255; holds the set speed */
-int MOTORPIDOff(int motor);                      /* back to open loop, unpowered */
-int MOTORSpeed(int motor, int ticks);            /* closed-loop speed in encoder ticks per second */
-int ENCODERRead(int quad);                       /* ticks since the last reset (1 on error) */
-int ENCODERReset(int quad);                      /* set the count to 0 */
+int SERVOSet(int servo, int angle);           /* position 0..255 within the servo's SERVORange */
+int SERVOSetRaw(int servo, int angle);        /* raw position 0..255, ignoring SERVORange */
+int SERVORange(int servo, int low, int high); /* the raw positions SERVOSet 0 and 255 stand for */
 
-/* ---- V-omega driving: mm, mm/s, degrees (counter-clockwise positive), degrees/s --------------- */
+/* ---- Motors and encoders; numbers per drive type in docs/api/motor.md ------------------------ */
+
+int MOTORDrive(int motor, int speed);         /* open loop, -100..100 percent */
+int MOTORDriveRaw(int motor, int speed);      /* the same (the simulator has no HDT table) */
+int MOTORPID(int motor, int p, int i, int d); /* closed-loop gains 0..255; holds the set speed */
+int MOTORPIDOff(int motor);                   /* back to open loop, unpowered */
+int MOTORSpeed(int motor, int ticks);         /* closed-loop speed in encoder ticks per second */
+int ENCODERRead(int quad);                    /* ticks since the last reset (1 on error) */
+int ENCODERReset(int quad);                   /* set the count to 0 */
+
+/* ---- V-omega driving: mm, mm/s, degrees (counter-clockwise positive), degrees/s -------------- */
 
 int VWSetSpeed(int linSpeed, int angSpeed);      /* drive on until changed; (0, 0) stops */
 int VWGetSpeed(int *linSpeed, int *angSpeed);    /* measured speeds */
@@ -390,40 +418,47 @@ int VWDriveDone(void);                           /* older name of VWDone */
 int VWDriveWait(void);                           /* older name of VWWait */
 int VWDriveRemain(void);                         /* older name of VWRemain */
 
-/* ---- Image processing, done in this library without the simulator --------------------------------
+/* ---- Image processing, done in this library without the simulator -------------------------------
  * Every function works on images of the current IP size: IPSetSize, or CAMInit; QVGA at the start.
- * Colour images have 3 bytes per pixel (R, G, B), gray images 1, row by row from the top left.
- * Bad arguments (NULL buffers, unknown files) are reported on stderr as "eyesim: <function>: ...". */
+ * Colour images have 3 bytes per pixel (R, G, B), gray images 1, row by row from the top left. Bad
+ * arguments (NULL buffers, unknown files) are reported on stderr as "eyesim: <function>: ...". */
 
-extern int IP_WIDTH, IP_HEIGHT, IP_PIXELS, IP_SIZE; /* the IP size: width, height, pixels, colour bytes */
-int IPSetSize(int resolution);                  /* QQVGA .. CAM5MP; 1 for anything else (CUSTOM) */
-int IPReadFile(const char *filename, BYTE *img); /* PNM P1-P6, cropped or filled with black to the IP size:
-                                                    3 colour (P3/P6), 2 gray (P2/P5), 1 black and white
-                                                    (P1/P4, as gray 0/255), -1 error */
-int IPWriteFile(const char *filename, const BYTE *img);      /* binary PPM (P6); 1 on error */
+extern int IP_WIDTH, IP_HEIGHT, IP_PIXELS, IP_SIZE;     /* the IP size: width, height, pixels, colour bytes */
+int IPSetSize(int resolution);                          /* QQVGA .. CAM5MP; 1 for anything else (CUSTOM) */
+int IPReadFile(const char *filename, BYTE *img);        /* PNM P1-P6, cropped or filled with black to the
+                                                           IP size: 3 colour (P3/P6), 2 gray (P2/P5), 1
+                                                           black and white (P1/P4, as gray 0/255), -1 error */
+int IPWriteFile(const char *filename, const BYTE *img); /* binary PPM (P6); 1 on error */
 int IPWriteFileGray(const char *filename, const BYTE *gray); /* binary PGM (P5); 1 on error */
-void IPLaplace(const BYTE *grayIn, BYTE *grayOut); /* |4c - 4 neighbours|, clipped; border 0; in-place ok */
-void IPSobel(const BYTE *grayIn, BYTE *grayOut);   /* (|gx| + |gy|) / 3, clipped; border 0; in-place ok */
-void IPCol2Gray(const BYTE *imgIn, BYTE *grayOut); /* gray = (r + g + b) / 3 */
-void IPGray2Col(const BYTE *imgIn, BYTE *colOut);  /* r = g = b = gray */
+void IPLaplace(const BYTE *grayIn, BYTE *grayOut);      /* |4c - 4 neighbours|, clipped; border 0; in-place
+                                                           ok */
+void IPSobel(const BYTE *grayIn, BYTE *grayOut);        /* (|gx| + |gy|) / 3, clipped; border 0; in-place
+                                                           ok */
+void IPCol2Gray(const BYTE *imgIn, BYTE *grayOut);      /* gray = (r + g + b) / 3 */
+void IPGray2Col(const BYTE *imgIn, BYTE *colOut);       /* r = g = b = gray */
 void IPRGB2Col(const BYTE *r, const BYTE *g, const BYTE *b, BYTE *imgOut); /* three planes -> colour */
-void IPCol2HSI(const BYTE *img, BYTE *h, BYTE *s, BYTE *i);                /* colour -> three planes */
+void IPCol2HSI(const BYTE *img, BYTE *h, BYTE *s, BYTE *i); /* colour -> three planes */
 void IPOverlay(const BYTE *c1, const BYTE *c2, BYTE *cOut); /* non-black pixels of c2 over c1 */
-void IPOverlayGray(const BYTE *g1, const BYTE *g2, COLOR col, BYTE *cOut); /* g1 in colour, col where g2 != 0 */
-COLOR IPPRGB2Col(BYTE r, BYTE g, BYTE b);                  /* 0xRRGGBB */
-void IPPCol2RGB(COLOR col, BYTE *r, BYTE *g, BYTE *b);
-void IPPCol2HSI(COLOR c, BYTE *h, BYTE *s, BYTE *i);
-BYTE IPPRGB2Hue(BYTE r, BYTE g, BYTE b); /* 1..252: red 42, green 126, blue 210; 0 = gray (no hue) */
+void IPOverlayGray(const BYTE *g1, const BYTE *g2, COLOR col, BYTE *cOut);
+                                                        /* g1 in colour, col where g2 != 0 */
+COLOR IPPRGB2Col(BYTE r, BYTE g, BYTE b);               /* 0xRRGGBB */
+void IPPCol2RGB(COLOR col, BYTE *r, BYTE *g, BYTE *b);  /* 0xRRGGBB -> r, g, b */
+void IPPCol2HSI(COLOR c, BYTE *h, BYTE *s, BYTE *i);    /* 0xRRGGBB -> hue, saturation, intensity (as
+                                                           IPPRGB2HSI) */
+BYTE IPPRGB2Hue(BYTE r, BYTE g, BYTE b);                /* 1..252: red 42, green 126, blue 210; 0 = gray
+                                                           (no hue) */
 void IPPRGB2HSI(BYTE r, BYTE g, BYTE b, BYTE *h, BYTE *s, BYTE *i); /* s = 255 (1 - min/mean), i = mean */
 
-/* ---- Simulation only: true poses; id 0 = this program's robot, 1.. = robots in scene order ---- */
+/* ---- Simulation only: true poses; id 0 = this program's robot, 1.. = robots in scene order --- */
 
-int SIMGetRobot(int id, int *x, int *y, int *z, int *phi);  /* non-zero for an unknown id */
-int SIMSetRobot(int id, int x, int y, int z, int phi);      /* moves the robot at once */
+int SIMGetRobot(int id, int *x, int *y, int *z, int *phi); /* non-zero for an unknown id */
+int SIMSetRobot(int id, int x, int y, int z, int phi);  /* moves the robot at once */
 int SIMGetObject(int id, int *x, int *y, int *z, int *phi); /* objects 1.. in scene order */
-int SIMSetObject(int id, int x, int y, int z, int phi);     /* non-zero for a fixed object */
-int SIMGetRobotCount(void);                                 /* robots in the scene */
-int SIMGetObjectCount(void);                                /* objects (not robots) in the scene */
+int SIMSetObject(int id, int x, int y, int z, int phi); /* non-zero for a fixed object */
+int SIMGetRobotCount(void);                             /* robots in the scene */
+int SIMGetObjectCount(void);                            /* objects (not robots) in the scene */
+
+/* ==== End of the generated declarations ==== */
 
 /* ---- Older programs (docs/api/compatibility.md): names that still work ------------------------ */
 
@@ -441,11 +476,6 @@ static inline int XInitThreads(void)
     return 1;
 }
 #endif
-
-/* EyeSim 6's laser scan over the LIDAR: 360 distances in mm, one per degree, index 0 straight
- * ahead and angles growing counter-clockwise (90 left, 180 behind, 270 right): a wall point is at
- * x + d*cos(phi + i). A level scan of its own: the LIDARSet settings and LIDAR_RESOLUTION stay. */
-int SIMLaserScan(int scan[360]);
 
 #ifdef __cplusplus
 }

@@ -1,4 +1,5 @@
-/* audio.c: RoBIOS audio: beeps and WAV/MP3 files play in the simulator (and aloud in the viewer). */
+/* audio.c: AUPlay, which reads the WAV or MP3 file and sends its contents (the other AU functions only
+ * pass values through: api_gen.c). Sounds play in the simulator, and aloud in the viewer. */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,12 +10,6 @@
 
 #define AU_ERROR 1
 #define MAX_SOUND_BYTES (8u * 1024u * 1024u) /* fits into one protocol frame */
-
-int AUBeep(void)
-{
-    es_value result[1];
-    return es_call("AUBeep", ES_OP_AU_BEEP, NULL, result) ? AU_ERROR : (int)result[0].i;
-}
 
 /* The whole file in a malloc'd buffer, or NULL (reported). A relative name is relative to the
  * program's working directory. */
@@ -71,14 +66,3 @@ int AUPlay(const char *filename)
     return rc;
 }
 
-int AUDone(void)
-{
-    es_value result[1];
-    return es_call("AUDone", ES_OP_AU_DONE, NULL, result) ? 1 : (int)result[0].i;
-}
-
-int AUMicrophone(void)
-{
-    es_value result[1];
-    return es_call("AUMicrophone", ES_OP_AU_MICROPHONE, NULL, result) ? -1 : (int)result[0].i;
-}

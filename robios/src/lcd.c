@@ -1,4 +1,5 @@
-/* lcd.c: RoBIOS LCD functions: text, colours, fonts, modes, the soft-key menu, graphics, images. */
+/* lcd.c: the RoBIOS LCD functions that do more than pass values through (api_gen.c has those): printf
+ * formatting, and images of the size the program chose. */
 #include <pthread.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -66,118 +67,6 @@ int LCDSetPrintf(int row, int column, const char *format, ...)
     return rc;
 }
 
-int LCDClear(void)
-{
-    es_value result[1];
-    return es_call("LCDClear", ES_OP_LCD_CLEAR, NULL, result) ? LCD_ERROR : (int)result[0].i;
-}
-
-int LCDMenu(const char *key1, const char *key2, const char *key3, const char *key4)
-{
-    es_value args[4] = {es_text(key1), es_text(key2), es_text(key3), es_text(key4)}, result[1];
-    return es_call("LCDMenu", ES_OP_LCD_MENU, args, result) ? LCD_ERROR : (int)result[0].i;
-}
-
-/* ---- Cursor, colours, fonts, modes ------------------------------------------------------------ */
-
-/* Calls an op whose reply is just a result code. */
-static int lcd_call(const char *function, uint16_t op, const es_value *args)
-{
-    es_value result[1];
-    return es_call(function, op, args, result) ? LCD_ERROR : (int)result[0].i;
-}
-
-int LCDSetPos(int row, int column)
-{
-    es_value args[2] = {es_int(row), es_int(column)};
-    return lcd_call("LCDSetPos", ES_OP_LCD_SET_POS, args);
-}
-
-int LCDGetPos(int *row, int *column)
-{
-    es_value result[3] = {{0}};
-    int rc = es_call("LCDGetPos", ES_OP_LCD_GET_POS, NULL, result);
-    es_out(row, result[1].i);
-    es_out(column, result[2].i);
-    return rc ? LCD_ERROR : (int)result[0].i;
-}
-
-int LCDSetColor(COLOR fg, COLOR bg)
-{
-    es_value args[2] = {es_int(fg), es_int(bg)};
-    return lcd_call("LCDSetColor", ES_OP_LCD_SET_COLOR, args);
-}
-
-int LCDSetFont(int font, int variation)
-{
-    es_value args[2] = {es_int(font), es_int(variation)};
-    return lcd_call("LCDSetFont", ES_OP_LCD_SET_FONT, args);
-}
-
-int LCDSetFontSize(int fontsize)
-{
-    es_value args[1] = {es_int(fontsize)};
-    return lcd_call("LCDSetFontSize", ES_OP_LCD_SET_FONT_SIZE, args);
-}
-
-int LCDSetMode(int mode)
-{
-    es_value args[1] = {es_int(mode)};
-    return lcd_call("LCDSetMode", ES_OP_LCD_SET_MODE, args);
-}
-
-int LCDMenuI(int pos, const char *string, COLOR fg, COLOR bg)
-{
-    es_value args[4] = {es_int(pos), es_text(string), es_int(fg), es_int(bg)};
-    return lcd_call("LCDMenuI", ES_OP_LCD_MENU_I, args);
-}
-
-int LCDRefresh(void)
-{
-    return lcd_call("LCDRefresh", ES_OP_LCD_REFRESH, NULL);
-}
-
-/* ---- Graphics --------------------------------------------------------------------------------- */
-
-int LCDGetSize(int *x, int *y)
-{
-    es_value result[3] = {{0}};
-    int rc = es_call("LCDGetSize", ES_OP_LCD_GET_SIZE, NULL, result);
-    es_out(x, result[1].i);
-    es_out(y, result[2].i);
-    return rc ? LCD_ERROR : (int)result[0].i;
-}
-
-int LCDPixel(int x, int y, COLOR col)
-{
-    es_value args[3] = {es_int(x), es_int(y), es_int(col)};
-    return lcd_call("LCDPixel", ES_OP_LCD_PIXEL, args);
-}
-
-COLOR LCDGetPixel(int x, int y)
-{
-    es_value args[2] = {es_int(x), es_int(y)}, result[1];
-    return es_call("LCDGetPixel", ES_OP_LCD_GET_PIXEL, args, result) ? -1 : (COLOR)result[0].i;
-}
-
-int LCDLine(int x1, int y1, int x2, int y2, COLOR col)
-{
-    es_value args[5] = {es_int(x1), es_int(y1), es_int(x2), es_int(y2), es_int(col)};
-    return lcd_call("LCDLine", ES_OP_LCD_LINE, args);
-}
-
-int LCDArea(int x1, int y1, int x2, int y2, COLOR col, int fill)
-{
-    es_value args[6] = {es_int(x1), es_int(y1), es_int(x2), es_int(y2), es_int(col), es_int(fill)};
-    return lcd_call("LCDArea", ES_OP_LCD_AREA, args);
-}
-
-int LCDCircle(int x1, int y1, int size, COLOR col, int fill)
-{
-    es_value args[5] = {es_int(x1), es_int(y1), es_int(size), es_int(col), es_int(fill)};
-    return lcd_call("LCDCircle", ES_OP_LCD_CIRCLE, args);
-}
-
 /* ---- Images: their size and where they show are kept here, in the program ------------------ */
 
 enum { IMAGE_COLOR = 0, IMAGE_GRAY = 1, IMAGE_BINARY = 2 }; /* LCD_IMAGE's format */
@@ -235,7 +124,8 @@ static int draw_image(const char *function, const BYTE *pixels, int format)
     data.n = (uint32_t)width * (uint32_t)height * (format == IMAGE_COLOR ? 3u : 1u);
     es_value args[8] = {es_int(x), es_int(y), es_int(width), es_int(height), es_int(width), es_int(height),
                         es_int(format), data};
-    return lcd_call(function, ES_OP_LCD_IMAGE, args);
+    es_value result[1];
+    return es_call(function, ES_OP_LCD_IMAGE, args, result) ? LCD_ERROR : (int)result[0].i;
 }
 
 int LCDImage(const BYTE *img)

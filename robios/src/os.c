@@ -1,4 +1,5 @@
-/* os.c: RoBIOS system functions; time is the simulator's clock, not the host's. */
+/* os.c: the RoBIOS system functions that do more than pass values through (api_gen.c has those); time is
+ * the simulator's clock, not the host's. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -8,18 +9,6 @@
 
 #define LIBRARY_VERSION "EyeSim RoBIOS-7 library 1.0"
 #define IO_VERSION "EyeSim simulated I/O board 1.0"
-
-int OSWait(int ms)
-{
-    es_value args[1] = {es_int(ms)}, result[1];
-    return es_call("OSWait", ES_OP_OS_WAIT, args, result) ? 1 : (int)result[0].i;
-}
-
-int OSGetCount(void)
-{
-    es_value result[1];
-    return es_call("OSGetCount", ES_OP_OS_GET_COUNT, NULL, result) ? -1 : (int)result[0].i;
-}
 
 int OSGetTime(int *hrs, int *mins, int *secs, int *ticks)
 {
@@ -60,12 +49,6 @@ int OSMachineSpeed(void)
     return MACHINE_SPEED;
 }
 
-int OSMachineType(void)
-{
-    es_value result[1];
-    return es_call("OSMachineType", ES_OP_OS_MACHINE_TYPE, NULL, result) ? -1 : (int)result[0].i;
-}
-
 int OSMachineName(char *buf)
 {
     es_value result[1];
@@ -78,12 +61,6 @@ int OSMachineName(char *buf)
         return 1;
     }
     return copy_out("OSMachineName", buf, result[0].p, result[0].n);
-}
-
-int OSMachineID(void)
-{
-    es_value result[1];
-    return es_call("OSMachineID", ES_OP_OS_MACHINE_ID, NULL, result) ? -1 : (int)result[0].i;
 }
 
 char *OSExecute(const char *command)

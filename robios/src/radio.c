@@ -1,21 +1,10 @@
-/* radio.c: RoBIOS radio: text messages between the robots of a scene (ids = robot ids). */
+/* radio.c: the RoBIOS radio functions that check or fill the caller's buffers (the others only pass values
+ * through: api_gen.c). Messages go between the robots of a scene; ids are robot ids. */
 #include "eyebot.h"
 #include "transport.h"
 
 #include <stdio.h>
 #include <string.h>
-
-int RADIOInit(void)
-{
-    es_value result[1];
-    return es_call("RADIOInit", ES_OP_RADIO_INIT, NULL, result) ? 1 : (int)result[0].i;
-}
-
-int RADIOGetID(void)
-{
-    es_value result[1];
-    return es_call("RADIOGetID", ES_OP_RADIO_GET_ID, NULL, result) ? -1 : (int)result[0].i;
-}
 
 int RADIOSend(int id, const char *buf)
 {
@@ -47,12 +36,6 @@ int RADIOReceive(int *id_no, char *buf, int size)
     return (int)length;
 }
 
-int RADIOCheck(void)
-{
-    es_value result[1];
-    return es_call("RADIOCheck", ES_OP_RADIO_CHECK, NULL, result) ? -1 : (int)result[0].i;
-}
-
 int RADIOStatus(int IDlist[])
 {
     es_value result[1] = {{0}};
@@ -64,8 +47,3 @@ int RADIOStatus(int IDlist[])
     return (int)result[0].n;
 }
 
-int RADIORelease(void)
-{
-    es_value result[1];
-    return es_call("RADIORelease", ES_OP_RADIO_RELEASE, NULL, result) ? 1 : (int)result[0].i;
-}

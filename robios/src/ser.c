@@ -1,4 +1,5 @@
-/* ser.c: RoBIOS serial interfaces: byte streams the simulator carries (0 = serial port, 1..20 = USB). */
+/* ser.c: the RoBIOS serial functions that send or receive bytes through a buffer (the others only pass
+ * values through: api_gen.c). Interfaces: 0 = serial port, 1..20 = USB. */
 #include <stdio.h>
 #include <string.h>
 
@@ -22,12 +23,6 @@ static int send_bytes(const char *function, int interface, const void *bytes, si
     return ser_call(function, ES_OP_SER_SEND, args);
 }
 
-int SERInit(int interface, int baud, int handshake)
-{
-    es_value args[3] = {es_int(interface), es_int(baud), es_int(handshake)};
-    return ser_call("SERInit", ES_OP_SER_INIT, args);
-}
-
 int SERSendChar(int interface, char ch)
 {
     return send_bytes("SERSendChar", interface, &ch, 1);
@@ -40,12 +35,6 @@ int SERSend(int interface, const char *buf)
         return SER_ERROR;
     }
     return send_bytes("SERSend", interface, buf, strlen(buf));
-}
-
-char SERReceiveChar(int interface)
-{
-    es_value args[1] = {es_int(interface)}, result[1];
-    return es_call("SERReceiveChar", ES_OP_SER_RECEIVE_CHAR, args, result) ? 0 : (char)result[0].i;
 }
 
 int SERReceive(int interface, char *buf, int size)
@@ -64,20 +53,3 @@ int SERReceive(int interface, char *buf, int size)
     return (int)count;
 }
 
-bool SERCheck(int interface)
-{
-    es_value args[1] = {es_int(interface)}, result[1];
-    return es_call("SERCheck", ES_OP_SER_CHECK, args, result) ? false : result[0].i != 0;
-}
-
-int SERFlush(int interface)
-{
-    es_value args[1] = {es_int(interface)};
-    return ser_call("SERFlush", ES_OP_SER_FLUSH, args);
-}
-
-int SERClose(int interface)
-{
-    es_value args[1] = {es_int(interface)};
-    return ser_call("SERClose", ES_OP_SER_CLOSE, args);
-}

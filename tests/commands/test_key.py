@@ -18,7 +18,7 @@ def program():
 
 def press(sim, *keys):
     for key in keys:
-        sim.call(lambda s, k=key: s.press_key(1, k))
+        sim.call(lambda s, k=key: robot_input.key(s, 1, k))
 
 
 def touch(sim, x, y):

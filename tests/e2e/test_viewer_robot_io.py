@@ -67,14 +67,14 @@ def test_a_program_reads_what_the_browser_sets_and_the_browser_sees_its_answers(
 
 def test_bad_robot_io_commands_get_an_error_each(viewer_sim):
     _port, server = viewer_sim
-    bad = [({"type": "touch", "robot": 1, "x": 480, "y": 0}, "is not a pixel of the 480x320 LCD"),
+    bad = [({"type": "touch", "robot": 1, "x": 480, "y": 0}, "touch: x must be a whole number from 0 to 479, not 480"),
            ({"type": "touch", "robot": 9, "x": 1, "y": 1}, "touch: no robot 9"),
            ({"type": "irtv", "robot": 1, "code": "PLAY"}, "'PLAY' is not an IR remote button"),
-           ({"type": "serial", "robot": 1, "interface": 0, "text": "\u20ac"}, "one per byte"),
-           ({"type": "serial", "robot": 1, "interface": 21, "text": "x"}, "interface 21 is not 0..20"),
-           ({"type": "digital", "robot": 1, "line": 0, "level": 1}, "line 0 is not 1..16"),
-           ({"type": "digital", "robot": 1, "line": 1, "level": 2}, "level 2 is not 0, 1 or null"),
-           ({"type": "analog", "robot": 1, "channel": 1, "value": 1024}, "value 1024 is not 0..1023")]
+           ({"type": "serial", "robot": 1, "interface": 0, "text": "\u20ac"}, "text must be bytes as characters U+0000..U+00FF"),
+           ({"type": "serial", "robot": 1, "interface": 21, "text": "x"}, "interface must be a whole number from 0 to 20, not 21"),
+           ({"type": "digital", "robot": 1, "line": 0, "level": 1}, "line must be a whole number from 1 to 16, not 0"),
+           ({"type": "digital", "robot": 1, "line": 1, "level": 2}, "level must be one of 0, 1, null, not 2"),
+           ({"type": "analog", "robot": 1, "channel": 1, "value": 1024}, "value must be a whole number from 0 to 1023, not 1024")]
 
     async def send_all():
         errors = []

@@ -91,13 +91,13 @@ def test_wrappers_use_the_declared_prototypes(eye):
             assert name not in eye.__all__, f"{name} is listed as C-only but eye has it"
             continue
         if name not in PROTOTYPES:
-            wrong.append(f"{name}: no prototype in eye/_library.py")
+            wrong.append(f"{name}: no prototype in eye/_prototypes.py")
             continue
         restype, argtypes = PROTOTYPES[name]
         declared = [kind_of_c(result)] + [kind_of_c(p) for p in params if p != "..."]
         bound = [kind_of_ctypes(restype)] + [kind_of_ctypes(t) for t in argtypes]
         if declared != bound:
-            wrong.append(f"{name}: eyebot.h has {declared}, eye/_library.py {bound}")
+            wrong.append(f"{name}: eyebot.h has {declared}, eye/_prototypes.py {bound}")
     assert not wrong, "\n".join(wrong)
 
 

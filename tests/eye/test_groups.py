@@ -104,8 +104,8 @@ KEYS = """
 
 
 def test_keys_and_touches(run_python):
-    run = run_python(KEYS, inputs=[(0.1, lambda s: s.press_key(1, KEY1)), (0.2, lambda s: s.press_key(1, KEY3)),
-                                   (0.3, lambda s: s.press_key(1, KEY2)), (0.4, lambda s: s.press_key(1, KEY4)),
+    run = run_python(KEYS, inputs=[(0.1, lambda s: robot_input.key(s, 1, KEY1)), (0.2, lambda s: robot_input.key(s, 1, KEY3)),
+                                   (0.3, lambda s: robot_input.key(s, 1, KEY2)), (0.4, lambda s: robot_input.key(s, 1, KEY4)),
                                    (0.5, lambda s: robot_input.touch(s, 1, 123, 45)),
                                    (0.7, lambda s: robot_input.touch(s, 1, 7, 8))])
     assert_ended_cleanly(run)

@@ -6,7 +6,7 @@ import pytest
 
 from eyesim.clock import Clock
 from eyesim.engine import Simulation
-from eyesim.robot.drives.differential import DifferentialDrive
+from eyesim.robot.drives.differential_wheels import DifferentialDrive
 from eyesim.robot.components.vw import VwController
 from support.worlds import arena_scene
 

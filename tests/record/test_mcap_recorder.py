@@ -169,7 +169,7 @@ def test_inputs_and_viewer_edits_are_recorded(tmp_path):
     from eyesim.web import place_command
 
     sim = Simulation(load_scene(DEFAULT_SCENE), Clock(DETERMINISTIC))
-    sim.schedule(100_000, lambda s: s.press_key(1, 2))
+    sim.schedule(100_000, lambda s: robot_input.key(s, 1, 2))
     sim.schedule(200_000, lambda s: robot_input.touch(s, 1, 100, 50))
     sim.schedule(300_000, lambda s: robot_input.analog(s, 1, 2, 700))
     # the viewer's command is checked, then queued: done at the next step boundary

@@ -1,8 +1,13 @@
 """The declared drive archetypes: what the rest of the simulator looks up instead of drive names."""
 
+import subprocess
+import sys
+from pathlib import Path
+
 import pytest
 
-from eyesim.robot.drives import DRIVES, ackermann, differential, drive_named, drive_of, omni
+from eyesim.robot.drives import (DRIVES, ackermann_wheels, differential_wheels, drive_named, drive_of,
+                                 omni_wheels)
 from eyesim.robot.drives.archetype import Kinematics, MachineType
 from eyesim.scene.json_format import schema
 from support.worlds import example_robot
@@ -28,6 +33,14 @@ def test_each_example_robot_gets_its_drives_declared_traits(robot, machine, whee
     assert (drive.machine_type, drive.wheeled, drive.swims, drive.mounted) == (machine, wheeled, swims, mounted)
 
 
+def test_the_declarations_and_the_scene_package_need_no_physics():
+    """Reading, checking and converting scene files never loads MuJoCo (only the drives' components do)."""
+    code = ("import sys, eyesim.scene, eyesim.scene.cli, eyesim.robot.drives; "
+            "assert 'mujoco' not in sys.modules, sorted(m for m in sys.modules if m.startswith('eyesim'))")
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=Path(__file__).parent)
+    assert result.returncode == 0, result.stderr
+
+
 def test_the_wheeled_drives_components_offer_kinematics():
-    for cls in (differential.DifferentialDrive, ackermann.AckermannDrive, omni.OmniDrive):
+    for cls in (differential_wheels.DifferentialDrive, ackermann_wheels.AckermannDrive, omni_wheels.OmniDrive):
         assert issubclass(cls, Kinematics)

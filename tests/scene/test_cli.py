@@ -80,6 +80,22 @@ def test_schema(kind, title, capsys):
     assert json.loads(capsys.readouterr().out)["title"] == title
 
 
+def test_schema_export_writes_every_kind(tmp_path, capsys):
+    from eyesim.scene.json_format import KINDS, schema_text
+    assert run("schema", "export", str(tmp_path / "schemas")) == 0
+    printed = capsys.readouterr().out.split()
+    for kind in KINDS:
+        written = tmp_path / "schemas" / f"{kind}.schema.json"
+        assert written.read_text(encoding="utf-8") == schema_text(kind) and str(written) in printed
+
+
+def test_schema_export_needs_a_folder(capsys):
+    assert run("schema", "export") == 2
+    assert "expected the folder" in capsys.readouterr().err
+    assert run("schema", "robot", "somewhere") == 2
+    assert "unexpected argument 'somewhere'" in capsys.readouterr().err
+
+
 def test_schema_unknown_kind(capsys):
     assert run("schema", "planet") == 2
     assert "expected one of scene, world, maze, robot, object" in capsys.readouterr().err

@@ -3,7 +3,8 @@
 from eyesim.scene.description import (ArmSpec, CameraSpec, GripperSpec, JointSpec, Location, PsdSpec, RobotType,
                                       ThrusterSpec)
 from eyesim.scene.diagnostics import Diagnostics
-from eyesim.scene.robot_type import DEFAULT_WHEELS, finish_robot_type
+from eyesim.scene.parts.wheels import DEFAULT_WHEELS
+from eyesim.scene.robot_type import finish_robot_type
 
 HERE = Location("r.robi", 1, 1)
 

@@ -11,6 +11,7 @@ from eyesim.robot.components.camera import Camera
 from eyesim.robot.components.lidar import LidarScanner
 from eyesim.robot.components.psd import PsdSensor
 from eyesim.scene.description import Settings
+from eyesim.web.messages import snapshot
 
 
 class Browser:
@@ -33,9 +34,9 @@ def simulation(vis: bool) -> Simulation:
 
 
 def test_snapshots_carry_the_sensor_rays_only_with_vis():
-    assert "rays" not in simulation(vis=False).snapshot()
+    assert "rays" not in snapshot(simulation(vis=False))
     sim = simulation(vis=True)
-    rays = sim.snapshot()["rays"]
+    rays = snapshot(sim)["rays"]
     psd = [r for r in rays if r["kind"] == "psd"]
     assert len(psd) == 8 and not [r for r in rays if r["kind"] == "lidar"]  # no scan taken yet
     assert [r["psd"] for r in psd if r["robot"] == 1] == [1, 2, 3, 4]  # S4's PSDs, PSD_FRONT first
@@ -44,7 +45,7 @@ def test_snapshots_carry_the_sensor_rays_only_with_vis():
     assert abs(length * 1000 - sim.robots[0].components_of(PsdSensor)[0].distance_mm()) < 2
 
     scan = sim.robots[1].component(LidarScanner).scan()
-    lidar = [r for r in sim.snapshot()["rays"] if r["kind"] == "lidar"]
+    lidar = [r for r in snapshot(sim)["rays"] if r["kind"] == "lidar"]
     assert [r["robot"] for r in lidar] == [2] and len(lidar[0]["ends"]) == 3 * 360
     ends = np.reshape(lidar[0]["ends"], (-1, 3))
     lengths = np.linalg.norm(ends - lidar[0]["origin"], axis=1) * 1000

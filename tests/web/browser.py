@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import base64
 import io
+import os
 import tempfile
 from collections.abc import Iterator
 from contextlib import ExitStack, contextmanager
@@ -127,3 +128,10 @@ def robot_screen_position(page: Page, robot_id: int) -> tuple[float, float] | No
     """Where the robot is drawn on the page (CSS pixels), or None without WebGL."""
     position = page.evaluate("robot => window.eyesimViewer.robotScreenPosition(robot)", robot_id)
     return None if position is None else (position["x"], position["y"])
+
+
+def save_screenshot(page: Page, name: str) -> None:
+    """Saves the page as $EYESIM_SCREENSHOTS/<name>.png when that is set (for looking at it)."""
+    folder = os.environ.get("EYESIM_SCREENSHOTS")
+    if folder:
+        page.screenshot(path=str(Path(folder) / f"{name}.png"))

@@ -54,12 +54,12 @@ def test_bad_place_commands_get_clear_errors_and_move_nothing(viewer_sim):
     bad = [
         ({"type": "place", "robot": 9, "x": 1, "y": 1, "phi": 0}, "no robot 9"),
         ({"type": "place", "object": 7, "x": 1, "y": 1, "phi": 0}, "no object 7"),
-        ({"type": "place", "robot": "1", "x": 1, "y": 1, "phi": 0}, "no robot '1'"),
+        ({"type": "place", "robot": "1", "x": 1, "y": 1, "phi": 0}, "robot must be a whole number, not '1'"),
         ({"type": "place", "x": 1, "y": 1, "phi": 0}, "either 'robot' or 'object'"),
         ({"type": "place", "robot": 1, "object": 1, "x": 1, "y": 1, "phi": 0}, "either 'robot' or 'object'"),
-        ({"type": "place", "robot": 1, "x": "1", "y": 1, "phi": 0}, "must be numbers"),
-        ({"type": "place", "robot": 1, "x": 1, "y": True, "phi": 0}, "must be numbers"),
-        ({"type": "place", "robot": 1, "x": 1, "y": 1}, "must be numbers"),
+        ({"type": "place", "robot": 1, "x": "1", "y": 1, "phi": 0}, "x must be a number, not '1'"),
+        ({"type": "place", "robot": 1, "x": 1, "y": True, "phi": 0}, "y must be a number, not True"),
+        ({"type": "place", "robot": 1, "x": 1, "y": 1}, "field 'phi' is missing"),
         # NaN is not JSON, but Python's json writes it: refused all the same, as not valid JSON.
         ({"type": "place", "robot": 1, "x": float("nan"), "y": 1, "phi": 0}, "not valid JSON: NaN"),
         ({"type": "place", "robot": 1, "x": 3.5, "y": 1, "phi": 0}, "off the floor"),

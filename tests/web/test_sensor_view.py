@@ -6,7 +6,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from browser import open_viewer
+from browser import open_viewer, robot_panel, save_screenshot
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.programs import eyesim_command, simulator_with_viewer  # noqa: E402
@@ -36,4 +36,11 @@ def test_rays_paths_and_camera_images_show(browser_context, simulator):
     page.wait_for_function("() => window.eyesimViewer.tracePoints(1) > 10", timeout=30_000)
     page.wait_for_function("() => window.eyesimViewer.cameraImages(2) > 0", timeout=30_000)
     assert viewer.state("cameraImages", 1) == 0  # LabBot's program never took a picture
+    # Opening the S4's panel shows its camera image beside its LCD.
+    panel = robot_panel(page, 2)
+    panel.locator(".robot-header").click()
+    lcd = panel.locator(".lcd-image").bounding_box()
+    camera = panel.locator(".camera-image").bounding_box()
+    assert camera["x"] >= lcd["x"] + lcd["width"] and abs(camera["y"] - lcd["y"]) < 20
+    save_screenshot(page, "camera-beside-lcd")
     assert viewer.errors == []

@@ -67,7 +67,7 @@ def test_bad_browser_commands_get_an_error_and_change_nothing(viewer_sim):
     messages = run_async(_collect(f"ws://127.0.0.1:{server.port}/ws",
                                     lambda ms: sum(m["type"] == "error" for m in ms) == len(bad), send=bad))
     errors = [m["message"] for m in messages if m["type"] == "error"]
-    assert any("not one of 1, 2, 4, 8" in e for e in errors) and any("no robot 7" in e for e in errors)
+    assert any("key must be one of 1, 2, 4, 8" in e for e in errors) and any("no robot 7" in e for e in errors)
     program = ProgramClient(port)
     program.hello()
     assert program.call("KEY_READ") == (0,)  # no key was pressed by the bad messages

@@ -1,6 +1,8 @@
 // window.eyesimViewer: a read-only view of the viewer's state, for tests and for debugging.
 
+import type { ViewMode } from "./camera_modes";
 import type { ConnectionState } from "./connection";
+import type { SceneSettings } from "./settings_panel";
 import type { DragTarget } from "./interaction";
 import type { Pose } from "./interpolation";
 import { meshBox, meshCount } from "./mesh_loader";
@@ -84,6 +86,16 @@ export interface EyesimViewerDebug {
   uploadStatus(): string;
   /** messages dropped as malformed or of an unknown type */
   ignoredMessages(): number;
+  /** the robot whose panel is open, and which panels are open */
+  selectedRobot(): number | null;
+  expandedPanels(): number[];
+  /** the 3D camera: free, top-down or following a robot, where it is and looks (three.js frame) */
+  cameraState(): { mode: ViewMode; following: number | null; position: number[]; direction: number[] };
+  /** what a robot's program controls say now, and the compiler's file:line findings */
+  programMessage(robot: number): string | null;
+  compilerLines(robot: number): string[] | null;
+  /** the settings panel: open or not, and the settings it last showed */
+  settingsShown(): { visible: boolean; settings: SceneSettings | null };
 }
 
 declare global {
@@ -149,6 +161,12 @@ export function installDebugHandle(viewer: Viewer): void {
     screenshot: () => viewer.world.screenshot(),
     uploadStatus: () => viewer.upload.status,
     ignoredMessages: () => viewer.ignoredMessages,
+    selectedRobot: () => viewer.panels.selected,
+    expandedPanels: () => viewer.panels.ids().filter((id) => viewer.panels.find(id)?.expanded),
+    cameraState: () => viewer.world.cameraState(),
+    programMessage: (robot) => viewer.panels.find(robot)?.programs.messageText() ?? null,
+    compilerLines: (robot) => viewer.panels.find(robot)?.programs.compilerLines() ?? null,
+    settingsShown: () => ({ visible: viewer.settings.visible, settings: viewer.settings.settings }),
   };
   window.eyesimViewer = Object.freeze(handle);
 }

@@ -12,7 +12,7 @@ import {
   Object3D,
   Vector3,
 } from "three";
-import type { MeshMessage } from "./protocol";
+import { parseMeshBody, type MeshMessage } from "./protocol";
 import { colorOf } from "./robot_model";
 
 /** The models drawn in the current world, by the name of what they belong to ("robot 1", "object 2"). */
@@ -64,9 +64,10 @@ export function drawMesh(thing: Object3D, url: string, onLoaded: () => void): vo
   fetch(url)
     .then((response) => {
       if (!response.ok) throw new Error(`HTTP ${response.status}`);
-      return response.json() as Promise<MeshMessage>;
+      return response.json();
     })
-    .then((message) => {
+    .then((body) => {
+      const message = parseMeshBody(body, "model");
       if (mine !== generation) return;
       const model = createMesh(message);
       if (!model) throw new Error("malformed model");

@@ -5,15 +5,28 @@ import { CameraView } from "./camera_view";
 import { ConsoleView } from "./console_view";
 import { element } from "./dom";
 import { LcdView } from "./lcd_view";
+import { ProgramControls, type ProgramCatalog } from "./program_controls";
 import type { BrowserCommand, ConsoleMessage, ProgramMessage, RobotInfo } from "./protocol";
 import { RobotIoView } from "./robot_io_view";
 import { download } from "./snapshot_files";
 
 export type ProgramState = Pick<ProgramMessage, "event" | "name" | "exit_code">;
 
+/** Signals that end crashed programs, by their Linux numbers (the console says more). */
+const SIGNAL_NAMES: Record<number, string> = {
+  4: "SIGILL", 6: "SIGABRT", 7: "SIGBUS", 8: "SIGFPE", 9: "SIGKILL", 11: "SIGSEGV", 15: "SIGTERM", 24: "SIGXCPU",
+};
+
 function describe(program: ProgramState | null): { text: string; kind: string } {
   if (!program) return { text: "no program", kind: "idle" };
   if (program.event === "started") return { text: `running ${program.name}`, kind: "running" };
+  if (program.exit_code !== null && program.exit_code < 0) {
+    const signal = -program.exit_code;
+    const name = SIGNAL_NAMES[signal] ?? `signal ${signal}`;
+    // SIGTERM and SIGKILL are how Stop (or the end of the run) ends a program.
+    if (signal === 15 || signal === 9) return { text: `${program.name} stopped (${name})`, kind: "exited" };
+    return { text: `${program.name} crashed: ${name}`, kind: "failed" };
+  }
   const code = program.exit_code === null ? "" : ` with code ${program.exit_code}`;
   return { text: `${program.name} exited${code}`, kind: program.exit_code ? "failed" : "exited" };
 }
@@ -24,6 +37,7 @@ export class RobotPanel {
   readonly console = new ConsoleView();
   readonly camera = new CameraView();
   readonly io: RobotIoView;
+  readonly programs: ProgramControls;
   private readonly name = element("h2", "robot-name");
   private readonly type = element("span", "robot-type");
   private readonly state = element("span", "program-state");
@@ -31,7 +45,12 @@ export class RobotPanel {
   private program: ProgramState | null = null;
   private robotName = "";
 
-  constructor(robot: RobotInfo, send: (command: BrowserCommand) => void) {
+  constructor(
+    robot: RobotInfo,
+    send: (command: BrowserCommand) => void,
+    catalog: ProgramCatalog,
+    select: (robot: number) => void,
+  ) {
     this.element.dataset.robot = String(robot.id);
     this.lcd = new LcdView(
       (key) => send({ type: "key", robot: robot.id, key }),
@@ -48,9 +67,34 @@ export class RobotPanel {
       if (png) download(png, `${this.robotName}-${robot.id}-lcd.png`);
     });
     header.append(title, this.state, this.saveLcd);
-    this.element.append(header, this.lcd.element, this.camera.element, this.console.element, this.io.element);
+    // A click on the header (not its buttons) opens this panel and folds the others.
+    header.addEventListener("click", (event) => {
+      if (!(event.target as HTMLElement).closest("button")) select(robot.id);
+    });
+    header.tabIndex = 0;
+    header.title = "Open this robot's panel";
+    header.addEventListener("keydown", (event) => {
+      if ((event.key === "Enter" || event.key === " ") && event.target === header) {
+        event.preventDefault();
+        select(robot.id);
+      }
+    });
+    this.programs = new ProgramControls(robot.id, catalog);
+    const screens = element("div", "robot-screens");
+    screens.append(this.lcd.element, this.camera.element);
+    this.element.append(header, this.programs.element, screens, this.console.element, this.io.element);
     this.describeRobot(robot);
     this.showProgram(null);
+  }
+
+  /** Open (everything shows) or folded to its header, as one line of a long list. */
+  setExpanded(expanded: boolean): void {
+    this.element.classList.toggle("expanded", expanded);
+    this.element.setAttribute("aria-expanded", String(expanded));
+  }
+
+  get expanded(): boolean {
+    return this.element.classList.contains("expanded");
   }
 
   describeRobot(robot: RobotInfo): void {
@@ -65,6 +109,7 @@ export class RobotPanel {
     const { text, kind } = describe(program);
     this.state.textContent = text;
     this.state.dataset.kind = kind;
+    this.programs.setRunning(program?.event === "started");
   }
 
   /** Back to how the panel starts (the timeline jumped back): the frame then brings what was there. */

@@ -40,6 +40,10 @@ export class Toolbar {
 
     this.pause.addEventListener("click", () => send({ type: this.paused ? "resume" : "pause" }));
     this.speed.addEventListener("change", () => {
+      if (this.speed.value === "max") {
+        send({ type: "speed", value: "max" });
+        return;
+      }
       const value = Number(this.speed.value);
       if (value > 0) send({ type: "speed", value });
     });
@@ -53,7 +57,8 @@ export class Toolbar {
     this.showSpeed(status.speed);
     if (this.replay) return;
     this.time.textContent = `t = ${status.time.toFixed(2)} s`;
-    this.rate.textContent = `${status.real_time_factor.toFixed(2)}× real time`;
+    const rate = status.real_time_factor;  // null until the server could measure it
+    this.rate.textContent = rate === null ? "" : `${rate.toFixed(2)}× real time`;
     this.clock.textContent = status.paused ? `${status.clock}, paused` : status.clock;
   }
 

@@ -18,12 +18,14 @@ import {
 import type { PickTarget } from "./interaction";
 import type { RobotPanel } from "./robot_panel";
 import { SceneWarnings } from "./scene_warnings";
+import { SettingsPanel } from "./settings_panel";
 import { RecordingUpload } from "./recording_upload";
 import { download, timedName } from "./snapshot_files";
 import { TimelineBar, type TimelineState } from "./timeline_bar";
 import { Toolbar } from "./toolbar";
 import { VideoExport } from "./video_export";
 import { WorldView } from "./world_view";
+import type { ViewMode } from "./camera_modes";
 
 export interface ViewerElements {
   toolbar: HTMLElement;
@@ -46,6 +48,7 @@ export class Viewer {
   readonly plots: PlotPanel;
   readonly video: VideoExport;
   readonly upload: RecordingUpload;
+  readonly settings: SettingsPanel;
   private readonly toolbar: Toolbar;
   private readonly videoButton: HTMLButtonElement;
   /** Called with every command the page sends (the scene editor turns drags into edits). */
@@ -74,12 +77,21 @@ export class Viewer {
       send,
       (target) => {
         for (const watch of this.pickWatchers) watch(target);
-        if (target.kind === "robot") this.plots.pickRobot(target.id);
+        // A click on a robot opens its panel; with the plots open, it plots the robot too.
+        if (target.kind === "robot") this.panels.select(target.id);
+        if (target.kind === "robot" && this.plots.visible) this.plots.pickRobot(target.id);
         if (target.kind === "psd") this.plots.pickPsd(target.robot, target.id);
       },
       () => this.overlays.drawnRays(),
     );
     this.help = new HelpOverlay(elements.world);
+    const viewMode = elements.toolbar.querySelector<HTMLSelectElement>("#view-mode");
+    viewMode?.addEventListener("change", () => this.world.setViewMode(viewMode.value as ViewMode, this.panels.selected));
+    this.panels.onSelect((robot) => {
+      this.world.highlightRobot(robot);
+      this.world.followRobot(robot);
+    });
+    this.settings = new SettingsPanel(elements.world, elements.toolbar.querySelector("#settings-toggle")!);
     this.world.addOverlay(this.overlays.group);
     this.timeline = new TimelineBar(elements.timeline, send);
     this.timeline.onChange((state) => this.followTimeline(state));

@@ -14,8 +14,9 @@ import {
   WebGLRenderer,
 } from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
-import { CSS2DRenderer } from "three/addons/renderers/CSS2DRenderer.js";
-import { DragToPlace, type DragTarget, type PickTarget } from "./interaction";
+import { CSS2DObject, CSS2DRenderer } from "three/addons/renderers/CSS2DRenderer.js";
+import { CameraModes, type ViewMode } from "./camera_modes";
+import { DragToPlace, yawOf, type DragTarget, type PickTarget } from "./interaction";
 import type { Pose, Poses } from "./interpolation";
 import type { BrowserCommand, Floor, SceneMessage, SensorRays } from "./protocol";
 import { buildWorld, disposeWorld, type BuiltWorld } from "./world_builder";
@@ -96,10 +97,13 @@ export class WorldView {
   private readonly camera = new PerspectiveCamera(FIELD_OF_VIEW, 1, 0.01, 1000);
   private readonly display: Display | null;
   private readonly dragging: DragToPlace | null = null;
+  private readonly cameraModes: CameraModes | null = null;
   private world: BuiltWorld | null = null;
   private sceneMessage: SceneMessage | null = null;
   private floor: Floor | null = null;
   private needsRender = true;
+  /** the robot whose name label stands out (the selected one) */
+  private highlighted: number | null = null;
 
   constructor(
     private readonly container: HTMLElement,
@@ -138,6 +142,17 @@ export class WorldView {
         },
         send,
       );
+      this.cameraModes = new CameraModes({
+        camera: this.camera,
+        controls: this.display.controls,
+        floor: () => this.floor,
+        robot: (id) => {
+          const robot = this.world?.robots.get(id);
+          if (!robot?.visible) return null;
+          const q = robot.quaternion;
+          return { position: robot.getWorldPosition(new Vector3()), heading: yawOf([q.w, q.x, q.y, q.z]) };
+        },
+      });
       new ResizeObserver(() => this.resize()).observe(container);
       this.resize();
     } else {
@@ -162,9 +177,46 @@ export class WorldView {
     this.sceneMessage = scene;
     this.root.add(this.world.group);
     const { width, height } = scene.floor;
-    if (this.floor?.width !== width || this.floor?.height !== height) this.frameFloor(scene.floor);
+    const resized = this.floor?.width !== width || this.floor?.height !== height;
     this.floor = scene.floor;
+    this.highlightRobot(this.highlighted);
+    if (resized && this.cameraModes?.mode === "top") this.cameraModes.set("top");
+    else if (resized) this.frameFloor(scene.floor);
     this.needsRender = true;
+  }
+
+  /** Free camera, top-down, or following `robot`; "free" keeps the camera where it is. */
+  setViewMode(mode: ViewMode, robot: number | null = null): void {
+    if (!this.cameraModes) return;
+    this.cameraModes.set(mode, robot);
+    this.needsRender = true;
+  }
+
+  /** Makes the robot's name label stand out (the robot whose panel is open). */
+  highlightRobot(robot: number | null): void {
+    this.highlighted = robot;
+    for (const [id, model] of this.world?.robots ?? []) {
+      model.traverse((part) => {
+        if (part instanceof CSS2DObject) part.element.classList.toggle("selected", id === robot);
+      });
+    }
+    this.needsRender = true;
+  }
+
+  /** Follows another robot when following one (the selection changed). */
+  followRobot(robot: number): void {
+    this.cameraModes?.follow(robot);
+  }
+
+  /** The camera's mode, the robot it follows, and where it is and looks (three.js coordinates). */
+  cameraState(): { mode: ViewMode; following: number | null; position: number[]; direction: number[] } {
+    const direction = this.camera.getWorldDirection(new Vector3());
+    return {
+      mode: this.cameraModes?.mode ?? "free",
+      following: this.cameraModes?.followedRobot ?? null,
+      position: this.camera.position.toArray(),
+      direction: direction.toArray(),
+    };
   }
 
   /** Adds drawings in world coordinates (sensor rays, paths) that stay across scenes. */
@@ -241,6 +293,7 @@ export class WorldView {
   /** Draws a frame if anything moved since the last one. */
   render(): void {
     if (!this.display) return;
+    if (this.cameraModes?.update()) this.needsRender = true;
     this.display.controls.update();
     if (!this.needsRender) return;
     this.needsRender = false;

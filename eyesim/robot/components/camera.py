@@ -32,11 +32,18 @@ class Camera(Component):
         self.fov = min(max(spec.fov, 1.0), MAX_FOV)
         self.size: tuple[int, int] | None = None  # (width, height) once CAMInit chose a resolution
         self.image_count = 0  # images taken so far (never reset: the viewer goes by it)
+        self._published = 0  # the image count the viewer was last sent
         self.reset()
 
     def reset(self) -> None:
         self.pan, self.tilt = self.spec.pan, self.spec.tilt
         self.image: np.ndarray | None = None  # the last image taken, for the viewer
+
+    def publish(self, robot_id: int, events, again: bool) -> None:
+        """The last image the program took, for the viewer."""
+        if self.image is not None and (again or self._published != self.image_count):
+            self._published = self.image_count
+            events.camera(robot_id, self.image)
 
     # -- set-up ----------------------------------------------------------------------------
     def start(self, width: int, height: int) -> None:

@@ -76,6 +76,7 @@ class Lcd(Component):
     def __init__(self):
         self.pixels = np.zeros((HEIGHT, WIDTH, 3), dtype=np.uint8)
         self.version = 0  # bumped on every visible change, so publishers know when to send
+        self._published: int | None = None  # the version the viewer was last sent
         self.reset()
 
     def reset(self) -> None:
@@ -95,6 +96,11 @@ class Lcd(Component):
         self.menu: list[str] | None = None  # the soft-key labels, once LCDMenu set them
         self.menu_entries = [MenuEntry() for _ in range(4)]
         self.version += 1
+
+    def publish(self, robot_id: int, events, again: bool) -> None:
+        if again or self._published != self.version:
+            self._published = self.version
+            events.lcd(robot_id, self.screen().copy())
 
     def _changed(self) -> None:
         if self.autorefresh:

@@ -50,6 +50,12 @@ class PsdSensor(Component):
     def reset(self) -> None:
         self.random = np.random.default_rng(self._seed) if self.noise_mm > 0 else None
 
+    def set_noise(self, noise_mm: float, seed: int) -> None:
+        """New scene settings while running (the viewer's settings): the noise restarts from the seed."""
+        self.noise_mm = noise_mm
+        self._seed = (seed, self.robot.id, self.spec.id)
+        self.reset()
+
     @property
     def id(self) -> int:
         return self.spec.id

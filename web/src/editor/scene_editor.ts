@@ -438,8 +438,8 @@ export class SceneEditor {
     const place = this.dragged;
     this.dragged = null;
     if (!place || !this.state?.editing) return;
-    const kind: Kind = "robot" in place ? "robot" : "object";
-    const index = ("robot" in place ? place.robot : place.object) - 1;
+    const kind: Kind = place.robot !== undefined ? "robot" : "object";
+    const index = (place.robot ?? place.object ?? 0) - 1;
     this.selection = { kind, index };
     // whole mm and tenths of a degree: what a person can place by hand, and a tidy saved file
     const x = Math.round(place.x * 1000);

@@ -1,0 +1,72 @@
+"""Registry of robot part kinds, and what is assembled from their declarations: the RobotType
+dataclass, the `.robi` keyword table and the published robot JSON Schema.
+
+Adding a part kind = one new module declaring its PART (scene/parts/part.py) + one line here;
+its physics is a component (robot/components/) and its RoBIOS calls a handler (commands/)."""
+
+from __future__ import annotations
+
+import dataclasses
+
+from eyesim.scene.parts import arm, body, camera, drive, lidar, psd, thrusters, water, wheels
+from eyesim.scene.parts.part import Part
+
+# In this order the reader finishes them (the arm sits on the chassis: after the body), their
+# checks run, the writer writes their lines and RobotType lists their fields.
+PARTS: tuple[Part, ...] = (
+    drive.PART,
+    body.PART,
+    wheels.PART,
+    psd.PART,
+    camera.PART,
+    lidar.PART,
+    thrusters.PART,
+    water.PART,
+    arm.PART,
+)
+
+
+def _keywords() -> dict:
+    table: dict = {}
+    for part in PARTS:
+        for word, read in part.keywords.items():
+            if word in table:
+                raise ValueError(f"the .robi keyword {word!r} is declared by two parts")
+            table[word] = read
+    return table
+
+
+KEYWORDS = _keywords()  # .robi keyword (lower case) -> function(reader, line)
+
+RobotType = dataclasses.make_dataclass(
+    "RobotType",
+    [("name", str), ("source", str)]
+    + [(name, kind, dataclasses.field(default=default)) for part in PARTS for name, kind, default in part.fields],
+    frozen=True)
+RobotType.__module__ = "eyesim.scene.description"  # where it has always been imported from
+RobotType.__doc__ = """A robot type: what a .robi file (or a built-in definition) says about a robot.
+
+`name` and `source` (the file it came from), then the fields each part kind declares
+(scene/parts/): `drive` is one of the drive archetypes (robot/drives); a wheeled robot may also
+carry an `arm`: drive commands then move the base and servo commands the arm."""
+
+ROBOT_SCHEMA_HEAD = {
+    "$schema": "https://json-schema.org/draft/2020-12/schema",
+    "$id": "urn:eyesim:schema:robot:1",
+    "title": "EyeSim robot type",
+    "description": "A .robi robot definition as JSON. Positions are in the robot frame (x forward, y left, z up, mm), "
+                   "angles in degrees.",
+}
+
+
+def robot_schema() -> dict:
+    """The published JSON Schema of a robot file (robot.schema.json), from the parts' fragments."""
+    properties = {"format": {"title": "Format", "const": "eyesim.robot",
+                             "description": "which EyeSim file format this is"},
+                  "version": {"title": "Version", "const": 1, "description": "format version"}}
+    defs: dict = {}
+    for part in PARTS:
+        properties.update(part.properties)
+        defs.update(part.defs)
+    return {**ROBOT_SCHEMA_HEAD, "type": "object", "required": ["format", "version", "name"],
+            "additionalProperties": False, "properties": properties, "$defs": defs}

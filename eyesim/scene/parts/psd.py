@@ -1,0 +1,126 @@
+"""PSD infrared distance sensors (`psd` lines); what they measure: robot/components/psd.py."""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+
+from eyesim.scene.lexer import Line, Token, format_number, integer
+from eyesim.scene.parts.part import Part, PartReader, coordinate, list_of, name_token, record, text, whole
+
+PSD_IDS = {"PSD_FRONT": 1, "PSD_LEFT": 2, "PSD_RIGHT": 3, "PSD_BACK": 4}  # RoBIOS 7
+
+
+@dataclass(frozen=True)
+class PsdSpec:
+    """A PSD distance sensor: RoBIOS id (PSD_FRONT=1 ...), name, position in the robot frame (mm)
+    and beam direction (heading deg, left positive; pitch deg, up positive)."""
+
+    id: int
+    name: str
+    x: float
+    y: float
+    z: float
+    heading: float
+    pitch: float = 0.0
+
+
+def read_psd(reader: PartReader, line: Line) -> None:
+    """Three forms: EyeSim 6 `psd NAME [id] x y z angle`, VR 1.x `psd id NAME x y z angle` and
+    the 8-argument form with pitch, heading and roll."""
+    args = line.args
+    if len(args) not in (5, 6, 8):
+        reader.arity(line, (5, 6, 8), "<NAME> [<id>] <x> <y> <z> <angle>, or <id> <NAME> <x> <y> <z> <rx> <ry> <rz>")
+        return
+    if len(args) == 5:
+        ident, name_index, first = None, 1, 2
+    elif is_integer(args[0]) and not is_integer(args[1]):
+        ident, name_index, first = integer(args[0].text), 2, 3
+    else:
+        ident = reader.whole(line, 2, "PSD id")
+        if ident is None:
+            return
+        name_index, first = 1, 3
+    names = ("x", "y", "z") + (("angle",) if len(args) < 8 else ("pitch", "heading", "roll"))
+    values = reader.numbers(line, first, names)
+    if not values:
+        return
+    heading, pitch = (values[3], 0.0) if len(args) < 8 else (values[4], values[3])
+    spec = PsdSpec(ident if ident is not None and ident > 0 else 0, line.tokens[name_index].text,
+                   values[0], values[1], values[2], heading + 0.0, pitch + 0.0)
+    reader.collected.setdefault("psds", []).append((ident, spec, reader.at(line)))
+
+
+def is_integer(token: Token) -> bool:
+    return not token.quoted and integer(token.text) is not None
+
+
+def finish(reader: PartReader) -> None:
+    """RoBIOS ids: as written when positive; EyeSim 6's negative hdt ids and missing ids
+    become PSD_FRONT=1 .. PSD_BACK=4 by name, other sensors number on after the highest."""
+    psds = reader.collected.get("psds", [])
+    taken = {ident for ident, _, _ in psds if ident is not None and ident > 0}
+    ids: list[int | None] = []
+    for ident, spec, _ in psds:
+        if ident is not None and ident > 0:
+            ids.append(ident)
+        elif PSD_IDS.get(spec.name.upper()) and PSD_IDS[spec.name.upper()] not in taken:
+            ids.append(PSD_IDS[spec.name.upper()])
+            taken.add(ids[-1])
+        else:
+            ids.append(None)
+    next_id = max(taken, default=0) + 1
+    result = []
+    for i, (value, (_, spec, location)) in enumerate(zip(ids, psds)):
+        if value is None:
+            value, next_id = next_id, next_id + 1
+        result.append(dataclasses.replace(spec, id=value))
+        reader.where[f"psd:{i}"] = location
+    reader.fields["psds"] = tuple(result)
+
+
+def check(robot, diagnostics, at) -> dict:
+    seen: dict[int, str] = {}
+    for i, psd in enumerate(robot.psds):
+        if psd.id in seen:
+            diagnostics.error(at(f"psd:{i}"), f"PSD id {psd.id} of {psd.name} is already used by {seen[psd.id]}: "
+                              "expected a different id", "duplicate")
+        seen.setdefault(psd.id, psd.name)
+    for i, psd in enumerate(robot.psds):
+        if psd.z < 0:
+            diagnostics.warning(at(f"psd:{i}"), f"{psd.name} sits {format_number(-psd.z)} mm below the floor "
+                                f"(z = {format_number(psd.z)}); kept as written", "below-floor")
+    return {}
+
+
+def write(robot) -> list[str]:
+    f = format_number
+    out = []
+    for p in robot.psds:
+        if p.pitch:
+            out.append(f"psd {p.id} {name_token(p.name)} {f(p.x)} {f(p.y)} {f(p.z)} {f(p.pitch)} {f(p.heading)} 0")
+        else:
+            out.append(f"psd {name_token(p.name)} {p.id} {f(p.x)} {f(p.y)} {f(p.z)} {f(p.heading)}")
+    return out
+
+
+PART = Part(
+    "psd",
+    fields=(("psds", tuple[PsdSpec, ...], ()),),
+    keywords={"psd": read_psd},
+    write=write,
+    finish=finish,
+    properties={"psds": list_of("psd", "PSD sensors")},
+    defs={"psd": record("PSD sensor", "a PSD distance sensor (robot frame)", {
+        "id": whole(1, "RoBIOS id", "RoBIOS id (PSD_FRONT=1, PSD_LEFT=2, PSD_RIGHT=3, PSD_BACK=4)"),
+        "name": text("Name"),
+        "x": coordinate("x", "mm forward"),
+        "y": coordinate("y", "mm left"),
+        "z": coordinate("z", "mm up"),
+        "heading": coordinate("Heading", "degrees, left positive"),
+        "pitch": coordinate("Pitch", "degrees, up positive"),
+    }, required=("id", "name", "x", "y", "z", "heading"))},
+    json_locations=lambda robot, positions: {f"psd:{i}": positions.value(["psds", i])
+                                             for i in range(len(robot.psds))},
+    check=check,
+)

@@ -1,0 +1,91 @@
+"""How the robot floats and moves through water (`buoyancy`, `drag`); the forces:
+robot/components/buoyancy.py and physics/water.py."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from eyesim.scene.diagnostics import quoted
+from eyesim.scene.lexer import Line, format_number
+from eyesim.scene.parts.part import Part, PartReader, at_least, coordinate, record, ref
+
+
+@dataclass(frozen=True)
+class BuoyancySpec:
+    """Displaced volume in litres (1 litre of water lifts about 1 kg) acting at the centre of
+    buoyancy (mm, robot frame)."""
+
+    volume: float
+    x: float = 0.0
+    y: float = 0.0
+    z: float = 0.0
+
+
+@dataclass(frozen=True)
+class DragSpec:
+    """Linear drag in water: force per speed along the robot's x, y, z axes in N/(m/s), and a
+    rotational drag torque per turn rate in N*m/(rad/s)."""
+
+    x: float
+    y: float
+    z: float
+    rotation: float = 0.0
+
+
+def read_buoyancy(reader: PartReader, line: Line) -> None:
+    if not reader.arity(line, (1, 4), "<volume in litres> [<x> <y> <z>]"):
+        return
+    values = reader.numbers(line, 1, ("volume in litres", "centre x", "centre y", "centre z")[:len(line.args)])
+    if values:
+        if values[0] < 0:
+            reader.error(line, f"buoyancy: expected a volume >= 0, found {quoted(line.tokens[1].text)}", 1,
+                         "bad-value")
+            return
+        reader.fields["buoyancy"] = BuoyancySpec(*(v + 0.0 for v in values))
+
+
+def read_drag(reader: PartReader, line: Line) -> None:
+    if not reader.arity(line, (3, 4), "<x> <y> <z> [<rotation>]"):
+        return
+    names = ("drag along x", "drag along y", "drag along z", "rotational drag")
+    values = reader.numbers(line, 1, names[:len(line.args)])
+    if values:
+        if any(v < 0 for v in values):
+            reader.error(line, "drag: expected coefficients >= 0", 1, "bad-value")
+            return
+        reader.fields["drag"] = DragSpec(*(v + 0.0 for v in values))
+
+
+def write(robot) -> list[str]:
+    f = format_number
+    out = []
+    if robot.buoyancy is not None:
+        b = robot.buoyancy
+        out.append(f"buoyancy {f(b.volume)} {f(b.x)} {f(b.y)} {f(b.z)}")
+    if robot.drag is not None:
+        d = robot.drag
+        out.append(f"drag {f(d.x)} {f(d.y)} {f(d.z)} {f(d.rotation)}")
+    return out
+
+
+PART = Part(
+    "water",
+    fields=(("buoyancy", BuoyancySpec | None, None), ("drag", DragSpec | None, None)),
+    keywords={"buoyancy": read_buoyancy, "drag": read_drag},
+    write=write,
+    properties={"buoyancy": ref("buoyancy"), "drag": ref("drag")},
+    defs={
+        "buoyancy": record("Buoyancy", "buoyancy and its centre (mm)", {
+            "volume": at_least(0, "Volume", "displaced litres"),
+            "x": coordinate("x"),
+            "y": coordinate("y"),
+            "z": coordinate("z"),
+        }, required=("volume",)),
+        "drag": record("Drag", "linear drag in water", {
+            "x": at_least(0, "Drag along x", "N/(m/s) along x"),
+            "y": at_least(0, "Drag along y", "N/(m/s) along y"),
+            "z": at_least(0, "Drag along z", "N/(m/s) along z"),
+            "rotation": at_least(0, "Rotational drag", "N*m/(rad/s)"),
+        }, required=("x", "y", "z")),
+    },
+)

@@ -1,0 +1,302 @@
+"""The page's program and settings controls: JSON routes under /api (docs/viewer.md).
+
+Per robot: start, stop and restart a program (an executable or .py file under the scene roots,
+program_files.py), and compile C/C++ sources there with `eyesim cc`. What the programs print and
+how they end reaches the page as the usual console and program events. Settings (PSD noise and
+seed, VIS, TRACE) change the running scene's description, so a save writes them.
+
+Every route is behind the viewer's access checks (access.py). Bad requests get 400 and a JSON
+{"error": ...} saying what was wrong; nothing else changes."""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import dataclasses
+import json
+import logging
+import math
+import re
+import subprocess
+from pathlib import Path
+
+from aiohttp import web
+
+from eyesim import toolchain
+from eyesim.launcher import crash_reason
+from eyesim.robot.components.psd import PsdSensor
+from eyesim.web import messages, program_files
+from eyesim.web.program_files import FileRefused
+
+log = logging.getLogger("eyesim.web")
+COMPILE_SECONDS = 120  # a compiler that takes longer is stopped
+FREE_ROBOT_SECONDS = 5.0  # how long a restart waits for the old program's connection to close
+MAX_SEED = 2**63 - 1
+MAX_PSD_NOISE = 1000.0  # mm
+# gcc and clang: "file:line:column: error: message" (column optional)
+DIAGNOSTIC = re.compile(r"^(?P<file>[^:\n]+):(?P<line>\d+):(?:(?P<column>\d+):)? "
+                        r"(?P<kind>fatal error|error|warning|note): (?P<message>.*)$", re.MULTILINE)
+
+
+class BadRequest(Exception):
+    pass
+
+
+class ProgramControl:
+    def __init__(self, sim, launcher, run_folder: Path, resend_scene):
+        self.sim = sim
+        self.launcher = launcher
+        self.run_folder = run_folder
+        self.resend_scene = resend_scene  # tells the browsers the scene changed (VIS, TRACE)
+        self.chosen: dict[int, Path] = {}  # robot id -> the program the page last started for it
+        self._busy: set[int] = set()  # robots whose program is being started or stopped
+
+    def add_routes(self, router: web.UrlDispatcher) -> None:
+        router.add_get("/api/programs", self._json(self.overview))
+        router.add_post("/api/programs/start", self._json(self.start))
+        router.add_post("/api/programs/stop", self._json(self.stop))
+        router.add_post("/api/programs/restart", self._json(self.restart))
+        router.add_post("/api/programs/compile", self._json(self.compile))
+        router.add_get("/api/settings", self._json(self.settings))
+        router.add_post("/api/settings", self._json(self.change_settings))
+
+    def roots(self) -> list[program_files.Root]:
+        return program_files.scene_roots(self.run_folder, self.sim.scene.source)
+
+    # -- routes -------------------------------------------------------------------------------
+    async def overview(self, _body: dict) -> dict:
+        roots = self.roots()
+        files = await asyncio.get_running_loop().run_in_executor(None, program_files.list_files, roots)
+        return {"roots": [{"name": r.name, "path": str(r.path)} for r in roots], "files": files,
+                "robots": [self._robot_state(robot, roots) for robot in self.sim.robots]}
+
+    async def start(self, body: dict) -> dict:
+        robot = self._robot(body)
+        path = self._file(body, kinds=("executable", "python"))
+        return await self._restart_with(robot, path)
+
+    async def restart(self, body: dict) -> dict:
+        robot = self._robot(body)
+        path = self._program_of(robot)
+        if path is None:
+            raise BadRequest(f"robot {robot.id} has no program to restart: start one first")
+        return await self._restart_with(robot, path)
+
+    async def stop(self, body: dict) -> dict:
+        robot = self._robot(body)
+        run = self.launcher.latest(robot.id)
+        if run is None or run.process is None or run.process.poll() is not None:
+            raise BadRequest(f"robot {robot.id} runs no program")
+        async with self._robot_busy(robot.id):
+            await asyncio.get_running_loop().run_in_executor(None, self.launcher.stop, run)
+        return self._robot_state(robot, self.roots())
+
+    async def compile(self, body: dict) -> dict:
+        roots = self.roots()
+        source = self._file(body, kinds=("c", "c++"))
+        language = "cc" if program_files.kind_of(source) == "c" else "c++"
+        output = source.with_suffix("")
+        root = roots[body["root"]].path
+        command = toolchain.compiler_command(language, [source.relative_to(root).as_posix(), "-o",
+                                                        output.relative_to(root).as_posix()])
+        result = await asyncio.get_running_loop().run_in_executor(None, _run_compiler, command, root)
+        text = result.stdout + result.stderr
+        return {"ok": result.returncode == 0, "output": text,
+                "diagnostics": [_diagnostic(match) for match in DIAGNOSTIC.finditer(text)],
+                "program": program_files.locate(roots, output) if result.returncode == 0 else None}
+
+    async def settings(self, _body: dict) -> dict:
+        settings = self.sim.scene.settings
+        clock = {key: value for key, value in messages.status(self.sim, None).items()
+                 if key in ("time", "paused", "speed", "clock")}
+        return {"vis": settings.vis, "trace": settings.trace, "psd_noise": settings.psd_noise,
+                "seed": settings.seed, **clock}
+
+    async def change_settings(self, body: dict) -> dict:
+        changes = {}
+        for flag in ("vis", "trace"):
+            if flag in body:
+                if not isinstance(body[flag], bool):
+                    raise BadRequest(f"{flag}: expected true or false, found {body[flag]!r}")
+                changes[flag] = body[flag]
+        if "psd_noise" in body:
+            noise = body["psd_noise"]
+            if isinstance(noise, bool) or not isinstance(noise, (int, float)) or \
+                    not (math.isfinite(noise) and 0 <= noise <= MAX_PSD_NOISE):
+                raise BadRequest(f"psd_noise: expected a number of mm from 0 to {MAX_PSD_NOISE:g}, found {noise!r}")
+            changes["psd_noise"] = float(noise)
+        if "seed" in body:
+            seed = body["seed"]
+            if isinstance(seed, bool) or not isinstance(seed, int) or not 0 <= seed <= MAX_SEED:
+                raise BadRequest(f"seed: expected a whole number from 0 to 2^63-1, found {seed!r}")
+            changes["seed"] = seed
+        unknown = set(body) - {"vis", "trace", "psd_noise", "seed"}
+        if unknown:
+            raise BadRequest(f"unknown setting {sorted(unknown)[0]!r}: expected vis, trace, psd_noise or seed")
+        if changes:
+            await self._on_simulation(lambda sim: apply_settings(sim, **changes))
+            self.resend_scene()
+        return await self.settings({})
+
+    # -- helpers ------------------------------------------------------------------------------
+    async def _restart_with(self, robot, path: Path) -> dict:
+        async with self._robot_busy(robot.id):
+            run = self.launcher.latest(robot.id)
+            loop = asyncio.get_running_loop()
+            if run is not None and run.process is not None and run.process.poll() is None:
+                await loop.run_in_executor(None, self.launcher.stop, run)
+            await self._robot_free(robot.id)
+            self.chosen[robot.id] = path
+            await loop.run_in_executor(None, self.launcher.start, robot.id, path)
+        return self._robot_state(robot, self.roots())
+
+    async def _robot_free(self, robot_id: int) -> None:
+        """Wait until no program holds the robot (the stopped one's connection has closed)."""
+        loop = asyncio.get_running_loop()
+        deadline = loop.time() + FREE_ROBOT_SECONDS
+        while loop.time() < deadline:
+            held = await self._on_simulation(
+                lambda sim: any(s.robot is not None and s.robot.id == robot_id and not s.closed for s in sim.sessions))
+            if not held:
+                return
+            await asyncio.sleep(0.05)
+        raise BadRequest(f"robot {robot_id} is still held by a program the simulator did not start "
+                         f"(stop it where it runs)")
+
+    @contextlib.asynccontextmanager
+    async def _robot_busy(self, robot_id: int):
+        """One start, stop or restart per robot at a time (a double click must not start two)."""
+        if robot_id in self._busy:
+            raise BadRequest(f"robot {robot_id}: its program is being started or stopped, try again")
+        self._busy.add(robot_id)
+        try:
+            yield
+        finally:
+            self._busy.discard(robot_id)
+
+    async def _on_simulation(self, action):
+        """Run action(sim) on the simulation thread and return its result."""
+        loop = asyncio.get_running_loop()
+        future = loop.create_future()
+
+        def call(sim):
+            try:
+                result = action(sim)
+            except Exception as error:  # handed back to the route, which reports it
+                loop.call_soon_threadsafe(_settle, future, None, error)
+            else:
+                loop.call_soon_threadsafe(_settle, future, result, None)
+
+        self.sim.on_loop(call)
+        return await future
+
+    def _robot(self, body: dict):
+        robot_id = body.get("robot")
+        robot = self.sim.robot_by_id(robot_id) if isinstance(robot_id, int) and not isinstance(robot_id, bool) else None
+        if robot is None:
+            raise BadRequest(f"no robot {robot_id!r}")
+        return robot
+
+    def _file(self, body: dict, kinds: tuple[str, ...]) -> Path:
+        try:
+            path = program_files.resolve(self.roots(), body.get("root"), body.get("path"))
+        except FileRefused as error:
+            raise BadRequest(str(error)) from None
+        kind = program_files.kind_of(path)
+        if kind not in kinds:
+            what = "a program (an executable or a .py file)" if "python" in kinds else "a C or C++ source"
+            raise BadRequest(f"{body['path']!r} is not {what}")
+        return path
+
+    def _program_of(self, robot) -> Path | None:
+        """What Restart runs: the page's last choice, else what the robot ran, else the scene's."""
+        if robot.id in self.chosen:
+            return self.chosen[robot.id]
+        run = self.launcher.latest(robot.id)
+        if run is not None:
+            return run.path
+        placement = self.sim.scene.robots[robot.id - 1] if robot.id <= len(self.sim.scene.robots) else None
+        return Path(placement.program) if placement is not None and placement.program else None
+
+    def _robot_state(self, robot, roots) -> dict:
+        run = self.launcher.latest(robot.id)
+        program = self._program_of(robot)
+        state = {"id": robot.id, "name": robot.name,
+                 "program": None if program is None else (program_files.locate(roots, program) or
+                                                          {"root": None, "path": str(program)}),
+                 "state": "none", "exit_code": None, "reason": None}
+        if run is None:
+            return state
+        if run.error:
+            state.update(state="failed", reason=run.error)
+        elif run.process is not None and run.process.poll() is None:
+            state.update(state="running")
+        else:
+            state.update(state="stopped" if run.stopped_by_us else "exited", exit_code=run.exit_code)
+            if run.signal is not None and not run.stopped_by_us:
+                state["reason"] = crash_reason(run.signal)
+        return state
+
+    def _json(self, handler):
+        async def route(request: web.Request) -> web.Response:
+            body = {}
+            if request.method == "POST":
+                try:
+                    body = json.loads(await request.text())
+                except ValueError as error:
+                    return _error(f"not valid JSON: {error}")
+                if not isinstance(body, dict):
+                    return _error("expected a JSON object")
+            try:
+                return web.json_response(await handler(body))
+            except BadRequest as error:
+                return _error(str(error))
+            except toolchain.LibraryMissing as error:
+                return _error(str(error), 500)
+            except Exception:  # a bug: this request fails, the simulator goes on
+                log.exception("viewer request %s failed", request.path)
+                return _error(f"{request.path}: the simulator could not carry out this request", 500)
+
+        return route
+
+
+def apply_settings(sim, **changes) -> None:
+    """New settings for the running scene, on the simulation thread: the scene description
+    (what a save writes) and the PSDs, whose noise restarts from the seed."""
+    settings = dataclasses.replace(sim.scene.settings, **changes)
+    sim.scene = dataclasses.replace(sim.scene, settings=settings)
+    for robot in sim.robots:
+        for component in robot.components:
+            if isinstance(component, PsdSensor):
+                component.set_noise(settings.psd_noise, settings.seed)
+
+
+def _settle(future: asyncio.Future, result, error) -> None:
+    if future.done():
+        return
+    if error is not None:
+        future.set_exception(error)
+    else:
+        future.set_result(result)
+
+
+def _run_compiler(command: list[str], cwd: Path) -> subprocess.CompletedProcess:
+    try:
+        return subprocess.run(command, cwd=cwd, capture_output=True, text=True, errors="replace",
+                              timeout=COMPILE_SECONDS)
+    except FileNotFoundError:
+        return subprocess.CompletedProcess(command, 1, "", f"compiler {command[0]!r} not found; install one "
+                                                           f"or set CC / CXX\n")
+    except subprocess.TimeoutExpired:
+        return subprocess.CompletedProcess(command, 1, "", f"the compiler took longer than {COMPILE_SECONDS} s "
+                                                           f"and was stopped\n")
+
+
+def _diagnostic(match: re.Match) -> dict:
+    return {"file": match["file"], "line": int(match["line"]),
+            "column": int(match["column"]) if match["column"] else None,
+            "kind": "error" if match["kind"] == "fatal error" else match["kind"], "message": match["message"]}
+
+
+def _error(message: str, status: int = 400) -> web.Response:
+    return web.json_response({"error": message}, status=status)

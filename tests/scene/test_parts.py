@@ -1,0 +1,103 @@
+"""The robot part declarations (scene/parts/): the .robi reader, writer, JSON and schema built
+from them read every real robot file as before and agree with each other."""
+
+import dataclasses
+import json
+from pathlib import Path
+
+import jsonschema
+import pytest
+
+from eyesim.scene.description import RobotType
+from eyesim.scene.diagnostics import Diagnostics
+from eyesim.scene.json_format import dumps, parse_json, schema, to_json
+from eyesim.scene.lexer import read_text
+from eyesim.scene.parts import KEYWORDS, PARTS
+from eyesim.scene.robi import parse_robi, write_robi
+from robi_snapshot import robi_files, snapshot
+from scene_testing import without_locations
+
+EXPECTED = json.loads((Path(__file__).parent / "robi_descriptions.json").read_text(encoding="utf-8"))
+
+
+def test_every_robot_file_reads_and_writes_as_before_the_part_declarations():
+    now = snapshot()
+    assert len(now) >= 14 and now.keys() == EXPECTED.keys()
+    for key, expected in EXPECTED.items():
+        assert now[key] == expected, key
+
+
+@pytest.mark.parametrize("key", list(robi_files()))
+def test_robi_and_json_round_trips(key):
+    """robi -> description -> robi -> description, and description -> JSON -> description."""
+    robot = parse_robi(read_text(robi_files()[key]), key, Diagnostics())
+    diagnostics = Diagnostics()
+    again = parse_robi(write_robi(robot), "again.robi", diagnostics)
+    assert not diagnostics.has_errors
+    assert without_locations(again) == without_locations(robot)
+    assert write_robi(again) == write_robi(robot)
+    text = dumps(to_json("robot", robot))
+    diagnostics = Diagnostics()
+    kind, from_json = parse_json(text, "again.json", diagnostics)
+    assert kind == "robot" and not diagnostics.has_errors
+    assert without_locations(from_json) == without_locations(robot)
+
+
+def test_each_keyword_and_field_belongs_to_one_part():
+    assert len(KEYWORDS) == sum(len(part.keywords) for part in PARTS)
+    fields = [name for part in PARTS for name, _, _ in part.fields]
+    assert len(fields) == len(set(fields))
+    assert ["name", "source"] + fields == [f.name for f in dataclasses.fields(RobotType)]
+
+
+def test_the_schema_is_assembled_from_the_parts_fragments():
+    published = schema("robot")
+    fields = {name for part in PARTS for name, _, _ in part.fields}
+    assert set(published["properties"]) == fields | {"format", "version", "name"}
+    referenced = {ref.rsplit("/", 1)[1] for ref in _refs(published)}
+    assert referenced == set(published["$defs"])  # every definition used, none missing
+    for part in PARTS:
+        for name, definition in part.properties.items():
+            assert published["properties"][name] == definition, (part.name, name)
+
+
+def test_every_field_of_the_schema_has_a_title():
+    """The robot editor labels its form fields with them."""
+    def walk(node, path):
+        if isinstance(node, dict):
+            for name, field in node.get("properties", {}).items():
+                assert "title" in field or "$ref" in field, f"{path}/{name}"
+            for key, value in node.items():
+                walk(value, f"{path}/{key}")
+    published = schema("robot")
+    walk(published, "")
+    assert all("title" in definition for definition in published["$defs"].values())
+
+
+def test_the_schema_accepts_what_the_writer_writes_and_rejects_unknown_parts():
+    robot = parse_robi(read_text(robi_files()["builtin/S4.robi"]), "S4.robi", Diagnostics())
+    data = to_json("robot", robot)
+    jsonschema.validate(data, schema("robot"))
+    with pytest.raises(jsonschema.ValidationError):
+        jsonschema.validate({**data, "sonar": []}, schema("robot"))
+
+
+def test_a_keyword_error_keeps_its_file_and_line():
+    diagnostics = Diagnostics()
+    parse_robi("name x\npsd PSD_FRONT 1 10 0 y 0\ncamera 1 2\n", "bot.robi", diagnostics)
+    assert [str(d) for d in diagnostics.items] == [
+        "bot.robi:2:22: error: psd: expected z (a number), found 'y'",
+        "bot.robi:3:1: error: camera: expected 7 arguments (camera <x> <y> <z> <pan> <tilt> <a> <b>), found 2: '1 2'",
+    ]
+
+
+def _refs(node):
+    if isinstance(node, dict):
+        for key, value in node.items():
+            if key == "$ref":
+                yield value
+            else:
+                yield from _refs(value)
+    elif isinstance(node, list):
+        for value in node:
+            yield from _refs(value)
