@@ -20,6 +20,7 @@ scene's programs again and resumes if the simulation was running before."""
 from __future__ import annotations
 
 import asyncio
+import dataclasses
 import json
 import logging
 import threading
@@ -165,7 +166,7 @@ class SceneWorkspace:
             wanted = ".json" if as_json else ".sim"
             if not target.name.lower().endswith(wanted):
                 target = target.with_name(target.name + wanted)
-            draft = self.draft
+            draft = self._with_live_settings(self.draft)
             if draft.world_file is not None and self._root_of(draft.world_file) != self._root_of(target):
                 draft = draft.with_own_world()  # saved beside the scene, not named in another root
             files = saved_files(draft, target, as_json)
@@ -192,6 +193,7 @@ class SceneWorkspace:
     # -- doing it -----------------------------------------------------------------------------
     async def _take(self, draft: Draft, stack: list[Draft], clear_redo: bool) -> web.Response:
         """Make `draft` the scene (the current one goes onto `stack`), or refuse it."""
+        draft = self._with_live_settings(draft)
         try:
             scene = await _in_thread(draft.scene)
         except SceneError as error:
@@ -260,6 +262,11 @@ class SceneWorkspace:
             return self.roots.locate(place.get("root"), place.get("path"))
         except FileAccessError as error:
             raise web.HTTPForbidden(text=json.dumps({"error": str(error)}), content_type="application/json")
+
+    def _with_live_settings(self, draft: Draft) -> Draft:
+        """The draft with the settings the page's settings panel gave the running scene
+        (program_control.py): they are not edits, so undo does not take them back."""
+        return dataclasses.replace(draft, settings=self.sim.scene.settings)
 
     def _root_of(self, path: Path) -> int | None:
         place = self.roots.place_of(path)

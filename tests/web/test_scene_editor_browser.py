@@ -264,6 +264,9 @@ def test_a_new_arena_built_in_the_page_is_saved_and_reopened_the_same(browser_co
         page.click(f"#editor-items li[data-kind=robot][data-index='{index}']")
         page.select_option("#editor-program", label="current folder / lcd_and_key")
         wait_for_edits(page, edits + 6 + index)
+    # the settings panel's choices are the scene's: kept by edits and written when saving
+    page.evaluate("() => fetch('/api/settings', {method: 'POST', headers: {'Content-Type': 'application/json'}, "
+                  "body: JSON.stringify({trace: true, psd_noise: 3})})")
     built = editor_state(page)["items"]
     assert len(built["robots"]) == 2 and len(built["objects"]) == 1 and len(built["walls"]) == 2
     assert all(r["program"] for r in built["robots"])
@@ -286,6 +289,8 @@ def test_a_new_arena_built_in_the_page_is_saved_and_reopened_the_same(browser_co
     reopened = editor_state(page)["items"]
     assert reopened["robots"] == built["robots"] and reopened["objects"] == built["objects"]
     assert reopened["walls"] == built["walls"] and reopened["floor"] == built["floor"] == {"width": 2000, "height": 2000}
+    settings = load_scene(workspace / "built.json").settings
+    assert settings.trace and settings.psd_noise == 3
     check = subprocess.run(eyesim_command("check", "built.json"), capture_output=True, text=True, cwd=workspace)
     assert check.returncode == 0, check.stdout + check.stderr
     assert viewer.errors == []
