@@ -35,6 +35,30 @@ class Root:
     writable: bool = True  # the bundled examples are not: they belong to the installed package
 
 
+def confined(base: Path, relative: object, where: str = "the scene root") -> Path:
+    """The real path of `relative` under the folder `base`; FileAccessError when it is not a plain
+    path under it (absolute, climbing with `..`, or leading out through a symbolic link). The one
+    check every route that takes a path from the browser goes through."""
+    if not isinstance(relative, str) or not relative.strip():
+        raise FileAccessError(f"expected a file path relative to {where}")
+    if len(relative) > MAX_PATH or "\0" in relative:
+        raise FileAccessError("the file path is too long or has a NUL character")
+    text = relative.replace("\\", "/")
+    parts = PurePosixPath(text).parts
+    if text.startswith("/") or re.match(r"^[A-Za-z]:", text):
+        raise FileAccessError(f"{relative!r}: absolute paths are not allowed, only paths under {where}")
+    if ".." in parts:
+        raise FileAccessError(f"{relative!r}: '..' is not allowed, only paths under {where}")
+    base = base.resolve()
+    try:
+        resolved = base.joinpath(*parts).resolve()
+    except (OSError, RuntimeError):  # a link loop
+        raise FileAccessError(f"{relative!r}: a symbolic link loop") from None
+    if resolved != base and base not in resolved.parents:
+        raise FileAccessError(f"{relative!r} leads out of {where} (a symbolic link): not allowed")
+    return resolved
+
+
 class SceneRoots:
     def __init__(self, folders: list[tuple[str, Path, bool]]):
         """`folders`: (name, folder, writable); a folder given twice counts once."""
@@ -54,23 +78,7 @@ class SceneRoots:
         """The file at `relative` under root number `root`; FileAccessError when it is not allowed."""
         if not isinstance(root, int) or isinstance(root, bool) or not 0 <= root < len(self.roots):
             raise FileAccessError(f"no scene root {root!r} (there are {len(self.roots)})")
-        if not isinstance(relative, str) or not relative.strip():
-            raise FileAccessError("expected a file path relative to the scene root")
-        if len(relative) > MAX_PATH or "\0" in relative:
-            raise FileAccessError("the file path is too long or has a NUL character")
-        text = relative.replace("\\", "/")
-        parts = PurePosixPath(text).parts
-        if text.startswith("/") or re.match(r"^[A-Za-z]:", text):
-            raise FileAccessError(f"{relative!r}: absolute paths are not allowed, only paths under the scene roots")
-        if ".." in parts:
-            raise FileAccessError(f"{relative!r}: '..' is not allowed, only paths under the scene roots")
-        base = self.roots[root].path
-        path = base.joinpath(*parts)
-        resolved = path.resolve()
-        if resolved != base and base not in resolved.parents:
-            raise FileAccessError(f"{relative!r} leads out of the scene root {self.roots[root].name} "
-                                  "(a symbolic link): not allowed")
-        return resolved
+        return confined(self.roots[root].path, relative, f"the scene root {self.roots[root].name}")
 
     def place_of(self, path: str | Path) -> tuple[int, str] | None:
         """(root number, relative path) of a file under a root, else None."""
