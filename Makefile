@@ -59,7 +59,6 @@ viewer:
 # channel's TypeScript types and parsers and the server's copy of its schema.
 protocol:
 	$(PYTHON) protocol/generate.py
-	$(PYTHON) protocol/generate_viewer.py
 
 # Rewrite the published JSON Schemas in docs/schemas/ (the robot schema comes from the part
 # declarations in eyesim/scene/parts/; tests/scene/test_schemas.py fails while they are stale).

@@ -13,6 +13,7 @@ import json
 import sys
 from pathlib import Path
 
+import generate_viewer
 import layers
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -183,7 +184,7 @@ def c_vectors(spec: dict, vectors: list) -> str:
 def outputs() -> dict[Path, str]:
     spec, vectors = load()
     return {PY_OUT: python_source(spec), C_OUT: c_source(spec), C_VECTORS_OUT: c_vectors(spec, vectors),
-            **layers.outputs(spec)}
+            **layers.outputs(spec), **generate_viewer.outputs()}
 
 
 def main() -> int:

@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """Generate the viewer channel's code from protocol/viewer.schema.json (docs/viewer-channel.md):
 
 - web/src/generated/viewer_protocol.ts: a TypeScript type and a parser (`parseX(value, what)`)
@@ -6,7 +5,7 @@
   of objects skips a bad item with a console warning so one bad wall hides one wall;
 - eyesim/web/viewer_schema.py: the schema itself, for the server's checks (eyesim/web/channel_schema.py).
 
-Run by `make protocol`; `--check` reports stale outputs (tests/protocol/test_generated.py)."""
+Used by protocol/generate.py (`make protocol`; `--check` reports stale outputs)."""
 
 from __future__ import annotations
 
@@ -278,22 +277,3 @@ def python_source(text: str) -> str:
 def outputs() -> dict[Path, str]:
     text = SCHEMA.read_text()
     return {TS_OUT: Generator(json.loads(text)).typescript(), PY_OUT: python_source(text)}
-
-
-def main() -> int:
-    check = "--check" in sys.argv
-    stale = []
-    for path, text in outputs().items():
-        if check:
-            if not path.exists() or path.read_text() != text:
-                stale.append(path)
-        else:
-            path.parent.mkdir(parents=True, exist_ok=True)
-            path.write_text(text)
-    for path in stale:
-        print(f"stale: {path.relative_to(ROOT)} (run make protocol)")
-    return 1 if stale else 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())

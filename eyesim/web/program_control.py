@@ -26,6 +26,7 @@ from eyesim import toolchain
 from eyesim.launcher import crash_reason
 from eyesim.robot.components.psd import PsdSensor
 from eyesim.web import messages, program_files
+from eyesim.web.simulation_calls import on_simulation
 from eyesim.web.scene_files import FileAccessError
 
 log = logging.getLogger("eyesim.web")
@@ -176,19 +177,7 @@ class ProgramControl:
 
     async def _on_simulation(self, action):
         """Run action(sim) on the simulation thread and return its result."""
-        loop = asyncio.get_running_loop()
-        future = loop.create_future()
-
-        def call(sim):
-            try:
-                result = action(sim)
-            except Exception as error:  # handed back to the route, which reports it
-                loop.call_soon_threadsafe(_settle, future, None, error)
-            else:
-                loop.call_soon_threadsafe(_settle, future, result, None)
-
-        self.sim.on_loop(call)
-        return await future
+        return await on_simulation(self.sim, action)
 
     def _robot(self, body: dict):
         robot_id = body.get("robot")
@@ -269,15 +258,6 @@ def apply_settings(sim, **changes) -> None:
         for component in robot.components:
             if isinstance(component, PsdSensor):
                 component.set_noise(settings.psd_noise, settings.seed)
-
-
-def _settle(future: asyncio.Future, result, error) -> None:
-    if future.done():
-        return
-    if error is not None:
-        future.set_exception(error)
-    else:
-        future.set_result(result)
 
 
 def _run_compiler(command: list[str], cwd: Path) -> subprocess.CompletedProcess:

@@ -44,6 +44,7 @@ from eyesim.scene.jsonpos import json_positions
 from eyesim.scene.loader import read_document
 from eyesim.scene.robi import write_robi
 from eyesim.web import messages, scene_files
+from eyesim.web.simulation_calls import on_simulation
 from eyesim.web.mesh_message import has_mesh, mesh_message
 
 log = logging.getLogger("eyesim.web")
@@ -316,19 +317,7 @@ class TestDrive:
 
     def on_sim(self, action):
         """`action(sim)` on the simulation thread; its result as an awaitable."""
-        loop = asyncio.get_running_loop()
-        future = loop.create_future()
-
-        def run(sim):
-            try:
-                result = action(sim)
-            except Exception as error:  # noqa: BLE001 - handed to the request that asked
-                loop.call_soon_threadsafe(_settle, future, None, error)
-            else:
-                loop.call_soon_threadsafe(_settle, future, result, None)
-
-        self.sim.call(run)
-        return asyncio.wait_for(future, ANSWER_TIMEOUT)
+        return asyncio.wait_for(on_simulation(self.sim, action), ANSWER_TIMEOUT)
 
     def stop(self) -> None:
         self.sim.stop()
@@ -394,15 +383,6 @@ class TestDrive:
             v, w = vw.measured_speed()
             readings["vw"] = [round(v * 1000), round(math.degrees(w))]
         return {**sensors(sim), "time": sim.time, "readings": readings}
-
-
-def _settle(future: asyncio.Future, result, error) -> None:
-    if future.done():
-        return
-    if error is not None:
-        future.set_exception(error)
-    else:
-        future.set_result(result)
 
 
 def _number(message: dict, key: str, limit: float) -> float:

@@ -23,7 +23,6 @@ import asyncio
 import dataclasses
 import json
 import logging
-import threading
 from pathlib import Path
 
 from aiohttp import web
@@ -31,6 +30,7 @@ from aiohttp import web
 from eyesim.scene import SceneError, World, builtins, load_scene
 from eyesim.web.scene_editing import Draft, EditError, apply, saved_files, set_floor
 from eyesim.web.scene_files import FileAccessError, SceneRoots
+from eyesim.web.simulation_calls import on_simulation
 
 log = logging.getLogger("eyesim.web")
 MAX_RECENT = 10
@@ -235,25 +235,15 @@ class SceneWorkspace:
 
     async def _on_sim(self, action) -> None:
         """Run action(sim) on the simulation thread and wait for it; its exception is raised here."""
-        done = threading.Event()
-        failure: list[BaseException] = []
-
-        def run(sim):
-            try:
-                action(sim)
-            except Exception as error:  # noqa: BLE001 - handed to the waiting request
-                failure.append(error)
-            finally:
-                done.set()
-
-        self.sim.on_loop(run)
-        if not await _in_thread(done.wait, SWAP_TIMEOUT):
-            raise web.HTTPServiceUnavailable(text="the simulation did not answer in time")
-        if failure:
-            log.error("viewer: the new scene could not be built: %s", failure[0])
+        try:
+            await asyncio.wait_for(on_simulation(self.sim, action), SWAP_TIMEOUT)
+        except asyncio.TimeoutError:
+            raise web.HTTPServiceUnavailable(text="the simulation did not answer in time") from None
+        except Exception as error:  # noqa: BLE001 - the new scene could not be built
+            log.error("viewer: the new scene could not be built: %s", error)
             raise web.HTTPUnprocessableEntity(text=json.dumps({"error": f"the physics cannot build this scene: "
-                                                                         f"{failure[0]}", "diagnostics": []}),
-                                              content_type="application/json")
+                                                                         f"{error}", "diagnostics": []}),
+                                              content_type="application/json") from None
 
     def _locate(self, place) -> Path:
         if not isinstance(place, dict):
