@@ -17,7 +17,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from eyesim.physics.builder import build_world
+from eyesim.world.builder import build_world
 from eyesim.scene import limits, load_scene
 from eyesim.scene.diagnostics import Diagnostics
 from eyesim.scene.loader import read_definition

@@ -4,7 +4,7 @@ from eyesim.commands.errors import CommandError, checked_arguments, require
 from eyesim.robot.components.analog_io import AnalogInputs
 from eyesim.robot.components.battery import Battery
 from eyesim.robot.components.digital_io import DigitalLines
-from eyesim.session import Pending
+from eyesim.net.session import Pending
 
 
 def _digital(robot) -> DigitalLines:

@@ -2,7 +2,7 @@
 
 from eyesim.commands.errors import require
 from eyesim.robot.components.irtv import IrReceiver
-from eyesim.session import Pending
+from eyesim.net.session import Pending
 
 
 def _receiver(robot) -> IrReceiver:

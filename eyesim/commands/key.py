@@ -2,7 +2,7 @@
 
 from eyesim.commands.errors import CommandError, require
 from eyesim.robot.components.keys import Keys
-from eyesim.session import Pending
+from eyesim.net.session import Pending
 
 
 def _keys(robot) -> Keys:

@@ -3,7 +3,7 @@
 from eyesim.commands.errors import CommandError, require
 from eyesim.protocol import generated as g
 from eyesim.robot.components.radio import MAX_MESSAGE, MAX_WAITING, Radio
-from eyesim.session import Pending
+from eyesim.net.session import Pending
 
 
 def _radio(robot) -> Radio:

@@ -2,7 +2,7 @@
 
 from eyesim.commands.errors import checked_arguments, require
 from eyesim.robot.components.serial_ports import SerialPorts
-from eyesim.session import Pending
+from eyesim.net.session import Pending
 
 
 def _ports(robot) -> SerialPorts:

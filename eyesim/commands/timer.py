@@ -7,7 +7,7 @@ deterministic mode time goes on only while both that thread and the main thread 
 
 from eyesim.commands.errors import checked_arguments, require
 from eyesim.robot.components.timers import ProgramTimers
-from eyesim.session import Pending
+from eyesim.net.session import Pending
 
 
 def _timers(robot) -> ProgramTimers:

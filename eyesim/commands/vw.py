@@ -6,7 +6,7 @@ import math
 from eyesim.commands.errors import CommandError, checked_arguments, require
 from eyesim.physics.units import mm, to_mm, wrap_degrees
 from eyesim.robot.components.vw import VwController
-from eyesim.session import Pending
+from eyesim.net.session import Pending
 
 
 def _vw(robot) -> VwController:

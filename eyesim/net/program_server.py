@@ -23,7 +23,7 @@ import socket
 import time
 
 from eyesim.protocol import FrameDecoder, ProtocolError, decode_payload, encode_error, generated as g
-from eyesim.session import Request, Session
+from eyesim.net.session import Request, Session
 
 log = logging.getLogger("eyesim.net")
 READ_SIZE = 256 * 1024

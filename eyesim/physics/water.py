@@ -9,7 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from eyesim.physics.units import mm
-from eyesim.robot.drives import drive_of
+from eyesim.scene.drives import drive_of
 from eyesim.scene.description import Scene
 
 DENSITY = 1000.0  # kg/m^3, fresh water

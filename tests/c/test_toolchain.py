@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from eyesim import toolchain
+from eyesim.programs import toolchain
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -6,9 +6,10 @@ from pathlib import Path
 
 import pytest
 
-from eyesim.robot.drives import (DRIVES, ackermann_wheels, differential_wheels, drive_named, drive_of,
+from eyesim.scene.drives import (DRIVES, ackermann_wheels, differential_wheels, drive_named, drive_of,
                                  omni_wheels)
-from eyesim.robot.drives.archetype import Kinematics, MachineType
+from eyesim.scene.drives.archetype import MachineType
+from eyesim.robot.drives.kinematics import Kinematics
 from eyesim.scene.json_format import schema
 from support.worlds import example_robot
 

@@ -28,7 +28,7 @@ def drive_ahead(robot):
 
 
 def test_the_public_class_is_the_api_and_the_engine_keeps_its_name():
-    from eyesim.engine import Simulation as Engine
+    from eyesim.core.engine import Simulation as Engine
 
     assert eyesim.Simulation is eyesim.testing.Simulation
     assert eyesim.Simulation is not Engine

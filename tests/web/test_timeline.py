@@ -17,7 +17,7 @@ from support.viewer import run_async  # noqa: E402
 from support.recordings import record_tour  # noqa: E402
 
 from eyesim.record import Recording
-from eyesim.web.channel_schema import server_message_problems
+from eyesim.protocol.channel_schema import server_message_problems
 from eyesim.web.live_history import LiveHistory
 from eyesim.web.timeline import FrameCursor, RecordingTimeline, answer
 

@@ -19,7 +19,7 @@ from support.client import ProgramClient, RemoteError
 from support.viewer import run_async, viewer_simulation
 
 from eyesim.scene import load_scene
-from eyesim.web.channel_schema import command_problem, server_message_problems
+from eyesim.protocol.channel_schema import command_problem, server_message_problems
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 WATCH_SECONDS = 3.0

@@ -12,7 +12,7 @@ import math
 
 from eyesim.physics.units import mm, to_mm
 from eyesim.robot.component import Component
-from eyesim.robot.drives.archetype import Kinematics
+from eyesim.robot.drives.kinematics import Kinematics
 
 LINEAR_ACCEL = 1.0  # m/s^2 the controller ramps linear speed by (keeps the wheels from slipping)
 BRAKE_FRACTION = 0.5  # of the acceleration used to plan the stop, leaving headroom for lag

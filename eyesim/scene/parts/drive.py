@@ -3,7 +3,7 @@ motor and encoder names."""
 
 from __future__ import annotations
 
-from eyesim.robot.drives import DRIVES, drive_named, drive_of
+from eyesim.scene.drives import DRIVES, drive_named, drive_of
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.lexer import Line
 from eyesim.scene.parts.part import Part, PartReader, choice

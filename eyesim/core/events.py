@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import Protocol
 
-from eyesim.web import messages
+from eyesim.viewer import messages
 
 
 class Listener(Protocol):
