@@ -5,6 +5,7 @@ from argparse import Namespace
 import pytest
 from support.scenes import arena
 
+from eyesim.app.scripted_input import schedule_inputs
 from eyesim.core.clock import DETERMINISTIC, Clock
 from eyesim.core.engine import Simulation
 from eyesim.robot.components.analog_io import AnalogInputs
@@ -12,7 +13,6 @@ from eyesim.robot.components.digital_io import DigitalLines
 from eyesim.robot.components.irtv import IrReceiver
 from eyesim.robot.components.keys import KEY2, Keys
 from eyesim.robot.components.serial_ports import SerialPorts
-from eyesim.app.scripted_input import schedule_inputs
 
 
 def options(**given) -> Namespace:

@@ -12,8 +12,8 @@ import math
 from typing import Callable
 
 from eyesim.core import robot_input
-from eyesim.robot.components.irtv import code_of
 from eyesim.protocol import channel_schema
+from eyesim.robot.components.irtv import code_of
 
 Action = Callable[[object], None]
 

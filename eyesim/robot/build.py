@@ -11,9 +11,9 @@ from eyesim.physics.units import mm, rad, yaw_quat
 from eyesim.physics.visual_mesh import add_model
 from eyesim.physics.world import add_collider, rgba
 from eyesim.robot.component import Component
-from eyesim.scene.drives import drive_of
 from eyesim.robot.robot import Robot
 from eyesim.scene.description import RobotPlacement, RobotType, Settings
+from eyesim.scene.drives import drive_of
 from eyesim.scene.parts.body import hull_colliders
 
 MIN_HULL_MASS_FRACTION = 0.2  # the parts may not weigh more than 80 % of the robot

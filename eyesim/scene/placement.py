@@ -18,9 +18,9 @@ import math
 from collections import defaultdict
 from dataclasses import replace
 
-from eyesim.scene.drives import drive_of
 from eyesim.scene.description import Collider, Location, ObjectPlacement, ObjectType, Pose, RobotPlacement, RobotType, Wall
 from eyesim.scene.diagnostics import Diagnostics, quoted
+from eyesim.scene.drives import drive_of
 from eyesim.scene.limits import LIMIT
 from eyesim.scene.parts.body import hull_colliders
 

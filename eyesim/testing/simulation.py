@@ -25,8 +25,8 @@ from pathlib import Path
 from eyesim.core import inputs
 from eyesim.core.clock import DETERMINISTIC, Clock
 from eyesim.core.engine import Simulation as Engine
-from eyesim.programs.launcher import Launcher, ProgramOptions
 from eyesim.net.program_server import ProgramServer
+from eyesim.programs.launcher import Launcher, ProgramOptions
 from eyesim.protocol import generated as g
 from eyesim.robot.components.keys import KEY_NAMES
 from eyesim.robot.components.serial_ports import SerialPorts

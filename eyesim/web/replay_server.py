@@ -17,8 +17,8 @@ from pathlib import Path
 
 from aiohttp import WSMsgType, web
 
-from eyesim.record.recording import Recording, RecordingError
 from eyesim.protocol import channel_schema
+from eyesim.record.recording import Recording, RecordingError
 from eyesim.viewer import messages
 from eyesim.web import timeline
 from eyesim.web.access import AccessPolicy

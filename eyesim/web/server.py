@@ -23,8 +23,8 @@ from PIL import Image
 from eyesim.core import inputs
 from eyesim.paths import STATIC_DIR
 from eyesim.protocol import generated as g
-from eyesim.record.sampling import robot_state
 from eyesim.protocol import channel_schema
+from eyesim.record.sampling import robot_state
 from eyesim.viewer import mesh_message, messages
 from eyesim.web import timeline
 from eyesim.web.access import AccessPolicy

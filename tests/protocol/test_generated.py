@@ -24,7 +24,7 @@ def test_generated_files_match_protocol_json():
 
 
 def test_generated_viewer_channel_code_matches_viewer_schema():
-    """web/src/generated/viewer_protocol.ts and eyesim/web/viewer_schema.py follow protocol/viewer.schema.json."""
+    """web/src/generated/viewer_protocol.ts and eyesim/protocol/viewer_schema.py follow protocol/viewer.schema.json."""
     result = subprocess.run([sys.executable, str(ROOT / "protocol" / "generate_viewer.py"), "--check"],
                             capture_output=True, text=True)
     assert result.returncode == 0, result.stdout + result.stderr

@@ -16,8 +16,8 @@ from support.programs import build, eyesim_command, run_headless
 
 from eyesim.core.clock import DETERMINISTIC, Clock
 from eyesim.core.engine import Simulation
-from eyesim.programs.launcher import Launcher
 from eyesim.net.program_server import ProgramServer
+from eyesim.programs.launcher import Launcher
 from eyesim.record import Recorder, Recording, schemas
 from eyesim.robot.components.lcd import Lcd
 from eyesim.scene import DEFAULT_SCENE, load_scene

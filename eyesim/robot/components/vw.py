@@ -1,4 +1,4 @@
-"""V-omega driving for any drive with kinematics (robot/drives/archetype.py: differential, mecanum,
+"""V-omega driving for any drive with kinematics (robot/drives/kinematics.py: differential, mecanum,
 Ackermann): speed control, manoeuvres (straight, turn, curve, drive to a point), odometry and
 stall detection.
 
