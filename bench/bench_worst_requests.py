@@ -53,7 +53,7 @@ def take(sim: Simulation, session: Session, name: str, args: tuple, request_id: 
     frame = encode_message(op.code, g.KIND_REQUEST, request_id, args)
     start = time.perf_counter()
     (message,) = FrameDecoder().feed(frame)
-    request = Request(session, op, message.request_id, decode_payload(op.request, message.payload),
+    request = Request(session, op, message.request_id, decode_payload(op.request, message.payload, op.lengths),
                       max(sim.time_us, session.local_time_us))
     sim._execute(request)
     return time.perf_counter() - start

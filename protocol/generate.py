@@ -46,6 +46,11 @@ def load() -> tuple[dict, list]:
             if name not in fields or len(limits) != 3 or not limits[0] <= limits[1]:
                 raise SystemExit(f"{SPEC}: op {op['name']}: range of {name!r} must name a request field "
                                  f"as [low, high, unit]")
+        sized = {name for name, typ in op["request"] if typ in ("str", "bytes")}
+        for name, limit in op.get("lengths", {}).items():
+            if name not in sized or not isinstance(limit, int) or not 0 < limit <= spec["max_frame"]:
+                raise SystemExit(f"{SPEC}: op {op['name']}: length of {name!r} must name a str or bytes "
+                                 f"request field, as a byte count up to max_frame")
         if op["code"] in codes:
             raise SystemExit(f"{SPEC}: op {op['name']}: code {op['code']} is used twice")
         codes.add(op["code"])
@@ -73,7 +78,7 @@ def python_source(spec: dict) -> str:
             f"    {op['code']}: OpSpec({op['name']!r}, {op['code']}, {op['group']!r}, "
             f"{op['cost_us']}, {bool(op.get('blocking', False))}, "
             f"{tuple(tuple(f) for f in op['request'])!r}, {tuple(tuple(f) for f in op['reply'])!r}"
-            f"{ranges_source(op)}),"
+            f"{ranges_source(op)}{lengths_source(op)}),"
         )
     out += ["}", "OPS_BY_NAME = {op.name: op for op in OPS.values()}", ""]
     return "\n".join(out)
@@ -84,6 +89,16 @@ def ranges_source(op: dict) -> str:
     names = [name for name, _ in op["request"]]
     ranges = tuple((names.index(name), low, high, unit) for name, (low, high, unit) in op.get("ranges", {}).items())
     return f", {tuple(sorted(ranges))!r}" if ranges else ""
+
+
+def lengths(op: dict) -> tuple:
+    """The op's field length limits as (field index, most bytes), in request order."""
+    names = [name for name, _ in op["request"]]
+    return tuple(sorted((names.index(name), limit) for name, limit in op.get("lengths", {}).items()))
+
+
+def lengths_source(op: dict) -> str:
+    return f", lengths={lengths(op)!r}" if lengths(op) else ""
 
 
 def c_types(fields: list) -> str:
@@ -115,6 +130,15 @@ def c_source(spec: dict) -> str:
                    f"{len(op['reply'])}, {c_types(op['reply'])}}},")
     out.append("};")
     out.append(f"#define ES_OP_COUNT {len(spec['ops'])}")
+    out.append("")
+    out.append("/* Request fields longer than the simulator takes (protocol.json's \"lengths\"): refused before sending. */")
+    out.append("typedef struct {\n    uint16_t op;\n    uint8_t field;\n    uint32_t most;\n    const char *name;\n} es_length_limit;")
+    out.append("static const es_length_limit ES_LENGTH_LIMITS[] = {")
+    limits = [(op, index, most) for op in spec["ops"] for index, most in lengths(op)]
+    for op, index, most in limits:
+        out.append(f"    {{{op['code']}, {index}, {most}u, \"{op['request'][index][0]}\"}},")
+    out.append("};")
+    out.append(f"#define ES_LENGTH_LIMIT_COUNT {len(limits)}")
     out.append(f"static const es_type ES_ERROR_LAYOUT[] = {c_types(spec['error_payload'])};")
     out += ["", "#endif", ""]
     return "\n".join(out)

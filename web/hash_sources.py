@@ -10,6 +10,7 @@ WEB_DIR = Path(__file__).resolve().parent
 HASH_FILE = WEB_DIR.parent / "eyesim" / "web" / "static" / "source-hash.txt"
 TOP_LEVEL_SOURCES = (
     "index.html",
+    "robot-editor.html",
     "package.json",
     "package-lock.json",
     "tsconfig.json",

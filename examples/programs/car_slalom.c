@@ -1,4 +1,4 @@
-/* Car slalom: the Ackermann car (examples/robots/Car.robi) drives ahead, steering left and right
+/* Car slalom: the Ackermann car (the built-in Car, eyesim/data/robots/Car.robi) drives ahead, steering left and right
  * in turn. Motor 1 drives the rear axle; servo 1 steers: 0 = 45 deg left, 127 = ahead, 255 = right. */
 #include <stdio.h>
 #include "eyebot.h"

@@ -1,4 +1,4 @@
-/* Omni square: the mecanum robot (examples/robots/Mecanum.robi) drives a 600 mm square facing the
+/* Omni square: the mecanum robot (the built-in Mecanum, eyesim/data/robots/Mecanum.robi) drives a 600 mm square facing the
  * same way all along: back, right, ahead, left. Motors 1..4 = front left, front right, back left,
  * back right; each leg is measured with the encoders. */
 #include <stdlib.h>

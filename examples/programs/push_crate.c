@@ -1,4 +1,4 @@
-/* Push a crate: the Trolley (examples/robots/Trolley.robi) drives up to the crate ahead and
+/* Push a crate: the Trolley (the built-in Trolley, eyesim/data/robots/Trolley.robi) drives up to the crate ahead and
  * pushes it 600 mm further, then backs off. */
 #include <stdio.h>
 #include "eyebot.h"

@@ -1,4 +1,4 @@
-/* Submarine dive: Minnow (examples/robots/Minnow.robi) dives to 500 mm under the surface of its
+/* Submarine dive: Minnow (the built-in Minnow, eyesim/data/robots/Minnow.robi) dives to 500 mm under the surface of its
  * pool, holding that depth with its vertical thrusters (3 front, 4 back) while it cruises and
  * turns on its horizontal ones (1 left, 2 right), then surfaces. Depth comes from SIMGetRobot. */
 #include <stdio.h>

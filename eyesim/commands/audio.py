@@ -7,7 +7,9 @@ from eyesim.robot.components.analog_io import MICROPHONE, AnalogInputs
 from eyesim.robot.components.speaker import BEEP_HERTZ, BEEP_SECONDS, Speaker
 from eyesim.robot.sound_files import SoundError, sound_length
 
-MAX_SOUND_BYTES = 8 << 20  # as the C library's AUPlay reads at most (docs/api/audio.md)
+from eyesim.protocol import generated as g
+
+MAX_SOUND_BYTES = dict(g.OPS[g.OP_AU_PLAY].lengths)[1]  # protocol.json; the C library's AUPlay reads at most as much
 
 
 def _speaker(robot) -> Speaker:
@@ -23,8 +25,6 @@ def au_beep(sim, robot, request):
 def au_play(sim, robot, request):
     name, data = request.args
     speaker = _speaker(robot)
-    if len(data) > MAX_SOUND_BYTES:
-        raise CommandError(f"{name}: {len(data)} bytes is too large (at most {MAX_SOUND_BYTES >> 20} MB)")
     try:
         kind, seconds = sound_length(data)
     except SoundError as error:

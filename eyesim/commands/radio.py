@@ -3,7 +3,7 @@
 from eyesim.commands.errors import CommandError, require
 from eyesim.net.session import Pending
 from eyesim.protocol import generated as g
-from eyesim.robot.components.radio import MAX_MESSAGE, MAX_WAITING, Radio
+from eyesim.robot.components.radio import MAX_WAITING, Radio
 
 
 def _radio(robot) -> Radio:
@@ -33,8 +33,6 @@ def radio_send(sim, robot, request):
     if target is None or target.component(Radio) is None:
         ids = [r.id for r in sim.robots if r.component(Radio) is not None]
         raise CommandError(f"no robot {destination} to send to (robot ids: {ids})")
-    if len(message) > MAX_MESSAGE:
-        raise CommandError(f"the message has {len(message)} bytes; at most {MAX_MESSAGE} fit")
     if not target.component(Radio).deliver(robot.id, bytes(message)):
         raise CommandError(f"robot {destination} has {MAX_WAITING} unread messages; it takes no more")
     return (0,)

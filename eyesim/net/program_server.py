@@ -121,7 +121,7 @@ class ProgramConnection:
                                    f"programs may only send requests (kind {g.KIND_REQUEST}), not kind {message.kind}"))
             return
         try:
-            args = decode_payload(op.request, message.payload)
+            args = decode_payload(op.request, message.payload, op.lengths)
         except ProtocolError as error:
             self.send(encode_error(message.op, message.request_id, error.code, str(error)))
             return

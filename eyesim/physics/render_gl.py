@@ -130,6 +130,10 @@ class GlRenderer:
         self._jobs.put((world, view, done))
         return done.result()
 
+    def prepare(self, world, width: int, height: int) -> None:
+        """Make the world's GPU copy and an image buffer of this size before the first image."""
+        self._jobs.put((world, (width, height), None))
+
     # -- the render thread ---------------------------------------------------------------------
     def _run(self, ready: Future) -> None:
         try:
@@ -144,6 +148,12 @@ class GlRenderer:
         ready.set_result(None)
         while True:
             world, view, done = self._jobs.get()
+            if done is None:  # prepare
+                try:
+                    self._target(world).ensure_size(*view)
+                except Exception:  # the first image meets the same problem and reports it
+                    pass
+                continue
             try:
                 done.set_result(self._draw(world, view))
             except Exception as error:

@@ -14,6 +14,7 @@ _HEADER = struct.Struct("<HHI")  # op, kind, request id
 _I32 = struct.Struct("<i")
 _U32 = struct.Struct("<I")
 _F64 = struct.Struct("<d")
+SHARE_BUFFER_FROM = 64 * 1024  # frame bytes from which the decoder hands its buffer over rather than copy
 
 
 class ProtocolError(Exception):
@@ -28,7 +29,7 @@ class Message(NamedTuple):
     op: int
     kind: int
     request_id: int
-    payload: bytes
+    payload: bytes | memoryview  # a view into the received frame: decode_payload copies what it keeps
 
 
 def _encode_field(out: list[bytes], typ: str, value) -> None:
@@ -65,13 +66,18 @@ def encode_payload(layout: Sequence[tuple[str, str]], values: Sequence) -> bytes
     return b"".join(out)
 
 
-def decode_payload(layout: Sequence[tuple[str, str]], payload: bytes) -> tuple:
-    """Decode `payload` by `layout`; raises ProtocolError(BAD_PAYLOAD) on any mismatch."""
+def decode_payload(layout: Sequence[tuple[str, str]], payload: bytes | memoryview,
+                   lengths: Sequence[tuple[int, int]] = ()) -> tuple:
+    """Decode `payload` by `layout`; raises ProtocolError(BAD_PAYLOAD) on any mismatch, and
+    ProtocolError(BAD_ARGUMENT) for a field longer than `lengths` allows (an OpSpec's: (field
+    index, most bytes)), before it is decoded. Text is decoded straight from the payload (a
+    memoryview is not copied first); bytes are copied once."""
+    most = dict(lengths)
     values = []
     pos = 0
     end = len(payload)
     try:
-        for name, typ in layout:
+        for index, (name, typ) in enumerate(layout):
             if typ == "i32":
                 values.append(_I32.unpack_from(payload, pos)[0])
                 pos += 4
@@ -84,15 +90,17 @@ def decode_payload(layout: Sequence[tuple[str, str]], payload: bytes) -> tuple:
             else:
                 (n,) = _U32.unpack_from(payload, pos)
                 pos += 4
+                if n > most.get(index, n):
+                    raise ProtocolError(g.ERR_BAD_ARGUMENT, f"{name}: {n} bytes is too large (at most {most[index]})")
                 size = n * 4 if typ == "i32s" else n
                 if pos + size > end:
                     raise ProtocolError(g.ERR_BAD_PAYLOAD, f"field {name!r}: length {n} runs past the payload")
                 raw = payload[pos:pos + size]
                 pos += size
                 if typ == "str":
-                    values.append(raw.decode("utf-8"))
+                    values.append(str(raw, "utf-8"))
                 elif typ == "bytes":
-                    values.append(raw)
+                    values.append(bytes(raw))
                 else:
                     values.append(list(struct.unpack(f"<{n}i", raw)))
     except struct.error:
@@ -120,11 +128,11 @@ def encode_error(op: int, request_id: int, code: int, message: str) -> bytes:
     return encode_frame(op, g.KIND_ERROR, request_id, encode_payload(g.ERROR_PAYLOAD, (code, message)))
 
 
-def decode_body(body: bytes) -> Message:
+def decode_body(body: bytes | memoryview) -> Message:
     if len(body) < _HEADER.size:
         raise ProtocolError(g.ERR_BAD_FRAME, f"frame of {len(body)} bytes is shorter than its header")
     op, kind, request_id = _HEADER.unpack_from(body)
-    return Message(op, kind, request_id, body[_HEADER.size:])
+    return Message(op, kind, request_id, memoryview(body)[_HEADER.size:])
 
 
 class FrameDecoder:
@@ -150,6 +158,12 @@ class FrameDecoder:
                                     f"frame length {length} outside {_HEADER.size}..{self._max_frame}")
             if len(buf) - pos - 4 < length:
                 break
+            if pos == 0 and len(buf) == 4 + length and length > SHARE_BUFFER_FROM:
+                # A large frame alone in the buffer (as a 16 MiB one always is): hand the buffer
+                # itself over instead of copying it; the next frame starts a new one.
+                self._buffer = bytearray()
+                messages.append(decode_body(memoryview(buf)[4:]))
+                return messages
             messages.append(decode_body(bytes(buf[pos + 4:pos + 4 + length])))
             pos += 4 + length
         if pos:

@@ -15,6 +15,8 @@ class OpSpec(NamedTuple):
     reply: tuple[tuple[str, str], ...]
     # (request field index, low, high, unit): values outside are refused before any work
     ranges: tuple[tuple[int, int, int, str], ...] = ()
+    # (request field index, most bytes): a longer str or bytes field is refused while decoding
+    lengths: tuple[tuple[int, int], ...] = ()
 
     def out_of_range(self, args: tuple) -> str | None:
         """What is wrong with the request's values, or None when all are within their ranges."""

@@ -1,10 +1,17 @@
 """The recent past of a live run, kept by the viewer hub so a browser can pause and scrub back
 over it (docs/viewer.md, "Timeline"): snapshots with each robot's state, PSD readings, panel
-events and the encoded LCD and camera images, for the last HISTORY_SECONDS of simulation time."""
+events and the encoded LCD and camera images, for the last HISTORY_SECONDS of simulation time.
+
+Snapshots, states and PSD readings are kept compactly, as JSON text and arrays of numbers, and
+parsed again only when a browser looks back: kept as dicts and lists, a busy run's two minutes
+were millions of small objects that every pass of Python's garbage collector walked (pauses of
+up to a second for everyone; docs/performance.md, "Reliability")."""
 
 from __future__ import annotations
 
 import bisect
+import json
+from array import array
 from collections import defaultdict
 
 import numpy as np
@@ -15,6 +22,34 @@ HISTORY_SECONDS = 120
 MAX_IMAGES = 1500  # per robot and kind: bounds memory when a program redraws its LCD all the time
 MAX_CHUNKS = 2000  # console and serial chunks per robot: bounds memory when a program prints all the time
 TRIM_EVERY = 64  # snapshots between trims
+POSE = 7  # numbers per pose in a robot's track: x, y, z and the quaternion w, x, y, z
+
+
+class EncodedSamples:
+    """(time_us, message) samples in time order, each message kept as JSON text and parsed when
+    read: reads as a list of (time_us, dict) (eyesim/record/signals.py reads states and PSD so)."""
+
+    def __init__(self):
+        self.times = array("q")
+        self.texts: list[str] = []
+
+    def append(self, time_us: int, message: dict) -> None:
+        self.times.append(time_us)
+        self.texts.append(json.dumps(message, separators=(",", ":")))
+
+    def forget_before(self, time_us: int) -> None:
+        cut = bisect.bisect_left(self.times, time_us)
+        del self.times[:cut], self.texts[:cut]
+
+    def __len__(self) -> int:
+        return len(self.texts)
+
+    def __getitem__(self, index: int) -> tuple[int, dict]:
+        return self.times[index], json.loads(self.texts[index])
+
+    def __iter__(self):
+        for time_us, text in zip(self.times, self.texts):
+            yield time_us, json.loads(text)
 
 
 class LiveHistory:
@@ -23,10 +58,11 @@ class LiveHistory:
     def __init__(self, robot_ids: list[int], seconds: float = HISTORY_SECONDS):
         self.robot_ids = list(robot_ids)
         self.keep_us = round(seconds * 1e6)
-        self.times: list[int] = []
-        self.snapshots: list[dict] = []
-        self.states: dict[int, list[tuple[int, dict]]] = defaultdict(list)
-        self.psd: dict[int, list[tuple[int, dict]]] = defaultdict(list)
+        self.times = array("q")  # of the snapshots
+        self.snapshots: list[str] = []  # as JSON text
+        self.tracks: dict[int, tuple[array, array]] = defaultdict(lambda: (array("q"), array("d")))  # times, poses
+        self.states: dict[int, EncodedSamples] = defaultdict(EncodedSamples)
+        self.psd: dict[int, EncodedSamples] = defaultdict(EncodedSamples)
         self.events = EventIndex(MAX_CHUNKS)
         self.images: dict[tuple[int, str], list[tuple[int, object]]] = defaultdict(list)
         self._added = 0
@@ -45,9 +81,14 @@ class LiveHistory:
         if self.times and time_us < self.times[-1]:
             self.clear()  # time went back: a new simulation
         self.times.append(time_us)
-        self.snapshots.append(snapshot)
+        self.snapshots.append(json.dumps(snapshot, separators=(",", ":")))
+        for robot in snapshot["robots"]:
+            times, poses = self.tracks[robot["id"]]
+            times.append(time_us)
+            poses.extend(robot["pos"])
+            poses.extend(robot["quat"])
         for state in states:
-            self.states[state["robot"]].append((time_us, state))
+            self.states[state["robot"]].append(time_us, state)
         self._added += 1
         if self._added % TRIM_EVERY == 0:
             self._trim()
@@ -63,7 +104,7 @@ class LiveHistory:
             del images[:len(images) - MAX_IMAGES]
 
     def add_psd(self, robot_id: int, time_us: int, reading: dict) -> None:
-        self.psd[robot_id].append((time_us, reading))
+        self.psd[robot_id].append(time_us, reading)
 
     def clear(self) -> None:
         self.__init__(self.robot_ids, self.keep_us / 1e6)
@@ -72,9 +113,12 @@ class LiveHistory:
         oldest = self.times[-1] - self.keep_us
         cut = bisect.bisect_left(self.times, oldest)
         del self.times[:cut], self.snapshots[:cut]
+        for times, poses in self.tracks.values():
+            cut = bisect.bisect_left(times, oldest)
+            del times[:cut], poses[:cut * POSE]
         for table in (self.states, self.psd):
             for samples in table.values():
-                del samples[:bisect.bisect_left(samples, oldest, key=lambda s: s[0])]
+                samples.forget_before(oldest)
         for images in self.images.values():
             # keep the last image before the oldest time: it is what the LCD showed then
             del images[:max(0, bisect.bisect_right(images, oldest, key=lambda s: s[0]) - 1)]
@@ -84,12 +128,11 @@ class LiveHistory:
     def snapshot_at(self, time_us: int) -> dict | None:
         if not self.times:
             return None
-        return self.snapshots[max(0, bisect.bisect_right(self.times, time_us) - 1)]
+        return json.loads(self.snapshots[max(0, bisect.bisect_right(self.times, time_us) - 1)])
 
     def robot_track(self, robot_id: int):
-        rows = [[*r["pos"], *r["quat"]] for s in self.snapshots for r in s["robots"] if r["id"] == robot_id]
-        times = [t for t, s in zip(self.times, self.snapshots) if any(r["id"] == robot_id for r in s["robots"])]
-        return times, np.array(rows, dtype=float).reshape(len(rows), 7)
+        times, poses = self.tracks.get(robot_id, (array("q"), array("d")))
+        return list(times), np.frombuffer(poses, dtype=float).reshape(len(times), POSE).copy()
 
     def image_time(self, robot_id: int, kind: str, time_us: int) -> int | None:
         """None before the first image kept: images are only made while a browser watches."""

@@ -30,6 +30,7 @@ from eyesim.web import timeline
 from eyesim.web.access import AccessPolicy
 from eyesim.web.live_history import LiveHistory
 from eyesim.web.program_control import ProgramControl
+from eyesim.web.robot_editor import RobotEditor
 
 log = logging.getLogger("eyesim.web")
 CONSOLE_BACKLOG = 500  # console chunks per robot replayed to a browser that connects late
@@ -351,6 +352,8 @@ class ViewerServer:
         self.port = port
         self.access = AccessPolicy(host, token)
         self.hub: ViewerHub | None = None
+        # robot files the editor opens and saves stay under the folder the simulator started in
+        self.robot_editor = RobotEditor(self.run_folder)
         self._runner: web.AppRunner | None = None
 
     @property
@@ -370,6 +373,7 @@ class ViewerServer:
         app.router.add_get("/scene/mesh/{kind}/{id}", self._mesh)
         if self.launcher is not None:
             ProgramControl(self.sim, self.launcher, self.run_folder, self.hub.resend_scene).add_routes(app.router)
+        self.robot_editor.add_routes(app)
         app.router.add_get("/{path:.*}", static_file)
         self._runner, self.port = await serve_app(app, self.host, self.port)
 

@@ -241,6 +241,29 @@ static const es_op_layout ES_OP_LAYOUTS[] = {
     {4102, "SIM_GET_OBJECT_COUNT", 0, {ES_T_END}, 1, {ES_T_I32}},
 };
 #define ES_OP_COUNT 102
+
+/* Request fields longer than the simulator takes (protocol.json's "lengths"): refused before sending. */
+typedef struct {
+    uint16_t op;
+    uint8_t field;
+    uint32_t most;
+    const char *name;
+} es_length_limit;
+static const es_length_limit ES_LENGTH_LIMITS[] = {
+    {257, 0, 65536u, "text"},
+    {258, 2, 65536u, "text"},
+    {260, 0, 1024u, "key1"},
+    {260, 1, 1024u, "key2"},
+    {260, 2, 1024u, "key3"},
+    {260, 3, 1024u, "key4"},
+    {267, 1, 1024u, "label"},
+    {274, 7, 15116544u, "pixels"},
+    {1538, 1, 65536u, "data"},
+    {1794, 0, 4096u, "name"},
+    {1794, 1, 8388608u, "sound"},
+    {3843, 1, 1024u, "message"},
+};
+#define ES_LENGTH_LIMIT_COUNT 12
 static const es_type ES_ERROR_LAYOUT[] = {ES_T_I32, ES_T_STR};
 
 #endif

@@ -720,6 +720,15 @@ int es_call(const char *function, uint16_t op, const es_value *args, es_value *r
     free(kept_reply);
     kept_reply = NULL;
 
+    for (unsigned k = 0; k < ES_LENGTH_LIMIT_COUNT; k++) {
+        const es_length_limit *limit = &ES_LENGTH_LIMITS[k];
+        if (limit->op == op && args[limit->field].n > limit->most) {
+            fprintf(stderr, "eyesim: %s: %s of %u bytes is too large (the simulator takes at most %u)\n", function,
+                    limit->name, (unsigned)args[limit->field].n, (unsigned)limit->most);
+            return -1;
+        }
+    }
+
     waiter me = {.request_id = new_request_id()};
     es_buf frame = {0};
     int rc = es_encode_message(&frame, op, ES_KIND_REQUEST, me.request_id, args);

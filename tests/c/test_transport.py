@@ -401,3 +401,29 @@ def test_many_threads_get_their_own_replies(compiler, fake_sim):
     ids = [r.request_id for r in fake_sim.requests if r.op != "THREADS"]
     assert len(ids) == 8 * 300 and len(set(ids)) == len(ids)
     assert fake_sim.count("THREADS") == 1  # the library said once that several threads call
+
+
+TOO_LONG = r"""
+#include "eyebot.h"
+#include <stdio.h>
+#include <string.h>
+static char text[65538];
+int main(void)
+{
+    memset(text, 'x', 65537);
+    printf("long %d\n", LCDPrintf("%s", text));
+    text[65536] = 0;
+    printf("longest %d\n", LCDPrintf("%s", text));
+    return 0;
+}
+"""
+
+
+def test_a_field_longer_than_the_simulator_takes_is_refused_before_sending(compiler, fake_sim):
+    """protocol.json's lengths: LCDPrintf takes 64 KiB of text."""
+    fake_sim.script.update(LCD_PRINTF=(0,))
+    ran = run(compiler.build(TOO_LONG, name="too_long"), fake_sim.env())
+    assert (ran.returncode, ran.stdout) == (0, "long 1\nlongest 0\n")
+    assert eyesim_lines(ran.stderr) == [
+        "eyesim: LCDPrintf: text of 65537 bytes is too large (the simulator takes at most 65536)"]
+    assert fake_sim.count("LCD_PRINTF") == 1

@@ -2,6 +2,7 @@
 gets the sound; the microphone is analog channel 8."""
 
 import io
+import struct
 import time
 import wave
 
@@ -10,7 +11,7 @@ from support.client import RemoteError
 from support.connected import connected_program
 
 from eyesim.core import robot_input
-from eyesim.robot.sound_files import SoundError, sound_length
+from eyesim.robot.sound_files import FRAMES_WALKED, WAV_CHUNKS, SoundError, sound_length
 
 
 def wav_bytes(seconds: float, rate: int = 8000, channels: int = 1, width: int = 2) -> bytes:
@@ -88,6 +89,24 @@ def test_the_microphone_hears_what_analog_channel_8_is_set_to():
         client.call("OS_WAIT", 1)
         assert client.call("AU_MICROPHONE") == (900,)
         assert client.call("ANALOG_READ", 8) == (900,)
+
+
+def test_a_long_file_is_timed_from_its_first_frames():
+    """Past FRAMES_WALKED frames the rest is timed at their rate: exact at a constant bit rate,
+    and 8 MB of the smallest frames no longer walked frame by frame."""
+    frames = FRAMES_WALKED * 5
+    assert sound_length(mp3_bytes(frames))[1] == pytest.approx(frames * 1152 / 44100, rel=1e-3)
+    smallest = bytes([0xFF, 0xF3, 0x14, 0xC4]) + bytes(20)  # MPEG-2 layer III at 8 kbit/s, 24 kHz: 24 bytes
+    assert sound_length(smallest * 10)[1] == pytest.approx(10 * 576 / 24000)
+    assert sound_length(smallest * (FRAMES_WALKED * 3))[1] == pytest.approx(3 * FRAMES_WALKED * 576 / 24000)
+
+
+def test_a_wav_file_whose_data_chunk_is_not_among_its_first_chunks_is_refused():
+    padding = (b"junk" + struct.pack("<I", 2) + b"..") * WAV_CHUNKS
+    wav = wav_bytes(0.5)
+    assert sound_length(wav[:12] + padding[:10 * 10] + wav[12:])[1] == 0.5
+    with pytest.raises(SoundError, match="'data' chunk"):
+        sound_length(wav[:12] + padding + wav[12:])
 
 
 def test_a_frame_header_right_after_a_stray_sync_byte_is_found():

@@ -356,3 +356,21 @@ def test_distance_sensors(run_python):
     assert out["lidar"] == ["360", "True", "360"]
     assert out["set"] == ["0", "90"]
     assert out["psd"] == ["True", "True"]
+
+
+TOO_LONG = """
+    from eye import *
+
+    print("long", LCDPrintf("x" * 65537), SERSend(0, "y" * 65537))
+    print("longest", LCDPrintf("x" * 65536))
+"""
+
+
+def test_a_field_longer_than_the_simulator_takes_is_refused_with_its_limit(run_python):
+    """protocol.json's lengths, checked by the C library under eye before anything is sent."""
+    run = run_python(TOO_LONG)
+    assert_ended_cleanly(run)
+    out = run.output()
+    assert out["long"] == ["1", "1"] and out["longest"] == ["0"]
+    assert "eyesim: LCDPrintf: text of 65537 bytes is too large (the simulator takes at most 65536)" in run.results[1].stderr
+    assert "eyesim: SERSend: data of 65537 bytes is too large (the simulator takes at most 65536)" in run.results[1].stderr

@@ -7,7 +7,9 @@ from pathlib import Path
 from support.programs import read_trajectory, run_headless
 from support.rooms import Run, square_room, write_scene
 
-EXAMPLE_ROBOTS = Path(__file__).resolve().parents[2] / "examples" / "robots"
+from eyesim.scene import builtins
+
+EXAMPLE_ROBOTS = builtins.ROBOTS_DIR
 
 
 class Drive(Run):
@@ -32,7 +34,7 @@ class Drive(Run):
 def drive_scene(directory: Path, build, placements: list[str], robot_programs: dict[int, str], robots=(),
                 extra=(), size: int = 3000, wall_height: int = 300, timeout: float = 120) -> Drive:
     """Runs a headless scene in `directory`: a walled square floor of `size` mm, our example robots
-    `robots` (file names in examples/robots) loaded, `placements` and `extra` .sim lines, and the
+    `robots` (file names in eyesim/data/robots) loaded, `placements` and `extra` .sim lines, and the
     programs (names in tests/robot/programs) on the robots; returns the Drive."""
     world = square_room(size)
     if wall_height != 300:

@@ -13,12 +13,13 @@ from eyesim.web.server import ViewerServer
 
 
 @contextlib.contextmanager
-def viewer_simulation(scene, mode: str = "realtime"):
-    """Yield (sim, program port, viewer server) with everything running."""
+def viewer_simulation(scene, mode: str = "realtime", root=None):
+    """Yield (sim, program port, viewer server) with everything running; `root` is the scene
+    folder the robot editor opens and saves in (default: the current folder)."""
     with running_simulation(scene, mode) as (sim, port):
         io = IoThread()
         io.start()
-        server = ViewerServer(sim, io, "127.0.0.1", 0)
+        server = ViewerServer(sim, io, "127.0.0.1", 0, run_folder=root)
         server.start()
         try:
             yield sim, port, server

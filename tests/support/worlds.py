@@ -4,15 +4,14 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from eyesim.scene import load_object_type, load_robot_type
+from eyesim.scene import builtins, load_object_type, load_robot_type
 from eyesim.scene.description import ObjectPlacement, Pose, RobotPlacement, RobotType, Scene, Wall, World
 
-ROOT = Path(__file__).resolve().parents[2]
-EXAMPLE_ROBOTS = ROOT / "examples" / "robots"
+EXAMPLE_ROBOTS = builtins.ROBOTS_DIR
 
 
 def example_robot(name: str) -> RobotType:
-    """A robot type from examples/robots/<name>.robi."""
+    """A built-in robot type from its file (eyesim/data/robots/<name>.robi)."""
     return load_robot_type(str(EXAMPLE_ROBOTS / f"{name}.robi"))
 
 

@@ -17,6 +17,13 @@ LARGEST = g.MAX_FRAME - g.HEADER_SIZE - 4
 RANGE_MM, RANGE_DEG, RANGE_SPEED, RANGE_TURN = 10_000_000, 3_600_000, 100_000, 360_000
 
 
+def most(op: str, field: str) -> int:
+    """The longest a str or bytes field of `op` may be (protocol.json's lengths, else the frame's)."""
+    spec = g.OPS_BY_NAME[op]
+    index = [name for name, _ in spec.request].index(field)
+    return dict(spec.lengths).get(index, LARGEST)
+
+
 def big_text(size: int = LARGEST) -> str:
     """Text that makes the LCD work hardest per byte: line feeds and tabs scroll and pad."""
     return ("\t\n" * (size // 2 + 1))[:size]
@@ -37,19 +44,18 @@ def worst_requests(robot_id: int = 1):
     """(op name, arguments) for every operation but HELLO and THREADS (sent by the client's
     handshake), each at its worst; `robot_id` is the robot the program drives. The 16 MiB
     arguments are made one at a time, as they are taken (memory is measured meanwhile)."""
-    quarter = (LARGEST - 12) // 4
     steps = [
-        ("LCD_PRINTF", lambda: (big_text(),)),
-        ("LCD_SET_PRINTF", lambda: (0, 0, big_text(LARGEST - 8))),
+        ("LCD_PRINTF", lambda: (big_text(most("LCD_PRINTF", "text")),)),
+        ("LCD_SET_PRINTF", lambda: (0, 0, big_text(most("LCD_SET_PRINTF", "text")))),
         ("LCD_CLEAR", ()),
-        ("LCD_MENU", lambda: tuple(big_text(quarter) for _ in range(4))),
+        ("LCD_MENU", lambda: tuple(big_text(most("LCD_MENU", f"key{k}")) for k in range(1, 5))),
         ("LCD_SET_POS", (INT_MAX, INT_MIN)),
         ("LCD_GET_POS", ()),
         ("LCD_SET_COLOR", (INT_MAX, INT_MIN)),
         ("LCD_SET_FONT", (INT_MAX, INT_MIN)),
         ("LCD_SET_FONT_SIZE", (INT_MAX,)),
         ("LCD_SET_MODE", (INT_MAX,)),
-        ("LCD_MENU_I", lambda: (INT_MAX, big_text(LARGEST - 12), INT_MAX, INT_MIN)),
+        ("LCD_MENU_I", lambda: (INT_MAX, big_text(most("LCD_MENU_I", "label")), INT_MAX, INT_MIN)),
         ("LCD_GET_SIZE", ()),
         ("LCD_PIXEL", (INT_MAX, INT_MIN, INT_MAX)),
         ("LCD_GET_PIXEL", (INT_MAX, INT_MIN)),
@@ -59,8 +65,8 @@ def worst_requests(robot_id: int = 1):
         ("LCD_CIRCLE", (240, 160, INT_MAX, 0xFFFFFF, 1)),
         ("LCD_CIRCLE", (240, 160, INT_MAX, 0xFFFFFF, 0)),
         ("LCD_CIRCLE", (240, 160, 300, 0xFFFFFF, 0)),
-        # the largest colour image that fits a frame, shown over the whole LCD
-        ("LCD_IMAGE", lambda: (0, 0, 2364, 2364, INT_MAX, INT_MAX, 0, bytes(2364 * 2364 * 3))),
+        # the largest colour image (a 5-megapixel camera's), shown over the whole LCD
+        ("LCD_IMAGE", lambda: (0, 0, 2592, 1944, INT_MAX, INT_MAX, 0, bytes(most("LCD_IMAGE", "pixels")))),
         ("LCD_IMAGE", (0, 0, 480, 320, 480, 320, 0, bytes(480 * 320 * 3))),
         ("LCD_REFRESH", ()),
         ("KEY_GET", ()),
@@ -82,14 +88,14 @@ def worst_requests(robot_id: int = 1):
         ("TIMER_WAIT", ()),
         ("TIMER_DETACH", (INT_MAX,)),
         ("SER_INIT", (0, 230400, 1)),
-        ("SER_SEND", lambda: (0, big_bytes(LARGEST - 4))),
+        ("SER_SEND", lambda: (0, big_bytes(most("SER_SEND", "data")))),
         ("SER_RECEIVE_CHAR", (0,)),
         ("SER_RECEIVE", (0, INT_MAX)),
         ("SER_CHECK", (0,)),
         ("SER_FLUSH", (0,)),
         ("SER_CLOSE", (0,)),
         ("AU_BEEP", ()),
-        ("AU_PLAY", lambda: ("x", big_bytes(MAX_SOUND_BYTES))),
+        ("AU_PLAY", lambda: ("x" * most("AU_PLAY", "name"), big_bytes(MAX_SOUND_BYTES))),
         ("AU_PLAY", lambda: ("x", smallest_mp3_frames(MAX_SOUND_BYTES))),
         ("AU_DONE", ()),
         ("AU_MICROPHONE", ()),

@@ -6,6 +6,8 @@ import importlib.util
 import re
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).resolve().parents[2]
 STATIC_DIR = ROOT / "eyesim" / "web" / "static"
 
@@ -45,11 +47,12 @@ def test_hash_covers_every_source_and_its_path(tmp_path):
     assert hash_sources.source_hash(tmp_path) != before, "the lock file counts"
 
 
-def test_bundle_uses_relative_urls_and_has_no_source_maps():
-    page = (STATIC_DIR / "index.html").read_text()
-    urls = re.findall(r'(?:src|href)="([^"]+)"', page)
+@pytest.mark.parametrize("name", ["index.html", "robot-editor.html"])
+def test_bundle_uses_relative_urls_and_has_no_source_maps(name):
+    page = (STATIC_DIR / name).read_text()
+    urls = re.findall(r'<(?:script|link)[^>]*(?:src|href)="([^"]+)"', page)  # what the page loads, not its links
     assets = [url for url in urls if not url.startswith("data:")]
-    assert assets, "index.html loads the bundle"
+    assert assets, f"{name} loads the bundle"
     assert all(url.startswith("./assets/") for url in assets), assets
     for url in assets:
         assert (STATIC_DIR / url).is_file(), url

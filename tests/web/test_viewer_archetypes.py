@@ -11,10 +11,12 @@ from browser import open_viewer
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.programs import eyesim_command, simulator_with_viewer  # noqa: E402
 
+from eyesim.scene import builtins  # noqa: E402
+
 pytestmark = pytest.mark.browser
 
 ROOT = Path(__file__).resolve().parents[2]
-ROBOTS = ROOT / "examples" / "robots"
+ROBOTS = builtins.ROBOTS_DIR
 
 
 @pytest.fixture

@@ -19,7 +19,7 @@ from support.client import ProgramClient, RemoteError
 from support.viewer import run_async, viewer_simulation
 
 from eyesim.protocol.channel_schema import command_problem, server_message_problems
-from eyesim.scene import load_scene
+from eyesim.scene import builtins, load_scene
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 WATCH_SECONDS = 3.0
@@ -28,10 +28,10 @@ WATCH_SECONDS = 3.0
 @pytest.fixture
 def busy_scene(tmp_path):
     mecanum = tmp_path / "Mecanum.robi"  # with a line the loader warns about (the scene's `warnings`)
-    mecanum.write_text((EXAMPLES / "robots" / "Mecanum.robi").read_text() + "\nfrobnicate 1 2\n")
+    mecanum.write_text((builtins.ROBOTS_DIR / "Mecanum.robi").read_text() + "\nfrobnicate 1 2\n")
     scene = tmp_path / "busy.sim"
     scene.write_text(f"world {EXAMPLES / 'scenes' / 'land.wld'}\nsettings VIS TRACE\n"
-                     f"robi {EXAMPLES / 'robots' / 'Reacher.robi'}\nrobi {mecanum}\n"
+                     f"robi {builtins.ROBOTS_DIR / 'Reacher.robi'}\nrobi {mecanum}\n"
                      "S4 500 500 0\nS4 1500 500 90\nReacher 1500 1500 0\nMecanum 2400 1900 0\n"
                      "Can 1000 1000 0\nCrate 900 2600 0\n")
     return load_scene(str(scene))

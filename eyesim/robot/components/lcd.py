@@ -440,17 +440,19 @@ class Lcd(Component):
         if len(data) != width * height * channels:
             raise ValueError(f"a {width}x{height} image needs {width * height * channels} bytes, got {len(data)}")
         pixels = np.frombuffer(data, dtype=np.uint8).reshape(height, width, channels)
-        if image_format == IMAGE_BINARY:
-            pixels = np.where(pixels != 0, 0, 255).astype(np.uint8)  # 1 = black, 0 = white
-        if channels == 1:
-            pixels = np.repeat(pixels, 3, axis=2)
-        # Only the displayed pixels that land on the screen are looked up (nearest pixel).
+        # Only the displayed pixels that land on the screen are looked up (nearest pixel), and
+        # only they are converted: a 5-megapixel image shows at most the screen's 153 600.
         top, left = max(0, y), max(0, x)
         bottom, right = min(HEIGHT, y + display_height), min(WIDTH, x + display_width)
         if top < bottom and left < right:
             rows = [(row - y) * height // display_height for row in range(top, bottom)]
             cols = [(col - x) * width // display_width for col in range(left, right)]
-            self.pixels[top:bottom, left:right] = pixels[rows][:, cols]
+            shown = pixels[rows][:, cols]
+            if image_format == IMAGE_BINARY:
+                shown = np.where(shown != 0, 0, 255).astype(np.uint8)  # 1 = black, 0 = white
+            if channels == 1:
+                shown = np.repeat(shown, 3, axis=2)
+            self.pixels[top:bottom, left:right] = shown
             self._erase_text(left, top, right, bottom)
         self._changed()
 

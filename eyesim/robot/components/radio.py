@@ -4,9 +4,10 @@ from __future__ import annotations
 
 from collections import deque
 
+from eyesim.protocol import generated as g
 from eyesim.robot.component import Component
 
-MAX_MESSAGE = 1024  # bytes in one message
+MAX_MESSAGE = dict(g.OPS[g.OP_RADIO_SEND].lengths)[1]  # bytes in one message (protocol.json: longer ones are refused)
 MAX_WAITING = 1024  # messages a robot's inbox holds; sending to a full inbox fails
 
 
