@@ -53,6 +53,9 @@ def register(subparsers) -> None:
     parser.add_argument("--record-rate", type=float, default=None, metavar="HZ",
                         help="pose samples per simulated second in an .mcap recording (default 100)")
     parser.add_argument("--save-lcd", metavar="DIR", help="at the end, save each robot's LCD as DIR/robot<id>-lcd.png")
+    parser.add_argument("--scenes", action="append", default=[], metavar="DIR",
+                        help="another folder whose scene files the viewer's scene browser lists and may save into "
+                             "(besides the current folder and the bundled examples); repeatable")
     parser.add_argument("--open", action="store_true", help="open the viewer in a web browser")
     parser.add_argument("--verbose", "-v", action="store_true", help="log connections and internal events")
     parser.set_defaults(func=main)
@@ -181,6 +184,7 @@ def simulate(args) -> int:
         io = IoThread()
         io.start()
         viewer = ViewerServer(sim, io, args.host, args.viewer_port, launcher=launcher)
+        viewer.workspace = scene_workspace(sim, launcher, args)
         try:
             viewer.start()
         except OSError as error:
@@ -228,6 +232,25 @@ def simulate(args) -> int:
         for robot in sim.robots:
             print(status_line(robot, runs.get(robot.id)))
     return 1 if any(run.failed for run in launcher.runs) else 0
+
+
+def scene_workspace(sim, launcher, args):
+    """The viewer's scene browser and editor over the scene roots: the current folder, the
+    bundled examples (read-only) and every --scenes folder."""
+    from pathlib import Path
+
+    from eyesim.scene.builtins import SCENES_DIR
+    from eyesim.web.scene_files import SceneRoots
+    from eyesim.web.scene_workspace import SceneWorkspace
+
+    folders = [("current folder", Path.cwd(), True), ("examples", SCENES_DIR, False)]
+    for folder in args.scenes:
+        if not Path(folder).is_dir():
+            raise UsageError(f"--scenes {folder}: no such folder")
+        folders.append((folder, Path(folder), True))
+    workspace = SceneWorkspace(sim, launcher, SceneRoots(folders))
+    workspace.browse_at_start = args.scene is None and not args.program
+    return workspace
 
 
 def start_recorders(sim, args) -> list:

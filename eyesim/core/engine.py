@@ -78,8 +78,8 @@ class Simulation:
         self._build()
 
     # -- building ------------------------------------------------------------------------------
-    def _build(self) -> None:
-        built = build_world(self.scene, self.step_us / 1e6)
+    def _build(self, built=None) -> None:
+        built = built or build_world(self.scene, self.step_us / 1e6)
         self.world, self.floor, self.water = built.world, built.floor, built.water
         self.robots, self.objects, self.floating = built.robots, built.objects, built.floating
         # Only components that do something around a step are called every step (100 robots
@@ -100,6 +100,29 @@ class Simulation:
             for component in robot.components:
                 component.reset()
         self.events.reset()
+
+    def replace_scene(self, scene: Scene) -> None:
+        """Put another scene in place of this one (the viewer's scene browser and editor), on the
+        simulation thread: connected programs are disconnected (their robots are gone), the world
+        is built afresh and simulation time goes on. A scene the physics cannot build raises and
+        leaves the old one running."""
+        built = build_world(scene, self.step_us / 1e6)  # first: a failure changes nothing
+        self.shutdown_programs()
+        self.scene = scene
+        call_time_ms = scene.settings.call_time
+        self.call_time_us = DEFAULT_CALL_TIME_US if call_time_ms is None else round(call_time_ms * 1000)
+        self._build(built)
+        self._publish_again = True  # the new robots' LCD and camera images, whether they change or not
+        self.events.emit({"type": "new-scene"})
+
+    def shutdown_programs(self) -> None:
+        """Disconnect every program, keeping the port open for new ones."""
+        for session in list(self.sessions):
+            session.connection.close()
+            self.drop_session(session)
+        self.expected_programs.clear()
+        self._ready.clear()
+        self._held.clear()
 
     @property
     def time(self) -> float:

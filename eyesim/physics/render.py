@@ -139,7 +139,8 @@ def camera_renderer():
 
 def prepare(world, width: int = 0, height: int = 0) -> None:
     """Start the process's renderer and make `world` ready to draw at this size, on a thread of
-    its own: a camera calls it when it is built and at CAMInit, so that a program's first CAMGet
+    its own: a camera calls it at CAMInit (not when built: a run whose programs never use the camera
+    should not pay a second of CPU for an OpenGL context), so that a program's first CAMGet
     does not hold up the simulation thread (and every other program) while an OpenGL context is
     made and the world copied to it (740 ms)."""
     threading.Thread(target=_prepare, args=(world, width, height), name="eyesim-render-prepare", daemon=True).start()

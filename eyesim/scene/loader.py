@@ -394,6 +394,21 @@ def load_scene(path: str | Path) -> Scene:
     return dataclasses.replace(scene, warnings=diagnostics.warnings)
 
 
+def build_scene(document: SimDocument, scene_file: str | Path, world: World | None = None) -> Scene:
+    """The Scene of a scene document held in memory (the browser's scene editor), resolved
+    against `scene_file` as if it were that file. `world`, when given, is used in place of the
+    document's world reference (a world edited in memory, walls in world coordinates).
+    Raises SceneError like load_scene."""
+    paths.clear_cache()
+    diagnostics = Diagnostics()
+    loader = _SceneLoader(diagnostics)
+    if world is not None:
+        loader.scene_world = lambda document, scene_file: loader.finish_world(world, Path(world.source), {})
+    scene = loader.scene(document, Path(scene_file))
+    diagnostics.raise_if_errors()
+    return dataclasses.replace(scene, warnings=diagnostics.warnings)
+
+
 def load_world(path: str | Path) -> World:
     """The World of a .wld, .maz or world/maze .json file (texture resolved)."""
     paths.clear_cache()

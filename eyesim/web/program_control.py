@@ -27,7 +27,7 @@ from eyesim.programs.launcher import crash_reason
 from eyesim.robot.components.psd import PsdSensor
 from eyesim.viewer import messages
 from eyesim.web import program_files
-from eyesim.web.program_files import FileRefused
+from eyesim.web.scene_files import FileAccessError
 
 log = logging.getLogger("eyesim.web")
 COMPILE_SECONDS = 120  # a compiler that takes longer is stopped
@@ -201,7 +201,7 @@ class ProgramControl:
     def _file(self, body: dict, kinds: tuple[str, ...]) -> Path:
         try:
             path = program_files.resolve(self.roots(), body.get("root"), body.get("path"))
-        except FileRefused as error:
+        except FileAccessError as error:
             raise BadRequest(str(error)) from None
         kind = program_files.kind_of(path)
         if kind not in kinds:

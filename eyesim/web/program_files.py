@@ -7,8 +7,9 @@ with `..`, or leads (through a symbolic link) out of its root is refused with th
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
-from pathlib import Path, PurePosixPath
+from pathlib import Path
+
+from eyesim.web.scene_files import FileAccessError, Root, SceneRoots, confined
 
 SKIPPED_FOLDERS = {"__pycache__", "node_modules", ".git", ".venv"}
 MAX_DEPTH = 4  # folders below a root that the listing looks into
@@ -17,25 +18,13 @@ SOURCE_KINDS = {".c": "c", ".cc": "c++", ".cpp": "c++", ".cxx": "c++"}
 NOT_PROGRAMS = {".so", ".o", ".a", ".dylib", ".dll"}  # executable bits, but not something to run
 
 
-class FileRefused(ValueError):
-    """A path the page may not use, with the reason."""
-
-
-@dataclass(frozen=True)
-class Root:
-    name: str
-    path: Path
-
-
 def scene_roots(run_folder: Path, scene_source: str) -> list[Root]:
     """The run folder, then the scene's folder when it is another one."""
-    roots = [Root("run folder", run_folder.resolve())]
+    folders = [("run folder", run_folder, True)]
     scene_file = Path(scene_source)
     if scene_file.is_file():
-        folder = scene_file.parent.resolve()
-        if folder != roots[0].path:
-            roots.append(Root("scene folder", folder))
-    return roots
+        folders.append(("scene folder", scene_file.parent, True))
+    return SceneRoots(folders).roots
 
 
 def kind_of(path: Path) -> str | None:
@@ -71,23 +60,13 @@ def list_files(roots: list[Root]) -> list[dict]:
 
 
 def resolve(roots: list[Root], root: object, relative: object) -> Path:
-    """The real path of the file the page names, or FileRefused with why not."""
+    """The real path of the file the page names, or FileAccessError with why not."""
     if isinstance(root, bool) or not isinstance(root, int) or not 0 <= root < len(roots):
-        raise FileRefused(f"no scene root {root!r} (there are {len(roots)})")
-    if not isinstance(relative, str) or not relative or "\0" in relative or len(relative) > 1000:
-        raise FileRefused("expected a file path relative to the scene root")
-    parts = PurePosixPath(relative)
-    if parts.is_absolute() or relative.startswith("\\") or Path(relative).is_absolute():
-        raise FileRefused(f"{relative!r}: absolute paths are not allowed, only paths inside the scene root")
-    if ".." in parts.parts:
-        raise FileRefused(f"{relative!r}: '..' is not allowed, only paths inside the scene root")
-    base = roots[root].path
-    path = base / parts
-    if not _inside(path, base):
-        raise FileRefused(f"{relative!r} leads out of the scene root (a symbolic link)")
+        raise FileAccessError(f"no scene root {root!r} (there are {len(roots)})")
+    path = confined(roots[root].path, relative, "the scene root")
     if not path.is_file():
-        raise FileRefused(f"{relative!r}: no such file in {roots[root].name} {base}")
-    return path.resolve()
+        raise FileAccessError(f"{relative!r}: no such file in {roots[root].name} {roots[root].path}")
+    return path
 
 
 def locate(roots: list[Root], path: Path) -> dict | None:

@@ -45,6 +45,7 @@ from eyesim.scene.loader import read_document
 from eyesim.scene.robi import write_robi
 from eyesim.viewer import messages
 from eyesim.viewer.mesh_message import has_mesh, mesh_message
+from eyesim.web import scene_files
 
 log = logging.getLogger("eyesim.web")
 PREFIX = "/robot-editor/api"
@@ -72,19 +73,11 @@ class EditorError(Exception):
 
 # -- files under the root ----------------------------------------------------------------------
 def confined(root: Path, relative: str) -> Path:
-    """`relative` inside `root`, or EditorError: no absolute paths, no `..`, no links out."""
-    if not isinstance(relative, str) or not relative.strip():
-        raise EditorError("expected a file path relative to the scene folder")
-    path = Path(relative)
-    if path.is_absolute() or relative.startswith(("/", "\\")) or ":" in relative:
-        raise EditorError(f"{relative!r}: expected a path relative to the scene folder, not an absolute one")
-    if ".." in path.parts or ".." in relative.replace("\\", "/").split("/"):
-        raise EditorError(f"{relative!r}: '..' is not allowed: files stay inside the scene folder")
-    base = root.resolve()
-    full = (base / path).resolve()
-    if full != base and base not in full.parents:
-        raise EditorError(f"{relative!r} leads out of the scene folder (a symbolic link?)", 403)
-    return base / path
+    """`relative` inside `root`, or EditorError (403): no absolute paths, no `..`, no links out."""
+    try:
+        return scene_files.confined(root, relative, "the scene folder")
+    except scene_files.FileAccessError as error:
+        raise EditorError(str(error), 403) from None
 
 
 def robot_files(root: Path) -> list[str]:

@@ -139,7 +139,12 @@ class ViewerHub:
             return
         if kind in ("console", "serial") and len(message["text"]) > PANEL_CHARACTERS:
             message = dict(message, text=message["text"][-PANEL_CHARACTERS:])  # 16 MiB once cost 330 MB here
-        if kind == "reset":
+        if kind == "new-scene":  # another scene replaced the running one (scene browser, editor)
+            self._forget_scene()
+            message = messages.scene(self.sim, self._texture_url())
+            kind = "reset"
+            self.sim.call(_publish_io)
+        elif kind == "reset":
             message = messages.scene(self.sim, self._texture_url())
             self.sim.call(_publish_io)
         else:
@@ -160,6 +165,16 @@ class ViewerHub:
             return
         for browser in self.browsers if kind == "reset" else self._following():
             browser.add_event(text)
+
+    def _forget_scene(self) -> None:
+        """What the panels showed of the old scene's robots, and its history, go with it."""
+        for cache in (self.lcd, self.cameras, self.menus, self.programs, self.console, self.io, self.serial):
+            cache.clear()
+        self.latest_snapshot = None
+        self.history = LiveHistory([r.id for r in self.sim.robots])
+        for browser in self.browsers:
+            browser.reviewing = False
+            browser.cursor = timeline.FrameCursor()
 
     def _snapshot(self, message: dict, status: dict, states: list[dict]) -> None:
         wall, sim_time, rate = self._rate
@@ -354,6 +369,7 @@ class ViewerServer:
         self.hub: ViewerHub | None = None
         # robot files the editor opens and saves stay under the folder the simulator started in
         self.robot_editor = RobotEditor(self.run_folder)
+        self.workspace = None  # the scene browser and editor (scene_workspace.py), set before start
         self._runner: web.AppRunner | None = None
 
     @property
@@ -374,6 +390,8 @@ class ViewerServer:
         if self.launcher is not None:
             ProgramControl(self.sim, self.launcher, self.run_folder, self.hub.resend_scene).add_routes(app.router)
         self.robot_editor.add_routes(app)
+        if self.workspace is not None:
+            self.workspace.add_routes(app)
         app.router.add_get("/{path:.*}", static_file)
         self._runner, self.port = await serve_app(app, self.host, self.port)
 

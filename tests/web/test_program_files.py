@@ -5,7 +5,7 @@ import os
 import pytest
 
 from eyesim.web import program_files
-from eyesim.web.program_files import FileRefused, Root
+from eyesim.web.scene_files import FileAccessError, Root
 
 
 def executable(path, text="#!/bin/sh\n"):
@@ -50,11 +50,11 @@ def test_resolve_names_a_file_inside_its_root_or_says_why_not(tmp_path):
                                       (0, "link", "leads out of the scene root"),
                                       (0, "sub", "no such file"),
                                       (0, "", "expected a file path"),
-                                      (0, "a\0b", "expected a file path"),
+                                      (0, "a\0b", "has a NUL character"),
                                       (0, 5, "expected a file path"),
                                       (1, "sub/drive", "no scene root 1"),
                                       (True, "sub/drive", "no scene root True")]:
-        with pytest.raises(FileRefused, match=reason):
+        with pytest.raises(FileAccessError, match=reason):
             program_files.resolve(roots, root_number, path)
 
 

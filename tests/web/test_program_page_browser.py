@@ -56,7 +56,7 @@ def folder(tmp_path):
 
 
 def test_compile_start_stop_and_restart_from_the_page(browser_context, folder):
-    with simulator_with_viewer(cwd=folder) as (_, url):
+    with simulator_with_viewer("default", cwd=folder) as (_, url):  # a scene named: no scene browser over the page
         viewer = open_viewer(browser_context, url)
         page = viewer.page
         panel = robot_panel(page, 1)
@@ -98,7 +98,7 @@ def test_compile_start_stop_and_restart_from_the_page(browser_context, folder):
 
 
 def test_a_crash_and_a_traceback_show_why_the_program_ended(browser_context, folder):
-    with simulator_with_viewer(cwd=folder) as (_, url):
+    with simulator_with_viewer("default", cwd=folder) as (_, url):  # a scene named: no scene browser over the page
         viewer = open_viewer(browser_context, url)
         page = viewer.page
         panel = robot_panel(page, 1)
@@ -122,7 +122,7 @@ def test_a_crash_and_a_traceback_show_why_the_program_ended(browser_context, fol
 
 
 def test_settings_from_the_page_take_effect(browser_context, folder):
-    with simulator_with_viewer(cwd=folder) as (_, url):
+    with simulator_with_viewer("default", cwd=folder) as (_, url):  # a scene named: no scene browser over the page
         viewer = open_viewer(browser_context, url)
         page = viewer.page
         page.wait_for_function("() => window.eyesimViewer.raySegments() > 0")  # the arena has VIS

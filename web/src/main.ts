@@ -2,6 +2,7 @@
 
 import "./style.css";
 import { installDebugHandle } from "./debug_handle";
+import { SceneEditor } from "./editor/scene_editor";
 import { Viewer } from "./viewer";
 
 function byId(id: string): HTMLElement {
@@ -18,4 +19,7 @@ const viewer = new Viewer({
   panels: byId("robots"),
 });
 installDebugHandle(viewer);
+const layout = byId("world").closest("main") ?? document.body;
+// the scene browser and editor: also a handle for tests, as window.eyesimViewer is for the view
+(window as unknown as { eyesimEditor: SceneEditor }).eyesimEditor = new SceneEditor(viewer, byId("toolbar"), layout, byId("world"));
 viewer.start();

@@ -15,6 +15,7 @@ import {
   type ServerMessage,
   type StatusMessage,
 } from "./protocol";
+import type { PickTarget } from "./interaction";
 import type { RobotPanel } from "./robot_panel";
 import { SceneWarnings } from "./scene_warnings";
 import { SettingsPanel } from "./settings_panel";
@@ -50,6 +51,12 @@ export class Viewer {
   readonly settings: SettingsPanel;
   private readonly toolbar: Toolbar;
   private readonly videoButton: HTMLButtonElement;
+  /** Called with every command the page sends (the scene editor turns drags into edits). */
+  readonly commandWatchers: ((command: BrowserCommand) => void)[] = [];
+  /** Called with what a click in the 3D view picked (the scene editor selects it). */
+  readonly pickWatchers: ((target: PickTarget) => void)[] = [];
+  /** Called with every new scene. */
+  readonly sceneWatchers: ((scene: SceneMessage) => void)[] = [];
   private lastScene: SceneMessage | null = null;
   private lastStatus: StatusMessage | null = null;
   private ignored = 0;
@@ -58,7 +65,10 @@ export class Viewer {
   private pathsWanted = false;
 
   constructor(elements: ViewerElements) {
-    const send = (command: BrowserCommand) => this.connection.send(command);
+    const send = (command: BrowserCommand) => {
+      for (const watch of this.commandWatchers) watch(command);
+      return this.connection.send(command);
+    };
     this.toolbar = new Toolbar(elements.toolbar, send);
     this.panels = new PanelList(elements.panels, send);
     this.warnings = new SceneWarnings(elements.toolbar);
@@ -66,6 +76,7 @@ export class Viewer {
       elements.world,
       send,
       (target) => {
+        for (const watch of this.pickWatchers) watch(target);
         // A click on a robot opens its panel; with the plots open, it plots the robot too.
         if (target.kind === "robot") this.panels.select(target.id);
         if (target.kind === "robot" && this.plots.visible) this.plots.pickRobot(target.id);
@@ -163,6 +174,7 @@ export class Viewer {
         this.warnings.show(message.warnings);
         this.plots.reset();
         if (this.reviewing) this.requestPaths();
+        for (const watch of this.sceneWatchers) watch(message);
         break;
       case "snapshot":
         this.snapshots.push(message, performance.now());

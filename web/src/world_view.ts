@@ -6,7 +6,10 @@ import {
   HemisphereLight,
   Object3D,
   PerspectiveCamera,
+  Plane,
+  Raycaster,
   Scene,
+  Vector2,
   Vector3,
   WebGLRenderer,
 } from "three";
@@ -271,6 +274,20 @@ export class WorldView {
   /** Where a world point appears on the page, in CSS pixels; null without WebGL. */
   screenPosition(x: number, y: number, z: number): { x: number; y: number } | null {
     return this.pageOf(new Vector3(x, y, z).applyMatrix4(this.root.matrixWorld));
+  }
+
+  /** The floor point (world metres, z up) under a page position; null without WebGL or above the horizon. */
+  floorPointAt(clientX: number, clientY: number): { x: number; y: number } | null {
+    const canvas = this.canvas;
+    if (!canvas) return null;
+    const rect = canvas.getBoundingClientRect();
+    const ndc = new Vector2(((clientX - rect.left) / rect.width) * 2 - 1, 1 - ((clientY - rect.top) / rect.height) * 2);
+    const raycaster = new Raycaster();
+    raycaster.setFromCamera(ndc, this.camera);
+    this.root.updateMatrixWorld();
+    const ray = raycaster.ray.clone().applyMatrix4(this.root.matrixWorld.clone().invert());
+    const point = ray.intersectPlane(new Plane(new Vector3(0, 0, 1), 0), new Vector3());
+    return point ? { x: point.x, y: point.y } : null;
   }
 
   /** Draws a frame if anything moved since the last one. */

@@ -44,10 +44,6 @@ class Camera(Component):
             events.camera(robot_id, self.image)
 
     # -- set-up ----------------------------------------------------------------------------
-    def bind(self, world) -> None:
-        super().bind(world)
-        render.prepare(world)
-
     def start(self, width: int, height: int) -> None:
         self.size = (width, height)
         render.prepare(self.world, width, height)

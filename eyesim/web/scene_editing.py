@@ -1,0 +1,377 @@
+"""The scene the viewer's editor works on, the edit operations on it, and saving it.
+
+A `Draft` is a scene description in the shape of a .sim file (eyesim/scene/sim.py): a world,
+the robot and object definition files, robots and objects placed at explicit poses, markers and
+settings, every file as an absolute path. Each edit makes a new Draft; `Draft.scene()` turns it
+into a Scene through the loader, exactly as a file would be (eyesim.scene.loader.build_scene),
+so an edit the loader refuses is refused with its reasons and the scene stays as it was.
+Saving writes the same description as .sim (+ .wld when the world was edited) or as JSON."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+from eyesim.scene import builtins
+from eyesim.scene.description import Marker, Pose, Scene, Settings, Wall, World
+from eyesim.scene.json_format import dumps, to_json
+from eyesim.scene.loader import build_scene, load_object_type, load_robot_type
+from eyesim.scene.sim import Placement, Reference, SimDocument, write_sim
+from eyesim.scene.wld import write_wld
+
+MAX_COORDINATE = 100_000.0  # mm: a hundred metres is far past any floor
+MIN_FLOOR, MAX_FLOOR = 100.0, 100_000.0  # mm
+DUPLICATE_OFFSET = 150.0  # mm a copy is placed beside its original
+
+
+class EditError(ValueError):
+    """An edit that cannot be made, with the reason (the scene stays as it was)."""
+
+
+@dataclass(frozen=True)
+class RobotItem:
+    type_name: str
+    pose: Pose
+    program: str | None = None  # absolute path (or as the scene wrote it when it was not found)
+
+
+@dataclass(frozen=True)
+class ObjectItem:
+    type_name: str
+    pose: Pose
+    model: str | None = None  # an EyeSim 6 obstacle from a 3-D model file (absolute path)
+    friction: float | None = None
+
+
+@dataclass(frozen=True)
+class Draft:
+    """A scene being edited. `world_file` is the world file the scene names while its world is
+    unchanged (its walls, balls and markers stay in it); once the world is edited it is None and
+    the world's things are the draft's own."""
+
+    file: Path  # where the scene is (or will be saved); references resolve from here
+    world: World
+    world_file: Path | None = None
+    settings: Settings = Settings()
+    robot_files: tuple[str, ...] = ()
+    object_files: tuple[str, ...] = ()
+    robots: tuple[RobotItem, ...] = ()
+    objects: tuple[ObjectItem, ...] = ()  # after the world's own objects (while world_file is set)
+    markers: tuple[Marker, ...] = ()  # after the world's own markers
+
+    # -- to and from the scene description --------------------------------------------------
+    @classmethod
+    def of_scene(cls, scene: Scene) -> "Draft":
+        """The draft of a loaded scene (a .sim, or a bare world file opened as a scene)."""
+        file = Path(scene.source)
+        world_source = Path(scene.world.source)
+        world_file = world_source if world_source.is_file() and world_source.suffix.lower() != ".sim" else None
+        world = scene.world
+        robot_files = tuple(t.source for name, t in scene.robot_types.items()
+                            if not _is_builtin(builtins.robot_path(name), t.source) and Path(t.source).is_file())
+        object_files, models = [], {}
+        for name, t in scene.object_types.items():
+            if _is_builtin(builtins.object_path(name), t.source):
+                continue
+            if Path(t.source).suffix.lower() in (".esobj", ".json") and Path(t.source).is_file():
+                object_files.append(t.source)
+            else:  # an obstacle named by its model file
+                models[name] = t.model or t.source
+        robots = tuple(RobotItem(r.type_name, r.pose, r.program) for r in scene.robots)
+        own_objects = scene.objects[len(world.objects):]
+        objects = tuple(ObjectItem(o.type_name, o.pose, models.get(o.type_name), o.friction) for o in own_objects)
+        draft = cls(file, world, world_file, scene.settings, robot_files, tuple(object_files), robots, objects,
+                    scene.markers[len(world.markers):])
+        if world_file is None:
+            draft = draft.with_own_world()
+        return draft
+
+    def document(self) -> SimDocument:
+        """The .sim document of this draft, every file by absolute path."""
+        placements = [Placement(type_name=r.type_name, x=r.pose.x, y=r.pose.y, phi=r.pose.phi, program=r.program)
+                      for r in self.robots]
+        for o in self.objects:
+            if o.model is not None:
+                placements.append(Placement(model=o.model, x=o.pose.x, y=o.pose.y, phi=o.pose.phi,
+                                            friction=o.friction or 0.0))
+            else:
+                placements.append(Placement(type_name=o.type_name, x=o.pose.x, y=o.pose.y, phi=o.pose.phi))
+        return SimDocument(str(self.file), Reference(str(self.world_file)) if self.world_file else None,
+                           self.settings, tuple(Reference(p) for p in self.robot_files),
+                           tuple(Reference(p) for p in self.object_files), tuple(placements), self.markers)
+
+    def scene(self) -> Scene:
+        """The Scene this draft describes, through the loader; SceneError when it refuses it."""
+        return build_scene(self.document(), self.file, self.world)
+
+    def with_own_world(self) -> "Draft":
+        """The world made the draft's own (about to be edited): its balls and markers become
+        the scene's, and it is saved with the scene instead of being named."""
+        world = self.world
+        if self.world_file is None and not (world.objects or world.markers or world.start_positions):
+            return self
+        balls = tuple(ObjectItem(o.type_name, o.pose, None, o.friction) for o in world.objects)
+        own = dataclasses.replace(world, source=str(self.file), objects=(), markers=(), start_positions=(),
+                                  start_pose=None)
+        return dataclasses.replace(self, world=own, world_file=None, objects=balls + self.objects,
+                                   markers=world.markers + self.markers)
+
+    # -- what the browser shows --------------------------------------------------------------
+    def items(self) -> dict:
+        """The editable things, numbered as edits name them: objects and markers counting the
+        world's own first (as the simulator numbers them)."""
+        world_objects = [{"type": o.type_name, "x": o.pose.x, "y": o.pose.y, "phi": o.pose.phi, "world": True}
+                         for o in self.world.objects]
+        return {
+            "robots": [{"type": r.type_name, "x": r.pose.x, "y": r.pose.y, "phi": r.pose.phi,
+                        "program": r.program} for r in self.robots],
+            "objects": world_objects + [{"type": o.type_name, "x": o.pose.x, "y": o.pose.y, "phi": o.pose.phi,
+                                         "world": False} for o in self.objects],
+            "markers": [{"x": m.x, "y": m.y, "color": list(m.color)} for m in (*self.world.markers, *self.markers)],
+            "walls": [{"x1": w.x1, "y1": w.y1, "x2": w.x2, "y2": w.y2} for w in self.world.walls],
+            "floor": {"width": self.world.floor_width, "height": self.world.floor_height},
+        }
+
+
+def _is_builtin(builtin: Path | None, source: str) -> bool:
+    return builtin is not None and Path(source).resolve() == builtin.resolve()
+
+
+# -- edit operations --------------------------------------------------------------------------
+def apply(draft: Draft, op: dict, locate) -> Draft:
+    """The draft after the edit `op` (a JSON object from the browser); EditError when it is
+    malformed. `locate(place)` turns a {"root", "path"} object into a confined absolute Path."""
+    if not isinstance(op, dict) or not isinstance(op.get("op"), str):
+        raise EditError('expected an edit object with "op"')
+    handler = OPERATIONS.get(op["op"])
+    if handler is None:
+        raise EditError(f"unknown edit {op['op']!r}: expected one of {', '.join(OPERATIONS)}")
+    return handler(draft, op, locate)
+
+
+def _number(op: dict, key: str, low: float = -MAX_COORDINATE, high: float = MAX_COORDINATE,
+            default: float | None = None) -> float:
+    value = op.get(key, default)
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise EditError(f"{op.get('op')}: {key} must be a number, not {value!r}")
+    if not low <= value <= high:
+        raise EditError(f"{op.get('op')}: {key} {value:g} is outside {low:g} .. {high:g}")
+    return float(value)
+
+
+def _pose(op: dict) -> Pose:
+    phi = _number(op, "phi", -1e6, 1e6, 0.0)
+    return Pose(_number(op, "x"), _number(op, "y"), (phi + 180.0) % 360.0 - 180.0)
+
+
+def _index(op: dict, count: int, what: str) -> int:
+    index = op.get("index")
+    if isinstance(index, bool) or not isinstance(index, int) or not 0 <= index < count:
+        raise EditError(f"{op.get('op')}: no {what} number {index!r} (there are {count})")
+    return index
+
+
+def _kind(op: dict) -> str:
+    kind = op.get("kind")
+    if kind not in ("robot", "object", "marker", "wall"):
+        raise EditError(f"{op.get('op')}: kind must be robot, object, marker or wall, not {kind!r}")
+    return kind
+
+
+def add_robot(draft: Draft, op: dict, locate) -> Draft:
+    robot_files = draft.robot_files
+    if isinstance(op.get("file"), dict):  # a .robi file under the roots
+        path = locate(op["file"])
+        name = _definition(load_robot_type, path).name
+        if str(path) not in robot_files:
+            robot_files += (str(path),)
+    elif isinstance(op.get("type"), str) and builtins.robot_path(op["type"]) is not None:
+        name = builtins.robot_path(op["type"]).stem
+    else:
+        raise EditError(f"add-robot: unknown robot type {op.get('type')!r}: expected one of "
+                        f"{', '.join(builtins.robot_names())} or a .robi file")
+    program = str(locate(op["program"])) if isinstance(op.get("program"), dict) else None
+    return dataclasses.replace(draft, robot_files=robot_files,
+                               robots=draft.robots + (RobotItem(name, _pose(op), program),))
+
+
+def add_object(draft: Draft, op: dict, locate) -> Draft:
+    object_files = draft.object_files
+    if isinstance(op.get("file"), dict):  # an .esObj file under the roots
+        path = locate(op["file"])
+        name = _definition(load_object_type, path).name
+        if str(path) not in object_files:
+            object_files += (str(path),)
+    elif isinstance(op.get("type"), str) and builtins.object_path(op["type"]) is not None:
+        name = builtins.object_path(op["type"]).stem
+    else:
+        raise EditError(f"add-object: unknown object type {op.get('type')!r}: expected one of "
+                        f"{', '.join(builtins.object_names())} or an .esObj file")
+    return dataclasses.replace(draft, object_files=object_files,
+                               objects=draft.objects + (ObjectItem(name, _pose(op)),))
+
+
+def add_marker(draft: Draft, op: dict, locate) -> Draft:
+    color = op.get("color", [255, 0, 0])
+    if not (isinstance(color, list) and len(color) in (3, 4) and
+            all(isinstance(c, int) and not isinstance(c, bool) and 0 <= c <= 255 for c in color)):
+        raise EditError(f"add-marker: color must be 3 or 4 whole numbers 0-255, not {color!r}")
+    marker = Marker(_number(op, "x"), _number(op, "y"), tuple(color) if len(color) == 4 else (*color, 255))
+    return dataclasses.replace(draft, markers=draft.markers + (marker,))
+
+
+def add_wall(draft: Draft, op: dict, locate) -> Draft:
+    wall = Wall(_number(op, "x1"), _number(op, "y1"), _number(op, "x2"), _number(op, "y2"))
+    if (wall.x1, wall.y1) == (wall.x2, wall.y2):
+        raise EditError("add-wall: the wall has no length (both ends at the same point)")
+    draft = draft.with_own_world()
+    return dataclasses.replace(draft, world=dataclasses.replace(draft.world, walls=draft.world.walls + (wall,)))
+
+
+def move(draft: Draft, op: dict, locate) -> Draft:
+    """x, y (mm) and phi (deg) of a robot, object or marker; x1 y1 x2 y2 of a wall."""
+    kind = _kind(op)
+    if kind == "robot":
+        index = _index(op, len(draft.robots), "robot")
+        robots = list(draft.robots)
+        robots[index] = dataclasses.replace(robots[index], pose=_pose(op))
+        return dataclasses.replace(draft, robots=tuple(robots))
+    draft = _owning(draft, kind, op)
+    if kind == "object":
+        index = _index(op, len(draft.objects), "object")
+        objects = list(draft.objects)
+        objects[index] = dataclasses.replace(objects[index], pose=_pose(op))
+        return dataclasses.replace(draft, objects=tuple(objects))
+    if kind == "marker":
+        index = _index(op, len(draft.markers), "marker")
+        markers = list(draft.markers)
+        markers[index] = dataclasses.replace(markers[index], x=_number(op, "x"), y=_number(op, "y"))
+        return dataclasses.replace(draft, markers=tuple(markers))
+    index = _index(op, len(draft.world.walls), "wall")
+    walls = list(draft.world.walls)
+    walls[index] = dataclasses.replace(walls[index], x1=_number(op, "x1"), y1=_number(op, "y1"),
+                                       x2=_number(op, "x2"), y2=_number(op, "y2"))
+    return dataclasses.replace(draft, world=dataclasses.replace(draft.world, walls=tuple(walls)))
+
+
+def delete(draft: Draft, op: dict, locate) -> Draft:
+    kind = _kind(op)
+    if kind == "robot":
+        index = _index(op, len(draft.robots), "robot")
+        return dataclasses.replace(draft, robots=draft.robots[:index] + draft.robots[index + 1:])
+    draft = _owning(draft, kind, op)
+    if kind == "object":
+        index = _index(op, len(draft.objects), "object")
+        return dataclasses.replace(draft, objects=draft.objects[:index] + draft.objects[index + 1:])
+    if kind == "marker":
+        index = _index(op, len(draft.markers), "marker")
+        return dataclasses.replace(draft, markers=draft.markers[:index] + draft.markers[index + 1:])
+    index = _index(op, len(draft.world.walls), "wall")
+    walls = draft.world.walls[:index] + draft.world.walls[index + 1:]
+    return dataclasses.replace(draft, world=dataclasses.replace(draft.world, walls=walls))
+
+
+def duplicate(draft: Draft, op: dict, locate) -> Draft:
+    """A copy beside the original (robots, objects and markers), appended to its list."""
+    kind = _kind(op)
+    if kind == "robot":
+        original = draft.robots[_index(op, len(draft.robots), "robot")]
+        pose = Pose(original.pose.x + DUPLICATE_OFFSET, original.pose.y, original.pose.phi)
+        return dataclasses.replace(draft, robots=draft.robots + (dataclasses.replace(original, pose=pose),))
+    draft = _owning(draft, kind, op)
+    if kind == "object":
+        original = draft.objects[_index(op, len(draft.objects), "object")]
+        pose = Pose(original.pose.x + DUPLICATE_OFFSET, original.pose.y, original.pose.phi)
+        return dataclasses.replace(draft, objects=draft.objects + (dataclasses.replace(original, pose=pose),))
+    if kind == "marker":
+        original = draft.markers[_index(op, len(draft.markers), "marker")]
+        copy = dataclasses.replace(original, x=original.x + DUPLICATE_OFFSET)
+        return dataclasses.replace(draft, markers=draft.markers + (copy,))
+    original = draft.world.walls[_index(op, len(draft.world.walls), "wall")]
+    copy = dataclasses.replace(original, y1=original.y1 + DUPLICATE_OFFSET, y2=original.y2 + DUPLICATE_OFFSET)
+    return dataclasses.replace(draft, world=dataclasses.replace(draft.world, walls=draft.world.walls + (copy,)))
+
+
+def set_floor(draft: Draft, op: dict, locate) -> Draft:
+    draft = draft.with_own_world()
+    world = dataclasses.replace(draft.world, floor_width=_number(op, "width", MIN_FLOOR, MAX_FLOOR),
+                                floor_height=_number(op, "height", MIN_FLOOR, MAX_FLOOR))
+    return dataclasses.replace(draft, world=world)
+
+
+def set_program(draft: Draft, op: dict, locate) -> Draft:
+    """The program a robot runs: a file under the roots, or none (`program: null`)."""
+    index = _index(op, len(draft.robots), "robot")
+    program = op.get("program")
+    if program is not None and not isinstance(program, dict):
+        raise EditError('set-program: program must be {"root": n, "path": "..."} or null')
+    path = locate(program) if program is not None else None
+    if path is not None and not path.is_file():
+        raise EditError(f"set-program: no program file {program.get('path')!r}")
+    robots = list(draft.robots)
+    robots[index] = dataclasses.replace(robots[index], program=str(path) if path else None)
+    return dataclasses.replace(draft, robots=tuple(robots))
+
+
+def _owning(draft: Draft, kind: str, op: dict) -> Draft:
+    """Edits of walls and of the world's own balls and markers make the world the draft's own;
+    item numbers then stay the same (the world's things come first)."""
+    if kind == "wall" or (kind == "object" and draft.world.objects) or (kind == "marker" and draft.world.markers):
+        return draft.with_own_world()
+    return draft
+
+
+def _definition(load, path: Path):
+    from eyesim.scene import SceneError
+
+    try:
+        return load(path)
+    except SceneError as error:
+        raise EditError("; ".join(str(d) for d in error.errors) or str(error)) from None
+    except OSError as error:
+        raise EditError(f"cannot read {path.name}: {error.strerror}") from None
+
+
+OPERATIONS = {"add-robot": add_robot, "add-object": add_object, "add-marker": add_marker, "add-wall": add_wall,
+              "move": move, "delete": delete, "duplicate": duplicate, "set-floor": set_floor,
+              "set-program": set_program}
+
+
+# -- saving -----------------------------------------------------------------------------------
+def saved_files(draft: Draft, target: Path, as_json: bool) -> dict[Path, str]:
+    """The files (path -> text) that save the draft at `target`: the scene, and its world when
+    the draft has its own (`<name>.wld`, or `<name>.world.json` for JSON). References are written
+    relative to the target's folder."""
+    folder = target.parent
+    files: dict[Path, str] = {}
+    world_file = draft.world_file
+    if world_file is None and (draft.world.walls or draft.world.floor_width or draft.world.floor_texture):
+        stem = target.name[:-len(".json")] if target.name.lower().endswith(".json") else target.stem
+        stem = Path(stem).stem
+        world_file = folder / (f"{stem}.world.json" if as_json else f"{stem}.wld")
+        world = dataclasses.replace(draft.world, floor_texture=_relative(draft.world.floor_texture, folder))
+        files[world_file] = dumps(to_json("world", world)) if as_json else write_wld(world)
+    document = dataclasses.replace(
+        draft.document(), source=str(target),
+        world=Reference(_relative(str(world_file), folder)) if world_file else None,
+        robot_files=tuple(Reference(_relative(p, folder)) for p in draft.robot_files),
+        object_files=tuple(Reference(_relative(p, folder)) for p in draft.object_files),
+        placements=tuple(dataclasses.replace(p, program=_relative(p.program, folder),
+                                             model=_relative(p.model, folder))
+                         for p in draft.document().placements))
+    files[target] = dumps(to_json("scene", document)) if as_json else write_sim(document)
+    return files
+
+
+def _relative(path: str | None, folder: Path) -> str | None:
+    """A reference as written in a saved file: relative to its folder (with / on every system)
+    when the file exists, else as it was."""
+    if path is None or not Path(path).is_absolute():
+        return path
+    try:
+        return Path(os.path.relpath(path, folder)).as_posix()
+    except ValueError:  # another drive (Windows)
+        return path
