@@ -19,7 +19,7 @@ from pathlib import Path
 import numpy as np
 from common import print_table, write_results
 
-from eyesim.engine import Simulation
+from eyesim.core.engine import Simulation
 from eyesim.physics import meshes, render, render_gl
 from eyesim.physics.render_raycast import RayCastRenderer
 from eyesim.scene.loader import load_scene

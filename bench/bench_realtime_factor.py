@@ -30,8 +30,8 @@ import mujoco
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from common import print_table, write_results  # noqa: E402
 
-from eyesim.clock import MAX_SPEED, Clock  # noqa: E402
-from eyesim.engine import Simulation  # noqa: E402
+from eyesim.core.clock import MAX_SPEED, Clock  # noqa: E402
+from eyesim.core.engine import Simulation  # noqa: E402
 from eyesim.robot.components.vw import VwController  # noqa: E402
 from eyesim.scene import load_robot_type  # noqa: E402
 from eyesim.scene.description import Pose, RobotPlacement, Scene, Wall, World  # noqa: E402

@@ -17,10 +17,10 @@ import tempfile
 import time
 from pathlib import Path
 
-from eyesim.physics.builder import build_world
 from eyesim.scene import limits, load_scene
 from eyesim.scene.diagnostics import Diagnostics
 from eyesim.scene.loader import read_definition
+from eyesim.world.builder import build_world
 
 REPO = Path(__file__).resolve().parents[1]
 CORPUS = REPO.parent / "shared" / "corpus"

@@ -40,7 +40,7 @@ def best_time(action, repeat: int) -> float:
 def in_process() -> dict:
     from support.scenes import arena
 
-    from eyesim.engine import Simulation
+    from eyesim.core.engine import Simulation
     from eyesim.physics import render_gl
     from eyesim.physics.render_raycast import RayCastRenderer
     from eyesim.robot.components.camera import Camera

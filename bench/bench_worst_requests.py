@@ -23,10 +23,10 @@ sys.path.insert(0, str(BENCH.parent / "tests"))
 from support.worlds import arena_scene, example_robot  # noqa: E402
 from support.worst_requests import worst_hello, worst_requests  # noqa: E402
 
-from eyesim.clock import Clock  # noqa: E402
-from eyesim.engine import Simulation  # noqa: E402
+from eyesim.core.clock import Clock  # noqa: E402
+from eyesim.core.engine import Simulation  # noqa: E402
+from eyesim.net.session import Request, Session  # noqa: E402
 from eyesim.protocol import FrameDecoder, decode_payload, encode_message, generated as g  # noqa: E402
-from eyesim.session import Request, Session  # noqa: E402
 
 TARGET_MS = 5.0
 

@@ -1,7 +1,7 @@
 """EyeSim: a robot simulator for teaching, running RoBIOS-7 programs against a MuJoCo world.
 
 `eyesim.Simulation` is the Python API for tests and grading (eyesim/testing, docs/testing.md);
-the engine inside it is `eyesim.engine.Simulation`."""
+the engine inside it is `eyesim.core.engine.Simulation`."""
 
 __version__ = "0.1.0"
 

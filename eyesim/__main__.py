@@ -2,6 +2,6 @@
 
 import sys
 
-from eyesim.cli import main
+from eyesim.app.cli import main
 
 sys.exit(main())

@@ -7,8 +7,8 @@ from support.client import ProgramClient
 from support.scenes import arena, with_call_time
 from support.simulator import running_simulation
 
-from eyesim import robot_input
-from eyesim.engine import DEFAULT_CALL_TIME_US
+from eyesim.core import robot_input
+from eyesim.core.engine import DEFAULT_CALL_TIME_US
 from eyesim.protocol import generated as g
 from eyesim.robot.components.keys import KEY2
 
@@ -185,9 +185,9 @@ def test_the_engine_imports_no_component_and_no_viewer_code():
     import ast
     from pathlib import Path
 
-    import eyesim.engine
+    import eyesim.core.engine
 
-    tree = ast.parse(Path(eyesim.engine.__file__).read_text())
+    tree = ast.parse(Path(eyesim.core.engine.__file__).read_text())
     modules = {node.module for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)}
     modules |= {alias.name for node in ast.walk(tree) if isinstance(node, ast.Import) for alias in node.names}
     assert [m for m in modules if m.startswith(("eyesim.robot.components", "eyesim.web"))] == []

@@ -5,14 +5,14 @@ from argparse import Namespace
 import pytest
 from support.scenes import arena
 
-from eyesim.clock import DETERMINISTIC, Clock
-from eyesim.engine import Simulation
+from eyesim.app.scripted_input import schedule_inputs
+from eyesim.core.clock import DETERMINISTIC, Clock
+from eyesim.core.engine import Simulation
 from eyesim.robot.components.analog_io import AnalogInputs
 from eyesim.robot.components.digital_io import DigitalLines
 from eyesim.robot.components.irtv import IrReceiver
 from eyesim.robot.components.keys import KEY2, Keys
 from eyesim.robot.components.serial_ports import SerialPorts
-from eyesim.scripted_input import schedule_inputs
 
 
 def options(**given) -> Namespace:
@@ -69,7 +69,7 @@ def test_bad_options_are_refused_with_what_is_wrong(option, value, message):
 
 def test_an_option_is_checked_as_the_browser_command_it_becomes():
     """One table of inputs: the same fields, ranges and sentence for `eyesim run` and the viewer."""
-    from eyesim.web.channel_schema import command_problem
+    from eyesim.protocol.channel_schema import command_problem
 
     sim = Simulation(arena())
     browser = command_problem({"type": "touch", "robot": 1, "x": 480, "y": 0})

@@ -1,10 +1,10 @@
 """RoBIOS I/O group: 16 digital lines, 8 analog channels with 1 kHz recording, and the battery voltage."""
 
 from eyesim.commands.errors import CommandError, checked_arguments, require
+from eyesim.net.session import Pending
 from eyesim.robot.components.analog_io import AnalogInputs
 from eyesim.robot.components.battery import Battery
 from eyesim.robot.components.digital_io import DigitalLines
-from eyesim.session import Pending
 
 
 def _digital(robot) -> DigitalLines:

@@ -1,8 +1,8 @@
 """RoBIOS IR remote group: codes from the viewer's remote, the keyboard or a script."""
 
 from eyesim.commands.errors import require
+from eyesim.net.session import Pending
 from eyesim.robot.components.irtv import IrReceiver
-from eyesim.session import Pending
 
 
 def _receiver(robot) -> IrReceiver:

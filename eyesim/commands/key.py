@@ -1,8 +1,8 @@
 """RoBIOS key group: soft keys and touches on the LCD, from the viewer or a script."""
 
 from eyesim.commands.errors import CommandError, require
+from eyesim.net.session import Pending
 from eyesim.robot.components.keys import Keys
-from eyesim.session import Pending
 
 
 def _keys(robot) -> Keys:

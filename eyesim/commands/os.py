@@ -1,8 +1,8 @@
 """RoBIOS system group: waiting and counting in simulation time (milliseconds), and the machine's identity."""
 
 from eyesim.commands.errors import CommandError
-from eyesim.robot.drives import drive_of
-from eyesim.session import Pending
+from eyesim.net.session import Pending
+from eyesim.scene.drives import drive_of
 
 
 def os_wait(sim, robot, request):

@@ -1,9 +1,9 @@
 """RoBIOS radio group: messages between robots' programs, in order per sender (ids = robot ids)."""
 
 from eyesim.commands.errors import CommandError, require
+from eyesim.net.session import Pending
 from eyesim.protocol import generated as g
 from eyesim.robot.components.radio import MAX_WAITING, Radio
-from eyesim.session import Pending
 
 
 def _radio(robot) -> Radio:

@@ -1,8 +1,8 @@
 """RoBIOS serial group: byte streams on interface 0 (serial port) and 1..20 (USB)."""
 
 from eyesim.commands.errors import checked_arguments, require
+from eyesim.net.session import Pending
 from eyesim.robot.components.serial_ports import SerialPorts
-from eyesim.session import Pending
 
 
 def _ports(robot) -> SerialPorts:

@@ -6,8 +6,8 @@ deterministic mode time goes on only while both that thread and the main thread 
 (session.Session.blocked): not while the main thread computes, nor while callbacks run."""
 
 from eyesim.commands.errors import checked_arguments, require
+from eyesim.net.session import Pending
 from eyesim.robot.components.timers import ProgramTimers
-from eyesim.session import Pending
 
 
 def _timers(robot) -> ProgramTimers:

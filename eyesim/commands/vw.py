@@ -4,9 +4,9 @@ drive with kinematics; what a drive cannot do (a car turning on the spot) is a B
 import math
 
 from eyesim.commands.errors import CommandError, checked_arguments, require
+from eyesim.net.session import Pending
 from eyesim.physics.units import mm, to_mm, wrap_degrees
 from eyesim.robot.components.vw import VwController
-from eyesim.session import Pending
 
 
 def _vw(robot) -> VwController:

@@ -30,7 +30,7 @@ def _tail(text: str) -> str:
 def build(program, submission_files: dict[str, bytes], directory: Path) -> tuple[Path | None, dict]:
     """Build one of the spec's programs from the submission's files in `directory`;
     returns (executable or None, build record)."""
-    from eyesim.toolchain import LibraryMissing, compiler_command
+    from eyesim.programs.toolchain import LibraryMissing, compiler_command
 
     sources: list[str] = []
     missing = []

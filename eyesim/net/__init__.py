@@ -1,1 +1,1 @@
-"""Networking: the I/O thread and the TCP server for RoBIOS programs."""
+"""Networking: a connected program (session), the I/O thread and the TCP server for RoBIOS programs."""

@@ -22,8 +22,8 @@ import selectors
 import socket
 import time
 
+from eyesim.net.session import Request, Session
 from eyesim.protocol import FrameDecoder, ProtocolError, decode_payload, encode_error, generated as g
-from eyesim.session import Request, Session
 
 log = logging.getLogger("eyesim.net")
 READ_SIZE = 256 * 1024

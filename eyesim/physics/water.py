@@ -9,8 +9,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from eyesim.physics.units import mm
-from eyesim.robot.drives import drive_of
 from eyesim.scene.description import Scene
+from eyesim.scene.drives import drive_of
 
 DENSITY = 1000.0  # kg/m^3, fresh water
 DEFAULT_SURFACE = 1.0  # m, a pool without walls

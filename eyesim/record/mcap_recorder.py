@@ -26,7 +26,7 @@ from eyesim.record import sampling, schemas
 from eyesim.robot.components.camera import Camera
 from eyesim.robot.components.lcd import Lcd
 from eyesim.robot.components.lidar import LidarScanner
-from eyesim.web import mesh_message, messages
+from eyesim.viewer import mesh_message, messages
 
 DEFAULT_POSE_RATE = 100.0  # Hz of simulation time: the CSV's 10 ms rows
 DEFAULT_LCD_RATE = 30.0  # Hz: at most this many LCD images per robot and simulated second

@@ -16,7 +16,7 @@ import numpy as np
 from mcap.reader import SeekingReader
 
 from eyesim.record import schemas
-from eyesim.web import messages
+from eyesim.viewer import messages
 
 MAGIC = b"\x89MCAP0\r\n"
 IMAGE_CHANNELS = ("lcd", "camera")

@@ -11,11 +11,11 @@ from eyesim.physics.units import mm, rad, yaw_quat
 from eyesim.physics.visual_mesh import add_model
 from eyesim.physics.world import add_collider, rgba
 from eyesim.robot.component import Component
-from eyesim.robot.drives import drive_of
 from eyesim.robot.robot import Robot
-from eyesim.scene.description import Collider, RobotPlacement, RobotType, Settings
+from eyesim.scene.description import RobotPlacement, RobotType, Settings
+from eyesim.scene.drives import drive_of
+from eyesim.scene.parts.body import hull_colliders
 
-CHASSIS_CLEARANCE = 0.012  # m between the floor and the chassis bottom of a wheeled robot
 MIN_HULL_MASS_FRACTION = 0.2  # the parts may not weigh more than 80 % of the robot
 HULL_FRICTION = [0.4, 0.005, 0.0001]
 
@@ -56,17 +56,6 @@ def mounted(robot_type: RobotType) -> bool:
     """A manipulator on a fixed base is bolted to the floor (its drive says so); every other robot
     moves freely."""
     return drive_of(robot_type).mounted
-
-
-def hull_colliders(robot_type: RobotType) -> tuple[Collider, ...]:
-    """The chassis shape: the type's colliders, else a box of its size (above the wheels' clearance
-    when it has wheels)."""
-    if robot_type.colliders:
-        return robot_type.colliders
-    clearance = CHASSIS_CLEARANCE * 1000 if robot_type.wheels is not None else 0.0
-    height = max(robot_type.height - clearance, 10.0)
-    # The hull sits slightly behind the axle so a two-wheeler leans on its rear caster, not its nose.
-    return (Collider("box", (robot_type.length, robot_type.width, height), (-10.0, 0.0, clearance + height / 2)),)
 
 
 def add_chassis(spec: mujoco.MjSpec, name: str, robot_type: RobotType, placement: RobotPlacement) -> mujoco.MjsBody:

@@ -29,5 +29,5 @@ class Component:
         pass
 
     def publish(self, robot_id: int, events, again: bool) -> None:
-        """Emit what changed since the last tick on `events` (eyesim.events); `again`: also what
+        """Emit what changed since the last tick on `events` (eyesim.core.events); `again`: also what
         did not (a browser has just connected)."""

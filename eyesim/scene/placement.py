@@ -20,7 +20,9 @@ from dataclasses import replace
 
 from eyesim.scene.description import Collider, Location, ObjectPlacement, ObjectType, Pose, RobotPlacement, RobotType, Wall
 from eyesim.scene.diagnostics import Diagnostics, quoted
+from eyesim.scene.drives import drive_of
 from eyesim.scene.limits import LIMIT
+from eyesim.scene.parts.body import hull_colliders
 
 CLEARANCE = 1.0  # mm left between a moved footprint and the wall
 DEFAULT_OBJECT_SIZE = 100.0  # mm: the box an object without colliders gets (physics/objects.py)
@@ -32,9 +34,6 @@ WIDE = 64  # cells: a longer wall (or a larger body) is looked at by every query
 
 def _robot_extent(robot_type: RobotType) -> tuple[float, float, float, float]:
     """A robot's floor-plan bounding box: its hull as the physics builds it, and its drive wheels."""
-    from eyesim.robot.build import hull_colliders  # here: the robot package imports the scene's
-    from eyesim.robot.drives import drive_of
-
     x0, y0, x1, y1 = _box_extent(hull_colliders(robot_type))
     wheels = robot_type.wheels
     if wheels is not None and drive_of(robot_type).wheels_outside_hull:

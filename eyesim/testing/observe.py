@@ -47,7 +47,7 @@ class RadioMessage:
 
 
 class RobotEvents:
-    """An event listener (eyesim.events) keeping what robots send on serial interfaces, the
+    """An event listener (eyesim.core.events) keeping what robots send on serial interfaces, the
     sounds they play and program notices, stamped with the simulation time."""
 
     wants_lcd = False

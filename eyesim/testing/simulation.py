@@ -1,6 +1,6 @@
 """`eyesim.Simulation`: a simulator a test or a grader drives from Python (docs/testing.md).
 
-It wraps the engine (`eyesim.engine.Simulation`, here `engine`) with what `eyesim run` adds —
+It wraps the engine (`eyesim.core.engine.Simulation`, here `engine`) with what `eyesim run` adds —
 the program server, the launcher, scripted input — and records what checks need: true paths,
 contacts, serial output, radio messages, program output and exit codes. The engine runs in the
 calling thread during `run()`; between runs everything can be read at leisure.
@@ -22,11 +22,11 @@ import threading
 from dataclasses import dataclass
 from pathlib import Path
 
-from eyesim import inputs
-from eyesim.clock import DETERMINISTIC, Clock
-from eyesim.engine import Simulation as Engine
-from eyesim.launcher import Launcher, ProgramOptions
+from eyesim.core import inputs
+from eyesim.core.clock import DETERMINISTIC, Clock
+from eyesim.core.engine import Simulation as Engine
 from eyesim.net.program_server import ProgramServer
+from eyesim.programs.launcher import Launcher, ProgramOptions
 from eyesim.protocol import generated as g
 from eyesim.robot.components.keys import KEY_NAMES
 from eyesim.robot.components.serial_ports import SerialPorts
@@ -234,7 +234,7 @@ class Simulation:
         self._input(robot, at, type="analog", channel=channel, value=value)
 
     def _input(self, robot, at: float, **command) -> None:
-        """An input of eyesim.inputs (the browser's and `eyesim run`'s table and checks) at a time."""
+        """An input of eyesim.core.inputs (the browser's and `eyesim run`'s table and checks) at a time."""
         try:
             self.at(at, inputs.prepare(self.engine, {**command, "robot": self._robot(robot).id}))
         except inputs.InputError as error:
@@ -341,7 +341,7 @@ class Simulation:
 
 def compile_program(source: Path, output: Path, flags=("-O2",), language: str = "cc") -> Path:
     """`eyesim cc` (or `eyesim c++`) a source file; raises CompileError with the compiler's output."""
-    from eyesim.toolchain import LibraryMissing, compiler_command
+    from eyesim.programs.toolchain import LibraryMissing, compiler_command
 
     try:
         command = compiler_command(language, [*flags, str(source), "-o", str(output)])

@@ -22,10 +22,11 @@ from pathlib import Path
 
 from aiohttp import web
 
-from eyesim import toolchain
-from eyesim.launcher import crash_reason
+from eyesim.programs import toolchain
+from eyesim.programs.launcher import crash_reason
 from eyesim.robot.components.psd import PsdSensor
-from eyesim.web import messages, program_files
+from eyesim.viewer import messages
+from eyesim.web import program_files
 from eyesim.web.simulation_calls import on_simulation
 from eyesim.web.scene_files import FileAccessError
 

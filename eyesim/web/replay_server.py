@@ -17,8 +17,10 @@ from pathlib import Path
 
 from aiohttp import WSMsgType, web
 
+from eyesim.protocol import channel_schema
 from eyesim.record.recording import Recording, RecordingError
-from eyesim.web import channel_schema, messages, timeline
+from eyesim.viewer import messages
+from eyesim.web import timeline
 from eyesim.web.access import AccessPolicy
 from eyesim.web.server import MAX_COMMAND_BYTES, TEXTURE_TYPES, _reject_constant, serve_app, static_file, viewer_url
 

@@ -5,7 +5,7 @@ The browser edits a robot as the JSON document of the published robot schema (ev
 out, so the forms show every value). Every check goes through `json_format.parse_json`, the same
 path a robot .json file takes when it is loaded, so the editor shows the loader's own messages;
 each is tied to the field it is about by its JSON pointer. The preview and the test drive build the
-robot with the simulator's `Simulation` (physics/builder.py) in a scratch world of their own; the
+robot with the simulator's `Simulation` (world/builder.py) in a scratch world of their own; the
 running scene is never touched.
 
 Files: robots open from and save to the scene root (the folder the simulator was started in) and
@@ -30,22 +30,23 @@ import numpy as np
 from aiohttp import web
 from PIL import Image
 
-from eyesim.clock import REALTIME, Clock
+from eyesim.core.clock import REALTIME, Clock
 from eyesim.physics.units import mm
 from eyesim.robot.components.camera import Camera
 from eyesim.robot.components.lidar import LidarScanner
 from eyesim.robot.components.psd import PsdSensor
 from eyesim.robot.components.vw import VwController
-from eyesim.robot.drives import DRIVES, drive_named
 from eyesim.scene import builtins, json_format, paths
 from eyesim.scene.description import Location, Pose, RobotPlacement, RobotType, Scene, Wall, World
 from eyesim.scene.diagnostics import Diagnostics
+from eyesim.scene.drives import DRIVES, drive_named
 from eyesim.scene.jsonpos import json_positions
 from eyesim.scene.loader import read_document
 from eyesim.scene.robi import write_robi
-from eyesim.web import messages, scene_files
+from eyesim.viewer import messages
+from eyesim.viewer.mesh_message import has_mesh, mesh_message
+from eyesim.web import scene_files
 from eyesim.web.simulation_calls import on_simulation
-from eyesim.web.mesh_message import has_mesh, mesh_message
 
 log = logging.getLogger("eyesim.web")
 PREFIX = "/robot-editor/api"
@@ -257,7 +258,7 @@ def arena_walls(size: float) -> tuple[Wall, ...]:
 
 
 def build(robot: RobotType, floor: float, walls=(), clock: Clock | None = None, at: float = 0.5):
-    from eyesim.engine import Simulation  # the engine pulls in the physics: only when building
+    from eyesim.core.engine import Simulation  # the engine pulls in the physics: only when building
 
     return Simulation(scratch_scene(robot, floor, walls, at), clock)
 

@@ -20,11 +20,13 @@ from pathlib import Path
 from aiohttp import WSMsgType, web
 from PIL import Image
 
-from eyesim import inputs
+from eyesim.core import inputs
 from eyesim.paths import STATIC_DIR
 from eyesim.protocol import generated as g
+from eyesim.protocol import channel_schema
 from eyesim.record.sampling import robot_state
-from eyesim.web import channel_schema, mesh_message, messages, timeline
+from eyesim.viewer import mesh_message, messages
+from eyesim.web import timeline
 from eyesim.web.access import AccessPolicy
 from eyesim.web.live_history import LiveHistory
 from eyesim.web.program_control import ProgramControl

@@ -16,7 +16,8 @@ from typing import Callable, NamedTuple
 
 import pytest
 
-from eyesim import paths, toolchain
+from eyesim import paths
+from eyesim.programs import toolchain
 from eyesim.protocol import FrameDecoder, decode_payload, encode_error, encode_frame, encode_message, generated as g
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -7,7 +7,7 @@ import subprocess
 
 import pytest
 
-from eyesim import toolchain
+from eyesim.programs import toolchain
 
 PROGRAM = r"""
 #include "eyebot.h"

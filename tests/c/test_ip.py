@@ -15,7 +15,7 @@ import pytest
 from PIL import Image
 from support.programs import run_headless
 
-from eyesim import toolchain
+from eyesim.programs import toolchain
 
 ROOT = Path(__file__).resolve().parents[2]
 DRIVER = Path(__file__).resolve().parent / "ip_driver.c"

@@ -1,4 +1,4 @@
-"""`eyesim cc` / `eyesim c++` (eyesim/toolchain.py): command lines, pass-through, errors."""
+"""`eyesim cc` / `eyesim c++` (eyesim/programs/toolchain.py): command lines, pass-through, errors."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from eyesim import toolchain
+from eyesim.programs import toolchain
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -72,7 +72,7 @@ def test_compiler_exit_status_is_returned(robios_prefix, tmp_path):
 
 
 def parser_with_toolchain() -> argparse.ArgumentParser:
-    """The way eyesim/cli.py builds its parser, with only this module registered."""
+    """The way eyesim/app/cli.py builds its parser, with only this module registered."""
     parser = argparse.ArgumentParser(prog="eyesim")
     toolchain.register(parser.add_subparsers(dest="command"))
     return parser

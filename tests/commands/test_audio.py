@@ -10,7 +10,7 @@ import pytest
 from support.client import RemoteError
 from support.connected import connected_program
 
-from eyesim import robot_input
+from eyesim.core import robot_input
 from eyesim.robot.sound_files import FRAMES_WALKED, WAV_CHUNKS, SoundError, sound_length
 
 

@@ -6,7 +6,7 @@ from support.client import RemoteError
 from support.connected import connected_program
 from support.scenes import arena
 
-from eyesim import robot_input
+from eyesim.core import robot_input
 from eyesim.robot.components.battery import Battery
 
 

@@ -3,7 +3,7 @@
 import pytest
 from support.connected import connected_program
 
-from eyesim import robot_input
+from eyesim.core import robot_input
 from eyesim.robot.components.irtv import code_of
 
 

@@ -4,7 +4,7 @@ import pytest
 from support.client import RemoteError
 from support.connected import connected_program
 
-from eyesim import inputs, robot_input
+from eyesim.core import inputs, robot_input
 from eyesim.robot.components.keys import KEY1, KEY2, KEY3, KEY4
 
 ANYKEY = -1

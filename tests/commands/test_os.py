@@ -5,7 +5,7 @@ from support.client import RemoteError
 from support.connected import connected_program
 from support.scenes import arena
 
-from eyesim.engine import DEFAULT_CALL_TIME_US
+from eyesim.core.engine import DEFAULT_CALL_TIME_US
 from eyesim.protocol import generated as g
 
 

@@ -4,7 +4,7 @@ import pytest
 from support.client import RemoteError
 from support.connected import connected_program
 
-from eyesim import robot_input
+from eyesim.core import robot_input
 from eyesim.robot.components.serial_ports import SerialPorts
 
 

@@ -8,7 +8,7 @@ import re
 import pytest
 from support.programs import build, run_headless
 
-from eyesim.engine import DEFAULT_CALL_TIME_US
+from eyesim.core.engine import DEFAULT_CALL_TIME_US
 from eyesim.paths import DATA_DIR
 
 

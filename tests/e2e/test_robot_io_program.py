@@ -31,4 +31,4 @@ def test_serial_irtv_io_and_audio_from_c_with_scripted_input(tmp_path):
 def test_bad_scripted_input_is_a_usage_error(tmp_path):
     result = run_headless("--digital", "1:17=1@1", "--until", "0.1", cwd=tmp_path)
     assert result.returncode == 2
-    assert "eyesim run: --digital '1:17=1@1': the line is not 1..16" in result.stderr
+    assert "eyesim run: --digital '1:17=1@1': digital: line must be a whole number from 1 to 16, not 17" in result.stderr

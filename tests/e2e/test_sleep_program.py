@@ -9,7 +9,7 @@ import textwrap
 import pytest
 from support.programs import build, run_headless
 
-from eyesim.engine import DEFAULT_CALL_TIME_US
+from eyesim.core.engine import DEFAULT_CALL_TIME_US
 
 CALL_MS = DEFAULT_CALL_TIME_US // 1000
 CALLS = 1 + 4 * 2  # the OSGetCount at the start and two MOTORDrive per phase

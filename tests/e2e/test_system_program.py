@@ -2,7 +2,7 @@
 
 from support.programs import build, run_headless
 
-from eyesim.engine import DEFAULT_CALL_TIME_US
+from eyesim.core.engine import DEFAULT_CALL_TIME_US
 from eyesim.paths import DATA_DIR
 
 

@@ -6,9 +6,9 @@ from __future__ import annotations
 import numpy as np
 from support.scenes import arena
 
-from eyesim.engine import DEFAULT_CALL_TIME_US
+from eyesim.core.engine import DEFAULT_CALL_TIME_US
 
-from eyesim import robot_input
+from eyesim.core import robot_input
 from eyesim.robot.components.lcd import Lcd
 from eyesim.robot.components.serial_ports import SerialPorts
 

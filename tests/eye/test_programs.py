@@ -11,7 +11,7 @@ import pytest
 from PIL import Image
 from support.programs import read_trajectory, run_headless
 
-from eyesim.engine import DEFAULT_CALL_TIME_US
+from eyesim.core.engine import DEFAULT_CALL_TIME_US
 
 from eyesim.robot.components.lcd import HEIGHT, MENU_HEIGHT
 
@@ -264,7 +264,7 @@ def test_python_lcd_printf_follows_c_printf(robios_prefix, tmp_path):
 
 def test_programs_get_the_library_directory_first_on_ld_library_path(monkeypatch):
     from eyesim import paths
-    from eyesim.launcher import program_environment
+    from eyesim.programs.launcher import program_environment
 
     monkeypatch.setenv("LD_LIBRARY_PATH", "/opt/other")
     env = program_environment("127.0.0.1", 9797, 2)

@@ -4,10 +4,10 @@ import math
 
 import pytest
 
-from eyesim.clock import Clock
-from eyesim.engine import Simulation
-from eyesim.robot.drives.differential_wheels import DifferentialDrive
+from eyesim.core.clock import Clock
+from eyesim.core.engine import Simulation
 from eyesim.robot.components.vw import VwController
+from eyesim.robot.drives.differential_wheels import DifferentialDrive
 from support.worlds import arena_scene
 
 

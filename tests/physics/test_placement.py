@@ -6,7 +6,7 @@ from pathlib import Path
 
 from support.rooms import square_room, write_scene
 
-from eyesim.engine import Simulation
+from eyesim.core.engine import Simulation
 from eyesim.robot.components.psd import PsdSensor
 from eyesim.scene import load_scene
 

@@ -9,7 +9,7 @@ import pytest
 from support.corpus import CORPUS
 from support.rooms import write_scene
 
-from eyesim.engine import Simulation
+from eyesim.core.engine import Simulation
 from eyesim.physics import render, render_gl
 from eyesim.physics.meshes import read_obj
 from eyesim.physics.render_raycast import RayCastRenderer

@@ -5,8 +5,8 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from eyesim.clock import Clock
-from eyesim.engine import Simulation
+from eyesim.core.clock import Clock
+from eyesim.core.engine import Simulation
 from eyesim.robot.components.vw import VwController
 from eyesim.scene import load_scene
 from support.worlds import arena_scene, example_robot

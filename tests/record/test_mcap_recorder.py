@@ -14,10 +14,10 @@ from mcap.reader import make_reader
 from PIL import Image
 from support.programs import build, eyesim_command, run_headless
 
-from eyesim.clock import DETERMINISTIC, Clock
-from eyesim.engine import Simulation
-from eyesim.launcher import Launcher
+from eyesim.core.clock import DETERMINISTIC, Clock
+from eyesim.core.engine import Simulation
 from eyesim.net.program_server import ProgramServer
+from eyesim.programs.launcher import Launcher
 from eyesim.record import Recorder, Recording, schemas
 from eyesim.robot.components.lcd import Lcd
 from eyesim.scene import DEFAULT_SCENE, load_scene
@@ -165,7 +165,7 @@ def test_camera_images_and_lidar_scans_are_recorded_as_the_program_saw_them(tmp_
 
 
 def test_inputs_and_viewer_edits_are_recorded(tmp_path):
-    from eyesim import inputs, robot_input
+    from eyesim.core import inputs, robot_input
 
     sim = Simulation(load_scene(DEFAULT_SCENE), Clock(DETERMINISTIC))
     sim.schedule(100_000, lambda s: robot_input.key(s, 1, 2))

@@ -9,8 +9,8 @@ import pytest
 from mcap.writer import Writer
 from support.programs import eyesim_command
 
-from eyesim.clock import DETERMINISTIC, Clock
-from eyesim.engine import Simulation
+from eyesim.core.clock import DETERMINISTIC, Clock
+from eyesim.core.engine import Simulation
 from eyesim.record import Recorder, Recording, RecordingError
 from eyesim.scene import DEFAULT_SCENE, load_scene
 

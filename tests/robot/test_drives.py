@@ -6,9 +6,10 @@ from pathlib import Path
 
 import pytest
 
-from eyesim.robot.drives import (DRIVES, ackermann_wheels, differential_wheels, drive_named, drive_of,
-                                 omni_wheels)
-from eyesim.robot.drives.archetype import Kinematics, MachineType
+from eyesim.robot.drives import ackermann_wheels, differential_wheels, omni_wheels
+from eyesim.robot.drives.kinematics import Kinematics
+from eyesim.scene.drives import DRIVES, drive_named, drive_of
+from eyesim.scene.drives.archetype import MachineType
 from eyesim.scene.json_format import schema
 from support.worlds import example_robot
 
@@ -35,7 +36,7 @@ def test_each_example_robot_gets_its_drives_declared_traits(robot, machine, whee
 
 def test_the_declarations_and_the_scene_package_need_no_physics():
     """Reading, checking and converting scene files never loads MuJoCo (only the drives' components do)."""
-    code = ("import sys, eyesim.scene, eyesim.scene.cli, eyesim.robot.drives; "
+    code = ("import sys, eyesim.scene, eyesim.scene.cli, eyesim.scene.drives; "
             "assert 'mujoco' not in sys.modules, sorted(m for m in sys.modules if m.startswith('eyesim'))")
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=Path(__file__).parent)
     assert result.returncode == 0, result.stderr
@@ -44,3 +45,18 @@ def test_the_declarations_and_the_scene_package_need_no_physics():
 def test_the_wheeled_drives_components_offer_kinematics():
     for cls in (differential_wheels.DifferentialDrive, ackermann_wheels.AckermannDrive, omni_wheels.OmniDrive):
         assert issubclass(cls, Kinematics)
+
+
+def test_each_declared_component_name_resolves_to_a_kinematics_component():
+    """A declaration names its wheel component by module path (declarations sit below the physics);
+    the name must resolve, and only drives that need wheels name one."""
+    import importlib
+    named = {}
+    for drive in DRIVES:
+        if not drive.component:
+            continue
+        module, name = drive.component.split(":")
+        named[drive.name] = getattr(importlib.import_module(module), name)
+        assert drive.wheeled and issubclass(named[drive.name], Kinematics)
+    assert named == {"differential": differential_wheels.DifferentialDrive,
+                     "ackermann": ackermann_wheels.AckermannDrive, "omni": omni_wheels.OmniDrive}

@@ -7,7 +7,7 @@ directly, so the wheels' speeds can be read at exact times."""
 import pytest
 from support.worlds import arena_scene, example_robot
 
-from eyesim.engine import Simulation
+from eyesim.core.engine import Simulation
 
 MOTORS = {"S4": (1, 2), "LabBot": (1, 2), "Car": (1,), "Mecanum": (1, 2, 3, 4)}
 # 0 -> 100 %, 100 % -> -100 %, back to 100 %, 100 % -> 0: each held 0.6 s

@@ -103,7 +103,7 @@ def test_schema_unknown_kind(capsys):
 
 def test_registered_in_the_eyesim_command(capsys):
     try:
-        from eyesim.cli import main
+        from eyesim.app.cli import main
         main(["schema", "world"])
     except ImportError as e:  # another part of the command is not there yet
         pytest.skip(f"eyesim command incomplete: {e}")

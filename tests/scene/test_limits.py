@@ -12,7 +12,7 @@ import mujoco
 import pytest
 from support.programs import run_headless
 
-from eyesim.engine import Simulation
+from eyesim.core.engine import Simulation
 from eyesim.physics import world as physics_world
 from eyesim.scene import SceneError, load_scene, limits
 from eyesim.scene.placement import SEARCH_RINGS

@@ -8,7 +8,7 @@ from support.rooms import square_room, write_scene
 from support.scenes import arena
 
 import eyesim
-from eyesim.engine import Simulation
+from eyesim.core.engine import Simulation
 from eyesim.robot.components.lidar import MOUNT_ABOVE_TOP, LidarScanner
 
 ROOM = 2000

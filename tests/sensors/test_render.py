@@ -13,7 +13,7 @@ from support.client import ProgramClient
 from support.scenes import arena
 from support.simulator import running_simulation
 
-from eyesim.engine import Simulation
+from eyesim.core.engine import Simulation
 from eyesim.physics import render, render_gl
 from eyesim.physics.render_raycast import RayCastRenderer
 from eyesim.robot.components.camera import Camera

@@ -6,12 +6,12 @@ import dataclasses
 import numpy as np
 from support.scenes import arena
 
-from eyesim.engine import Simulation
+from eyesim.core.engine import Simulation
 from eyesim.robot.components.camera import Camera
 from eyesim.robot.components.lidar import LidarScanner
 from eyesim.robot.components.psd import PsdSensor
 from eyesim.scene.description import Settings
-from eyesim.web.messages import snapshot
+from eyesim.viewer.messages import snapshot
 
 
 class Browser:

@@ -5,8 +5,8 @@ from __future__ import annotations
 import contextlib
 import threading
 
-from eyesim.clock import Clock
-from eyesim.engine import Simulation
+from eyesim.core.clock import Clock
+from eyesim.core.engine import Simulation
 from eyesim.net.program_server import ProgramServer
 
 

@@ -3,9 +3,9 @@ the threads are scheduled (grading the same case twice, anywhere, must give the 
 
 from support.scenes import arena
 
-from eyesim.clock import DETERMINISTIC, Clock
-from eyesim.engine import Simulation as Engine
-from eyesim.session import Session
+from eyesim.core.clock import DETERMINISTIC, Clock
+from eyesim.core.engine import Simulation as Engine
+from eyesim.net.session import Session
 
 
 class NoConnection:

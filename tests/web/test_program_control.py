@@ -16,8 +16,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.programs import simulator_with_viewer  # noqa: E402
 from support.scenes import arena  # noqa: E402
 
-from eyesim.clock import Clock  # noqa: E402
-from eyesim.engine import Simulation  # noqa: E402
+from eyesim.core.clock import Clock  # noqa: E402
+from eyesim.core.engine import Simulation  # noqa: E402
 from eyesim.robot.components.psd import PsdSensor  # noqa: E402
 from eyesim.web.program_control import apply_settings  # noqa: E402
 

@@ -242,8 +242,8 @@ def test_a_live_run_can_be_scrubbed_back_and_then_follows_the_present_again(brow
 
 
 def test_another_recording_can_be_opened_from_the_page(browser_context, replay, tmp_path):
-    from eyesim.clock import DETERMINISTIC, Clock
-    from eyesim.engine import Simulation
+    from eyesim.core.clock import DETERMINISTIC, Clock
+    from eyesim.core.engine import Simulation
     from eyesim.record import Recorder
     from eyesim.scene import DEFAULT_SCENE, load_scene
 

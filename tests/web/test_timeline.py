@@ -16,8 +16,8 @@ from support.programs import eyesim_command  # noqa: E402
 from support.viewer import run_async  # noqa: E402
 from support.recordings import record_tour  # noqa: E402
 
+from eyesim.protocol.channel_schema import server_message_problems
 from eyesim.record import Recording
-from eyesim.web.channel_schema import server_message_problems
 from eyesim.web.live_history import LiveHistory
 from eyesim.web.timeline import FrameCursor, RecordingTimeline, answer
 

@@ -10,8 +10,8 @@ import pytest
 from support.scenes import arena
 from support.viewer import run_async, viewer_simulation
 
-from eyesim.web.channel_schema import COMMANDS, command_problem
-from eyesim.web.viewer_schema import SCHEMA
+from eyesim.protocol.channel_schema import COMMANDS, command_problem
+from eyesim.protocol.viewer_schema import SCHEMA
 
 
 @pytest.mark.parametrize("command, problem", [

@@ -12,7 +12,7 @@ import pytest
 from browser import open_viewer
 
 from eyesim.physics.meshes import read_obj
-from eyesim.web.channel_schema import MESH_BODY
+from eyesim.protocol.channel_schema import MESH_BODY
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.corpus import CORPUS  # noqa: E402

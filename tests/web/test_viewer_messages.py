@@ -18,8 +18,8 @@ import pytest
 from support.client import ProgramClient, RemoteError
 from support.viewer import run_async, viewer_simulation
 
+from eyesim.protocol.channel_schema import command_problem, server_message_problems
 from eyesim.scene import builtins, load_scene
-from eyesim.web.channel_schema import command_problem, server_message_problems
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 WATCH_SECONDS = 3.0

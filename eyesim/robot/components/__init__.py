@@ -1,7 +1,8 @@
 """Registry of component kinds: each factory looks at a robot type and returns the components it needs.
 
 Adding a component kind = one new module with a `create(context)` function + one line here. A
-robot's drive (wheels, motors, steering) comes from its declared drive archetype (robot/drives)."""
+robot's drive (wheels, motors, steering) comes from its declared drive archetype (scene/drives),
+built by robot/drives."""
 
 from eyesim.robot import drives
 from eyesim.robot.components import camera  # one import and one FACTORIES line per kind

@@ -15,7 +15,7 @@ MAX_WAITING = 256  # presses or touches nobody has read yet; older ones are drop
 class Keys(Component):
     """Each press is delivered exactly once, in order, to KEYGet, KEYRead or KEYWait; each touch
     (LCD pixel coordinates) once to KEYGetXY or KEYReadXY. A touch on the shown menu bar is a
-    press of that soft key instead (see eyesim.robot_input.touch)."""
+    press of that soft key instead (see eyesim.core.robot_input.touch)."""
 
     def __init__(self):
         self.presses: deque[int] = deque(maxlen=MAX_WAITING)

@@ -1,32 +1,17 @@
-"""Registry of drive archetypes: the `drive` line of a robot type names one of them.
-
-Adding a drive archetype = one new module declaring its DRIVE + one line here (docs/developing.md)."""
+"""The drives' physics: the wheel components that the drive declarations (eyesim/scene/drives/) name."""
 
 from __future__ import annotations
 
-from eyesim.robot.drives import ackermann, arm, differential, omni, submarine
-from eyesim.robot.drives.archetype import DriveArchetype
+import importlib
 
-DRIVES: tuple[DriveArchetype, ...] = (
-    differential.DRIVE,
-    ackermann.DRIVE,
-    omni.DRIVE,
-    submarine.DRIVE,
-    arm.DRIVE,
-)
-
-_BY_WORD = {word: drive for drive in DRIVES for word in (drive.name, drive.keyword.lower(), *drive.aliases)}
-
-
-def drive_named(word: str) -> DriveArchetype | None:
-    """The drive a `drive` line's word (any case) or a JSON `drive` value names; None if none."""
-    return _BY_WORD.get(word.lower())
-
-
-def drive_of(robot_type) -> DriveArchetype:
-    return _BY_WORD[robot_type.drive]
+from eyesim.scene.drives import drive_of
 
 
 def create(context) -> list:
-    """The component factory for the robot's drive (robot/components registry)."""
-    return drive_of(context.robot_type).components(context)
+    """The component factory for the robot's drive (robot/components registry): the component its
+    declaration names, when the robot type has wheels."""
+    drive = drive_of(context.robot_type)
+    if not drive.component or context.robot_type.wheels is None:
+        return []
+    module, name = drive.component.split(":")
+    return [getattr(importlib.import_module(module), name)(context)]

@@ -10,7 +10,7 @@ import mujoco
 from eyesim.physics.units import mm
 from eyesim.robot.actuators import WheelMotor
 from eyesim.robot.component import Component
-from eyesim.robot.drives.archetype import Kinematics
+from eyesim.robot.drives.kinematics import Kinematics
 from eyesim.robot.drives.wheels import GRAVITY, add_wheel, ground_positions, wheel_constants, wheel_torque
 
 CASTER_RADIUS = 0.012  # m

@@ -19,7 +19,7 @@ import mujoco
 from eyesim.physics.units import mm
 from eyesim.robot.actuators import WheelMotor
 from eyesim.robot.component import Component
-from eyesim.robot.drives.archetype import Kinematics
+from eyesim.robot.drives.kinematics import Kinematics
 from eyesim.robot.drives.wheels import (WHEEL_ARMATURE, WHEEL_DAMPING, WHEEL_MASS, ground_positions, wheel_constants,
                                          wheel_torque)
 

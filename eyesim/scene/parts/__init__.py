@@ -47,7 +47,7 @@ RobotType.__module__ = "eyesim.scene.description"  # where it has always been im
 RobotType.__doc__ = """A robot type: what a .robi file (or a built-in definition) says about a robot.
 
 `name` and `source` (the file it came from), then the fields each part kind declares
-(scene/parts/): `drive` is one of the drive archetypes (robot/drives); a wheeled robot may also
+(scene/parts/): `drive` is one of the drive archetypes (scene/drives); a wheeled robot may also
 carry an `arm`: drive commands then move the base and servo commands the arm."""
 
 ROBOT_SCHEMA_HEAD = {

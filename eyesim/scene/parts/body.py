@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from eyesim.scene.description import Collider, Location
 from eyesim.scene.diagnostics import quoted
@@ -10,7 +11,11 @@ from eyesim.scene.lexer import LARGEST, Line, format_number, quote_token
 from eyesim.scene.parts.part import (VR_AXIS, Part, PartReader, choice, coordinate, list_of, numbers, positive,
                                      record, text)
 
+if TYPE_CHECKING:
+    from eyesim.scene.parts import RobotType
+
 DEFAULT_HEIGHT = 80.0  # mm of a robot whose file gives only a diameter
+CHASSIS_CLEARANCE = 0.012  # m between the floor and the chassis bottom of a wheeled robot
 MAX_DENSITY = 8.0  # g/cm3: a robot heavier than solid steel of its size is a typo
 ESTIMATED_DENSITY = 0.5  # g/cm3 of a typical small robot (S4: 0.8 kg in 2.4 litres)
 COLLIDER_FORMS = {"box": ("<sx> <sy> <sz> <cx> <cy> <cz>", 6), "sphere": ("<r> <cx> <cy> <cz>", 4),
@@ -262,3 +267,14 @@ PART = Part(
     json_locations=lambda robot, positions: {"mass": positions.key(["mass"])},
     check=check,
 )
+
+
+def hull_colliders(robot_type: RobotType) -> tuple[Collider, ...]:
+    """The chassis shape: the type's colliders, else a box of its size (above the wheels' clearance
+    when it has wheels)."""
+    if robot_type.colliders:
+        return robot_type.colliders
+    clearance = CHASSIS_CLEARANCE * 1000 if robot_type.wheels is not None else 0.0
+    height = max(robot_type.height - clearance, 10.0)
+    # The hull sits slightly behind the axle so a two-wheeler leans on its rear caster, not its nose.
+    return (Collider("box", (robot_type.length, robot_type.width, height), (-10.0, 0.0, clearance + height / 2)),)

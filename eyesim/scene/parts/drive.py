@@ -1,10 +1,10 @@
-"""The `drive` line: which drive archetype (robot/drives) moves the robot, and its EyeSim 6
+"""The `drive` line: which drive archetype (scene/drives) moves the robot, and its EyeSim 6
 motor and encoder names."""
 
 from __future__ import annotations
 
-from eyesim.robot.drives import DRIVES, drive_named, drive_of
 from eyesim.scene.diagnostics import quoted
+from eyesim.scene.drives import DRIVES, drive_named, drive_of
 from eyesim.scene.lexer import Line
 from eyesim.scene.parts.part import Part, PartReader, choice
 from eyesim.scene.parts.wheels import DEFAULT_WHEELS

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from eyesim.robot.drives import drive_of
 from eyesim.scene.diagnostics import quoted
+from eyesim.scene.drives import drive_of
 from eyesim.scene.lexer import Line, format_number
 from eyesim.scene.parts.part import Part, PartReader, coordinate, positive, record, ref, whole
 

@@ -4,16 +4,16 @@
 Each input is a command of the viewer channel, so its fields and ranges are declared once, in
 protocol/viewer.schema.json, and every source checks them with the same validator; what depends
 on the world (the robot exists, an IR button's name, a fixed object) is checked here.
-`prepare` turns a command into the action the simulation thread carries out (eyesim.robot_input)."""
+`prepare` turns a command into the action the simulation thread carries out (eyesim.core.robot_input)."""
 
 from __future__ import annotations
 
 import math
 from typing import Callable
 
-from eyesim import robot_input
+from eyesim.core import robot_input
+from eyesim.protocol import channel_schema
 from eyesim.robot.components.irtv import code_of
-from eyesim.web import channel_schema
 
 Action = Callable[[object], None]
 

@@ -1,5 +1,5 @@
 """What input from outside does to a robot: keys, touches, IR codes, serial bytes, digital and
-analog levels. Run on the simulation thread, after eyesim.inputs checked the input (from the
+analog levels. Run on the simulation thread, after eyesim.core.inputs checked the input (from the
 viewer, `eyesim run` options or the testing API); a robot that lost the part meanwhile raises
 ValueError."""
 

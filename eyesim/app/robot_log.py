@@ -6,7 +6,7 @@ import sys
 
 
 class RobotLog:
-    """An event listener (eyesim.events) that prints `[robot 1 serial 0] text` and
+    """An event listener (eyesim.core.events) that prints `[robot 1 serial 0] text` and
     `[robot 1 audio] beep, 0.2 s` lines; serial output is printed line by line."""
 
     wants_lcd = False

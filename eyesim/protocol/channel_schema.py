@@ -11,7 +11,7 @@ import reprlib
 
 from jsonschema import Draft202012Validator
 
-from eyesim.web.viewer_schema import SCHEMA
+from eyesim.protocol.viewer_schema import SCHEMA
 
 _short = reprlib.Repr()
 _short.maxstring = _short.maxother = 40

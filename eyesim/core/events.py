@@ -1,6 +1,6 @@
 """What the simulation tells its observers (the viewer, the console): events and snapshots.
 
-Messages follow docs/viewer-channel.md and are built by eyesim/web/messages.py; `lcd`, `camera`,
+Messages follow docs/viewer-channel.md and are built by eyesim/viewer/messages.py; `lcd`, `camera`,
 `reset`, `input` and `edit` are events of the simulation that listeners turn into what they need. Events are ordered and never dropped; snapshots replace
 each other. Listeners are called on the simulation thread and must return quickly."""
 
@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import Protocol
 
-from eyesim.web import messages
+from eyesim.viewer import messages
 
 
 class Listener(Protocol):
@@ -43,7 +43,7 @@ class EventBus:
         for listener in self.listeners:
             listener.on_snapshot(message)
 
-    # -- the event kinds (their messages: eyesim/web/messages.py) -------------------------------
+    # -- the event kinds (their messages: eyesim/viewer/messages.py) -------------------------------
     def reset(self) -> None:
         """The world went back to the scene's initial state."""
         self.emit({"type": "reset"})

@@ -1,7 +1,7 @@
 """Submarine (SUBMARINE): no wheels; its `thruster` lines move it and its `buoyancy` line floats it
 (the thrusters and buoyancy components), and a scene with one is under water."""
 
-from eyesim.robot.drives.archetype import DriveArchetype
+from eyesim.scene.drives.archetype import DriveArchetype
 
 
 def check(robot) -> tuple[str, str] | None:

@@ -71,7 +71,7 @@ def replay_main(args) -> int:
     import asyncio
     import webbrowser
 
-    from eyesim.run import _has_display
+    from eyesim.app.run import _has_display
     from eyesim.web.replay_server import serve
 
     recording = open_recording(args.recording, "replay")

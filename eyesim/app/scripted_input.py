@@ -1,7 +1,7 @@
 """`eyesim run` options that script a robot's outside world: keys, touches, IR codes, serial input,
 I/O levels.
 
-Each option's text becomes an input command of eyesim.inputs (the same table, fields and checks as
+Each option's text becomes an input command of eyesim.core.inputs (the same table, fields and checks as
 the browser's) that takes effect at a simulation time, so headless runs and tests behave the same
 every time."""
 
@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import re
 
-from eyesim import inputs
+from eyesim.core import inputs
 from eyesim.robot.components.keys import KEY_NAMES
 from eyesim.robot.components.serial_ports import INTERFACES, SerialPorts
 

@@ -21,8 +21,8 @@ from eyesim.robot.components.digital_io import LINES, DigitalLines
 from eyesim.robot.components.lcd import Lcd
 from eyesim.robot.components.lidar import LidarScanner
 from eyesim.robot.components.psd import MAX_RANGE_MM, PsdSensor
-from eyesim.robot.drives import drive_of
-from eyesim.web.mesh_message import has_mesh, mesh_url
+from eyesim.scene.drives import drive_of
+from eyesim.viewer.mesh_message import has_mesh, mesh_url
 
 RAY_PRECISION = 3  # decimals of a metre: millimetres are plenty for a line on the screen
 CAMERA_VIEW_WIDTH = 320  # pixels: larger camera images are sent to the viewer scaled down by a whole factor

@@ -10,13 +10,7 @@ its encoder turn exactly like the real wheel."""
 
 from __future__ import annotations
 
-from eyesim.robot.drives.archetype import DriveArchetype
+from eyesim.scene.drives.archetype import DriveArchetype
 
-
-def components(context) -> list:
-    # imported here: the drive's physics needs MuJoCo, its declaration (what scene files name) does not
-    from eyesim.robot.drives.omni_wheels import OmniDrive
-    return [OmniDrive(context)] if context.robot_type.wheels is not None else []
-
-
-DRIVE = DriveArchetype("omni", "OMNI_DRIVE", wheeled=True, components=components)
+DRIVE = DriveArchetype("omni", "OMNI_DRIVE", wheeled=True,
+                       component="eyesim.robot.drives.omni_wheels:OmniDrive")

@@ -27,14 +27,14 @@ import traceback
 from collections import deque
 
 from eyesim import commands
-from eyesim.clock import Clock
-from eyesim.events import EventBus
+from eyesim.core.clock import Clock
+from eyesim.core.events import EventBus
 from eyesim.net.program_server import ProgramSockets
-from eyesim.physics.builder import build_world
+from eyesim.net.session import Pending, Request, Session
 from eyesim.protocol import encode_error, encode_message, generated as g
 from eyesim.robot.component import Component
 from eyesim.scene.description import Scene
-from eyesim.session import Pending, Request, Session
+from eyesim.world.builder import build_world
 
 log = logging.getLogger("eyesim")
 

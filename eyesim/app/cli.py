@@ -8,10 +8,10 @@ import sys
 
 # Modules that add subcommands; each has `register(subparsers)` setting `func` on its parser.
 SUBCOMMAND_MODULES = (
-    "eyesim.run",
-    "eyesim.toolchain",
+    "eyesim.app.run",
+    "eyesim.programs.toolchain",
     "eyesim.scene.cli",
-    "eyesim.record.cli",
+    "eyesim.app.record_cli",
     "eyesim.grade.cli",
 )
 

@@ -8,14 +8,14 @@ import os
 import sys
 import webbrowser
 
-from eyesim import scripted_input
-from eyesim.clock import DETERMINISTIC, MAX_SPEED, REALTIME, Clock
-from eyesim.engine import DEFAULT_CALL_TIME_US, Simulation
-from eyesim.launcher import Launcher
+from eyesim.app import scripted_input
+from eyesim.app.robot_log import RobotLog
+from eyesim.core.clock import DETERMINISTIC, MAX_SPEED, REALTIME, Clock
+from eyesim.core.engine import DEFAULT_CALL_TIME_US, Simulation
 from eyesim.net.io_thread import IoThread
 from eyesim.net.program_server import ProgramServer
+from eyesim.programs.launcher import Launcher
 from eyesim.protocol import generated as g
-from eyesim.robot_log import RobotLog
 from eyesim.scene.sim import MAX_CALL_TIME_MS
 
 DEFAULT_VIEWER_PORT = 8080

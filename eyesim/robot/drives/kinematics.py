@@ -1,47 +1,12 @@
-"""What a drive archetype declares (the `drive` line of a robot type), and the kinematics interface
-the V-omega controller drives a robot through.
-
-Every module in this package declares one `DriveArchetype`; the rest of the simulator asks the
-archetype (found by `drives.drive_of(robot_type)`) instead of comparing drive names."""
+"""The kinematics interface the V-omega controller drives a robot through, which every drive's
+wheel component (the *_wheels modules here) offers."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from enum import IntEnum
-from typing import TYPE_CHECKING, Callable
+from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from eyesim.robot.actuators import WheelMotor
-    from eyesim.robot.build import BuildContext
-    from eyesim.robot.component import Component
-    from eyesim.scene.description import RobotType
-
-
-class MachineType(IntEnum):
-    """What OSMachineType reports (RoBIOS: VEHICLE 1, PLATFORM 2, WALKER 3)."""
-
-    VEHICLE = 1
-    PLATFORM = 2
-
-
-@dataclass(frozen=True)
-class DriveArchetype:
-    name: str  # RobotType.drive, the JSON `drive` value
-    keyword: str  # the .robi `drive` word we write (read in any case)
-    aliases: tuple[str, ...] = ()  # other `drive` words .robi files use (lower case)
-    machine_type: MachineType = MachineType.VEHICLE
-    mounted: bool = False  # the base is bolted to the floor (no free joint)
-    swims: bool = False  # a scene with such a robot is under water (physics/water.py)
-    wheeled: bool = False  # needs a `wheel` line (a missing one gets the S4's wheels)
-    wheel_keyword: str = "wheel"  # how the .robi writer introduces its driven wheels
-    wheels_outside_hull: bool = False  # its wheels widen the floor-plan footprint (scene/placement.py)
-    # The viewer draws two wheels from the scene message's wheel_diameter/track; other drives'
-    # wheels are parts the viewer draws from their own geoms (web/scene_message.py).
-    viewer_wheels: bool = False
-    # The drive's own components (its wheels and motors); [] when other components move it.
-    components: Callable[[BuildContext], list[Component]] = lambda context: []
-    # A warning (message, code) about a robot type of this drive that cannot move, else None.
-    check: Callable[[RobotType], tuple[str, str] | None] = lambda robot: None
 
 
 class Kinematics:

@@ -1,7 +1,7 @@
 """Manipulator on a fixed base (ARM): bolted to the floor, a PLATFORM to OSMachineType; its `joint`
 and `gripper` lines move it (the arm and gripper components)."""
 
-from eyesim.robot.drives.archetype import DriveArchetype, MachineType
+from eyesim.scene.drives.archetype import DriveArchetype, MachineType
 
 
 def check(robot) -> tuple[str, str] | None:

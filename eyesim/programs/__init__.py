@@ -1,0 +1,1 @@
+"""Robot programs as processes: compiling them (toolchain) and starting them (launcher)."""

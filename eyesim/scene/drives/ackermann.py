@@ -1,0 +1,11 @@
+"""Ackermann drive (ACKERMANN_DRIVE, a car): motor 1 drives the rear axle through a differential,
+servo 1 steers the front wheels with Ackermann geometry; encoder 1 counts the axle's turns. It
+cannot turn on the spot: the V-omega controller drives it along arcs of its rear axle's centre."""
+
+from __future__ import annotations
+
+from eyesim.scene.drives.archetype import DriveArchetype
+
+DRIVE = DriveArchetype("ackermann", "ACKERMANN_DRIVE", wheeled=True,
+                       wheel_keyword="wheel drive", wheels_outside_hull=True,
+                       component="eyesim.robot.drives.ackermann_wheels:AckermannDrive")

@@ -1,0 +1,130 @@
+"""The package's layers: no import cycle between eyesim's top-level parts.
+
+A static scan with `ast` of every `import eyesim.X` / `from eyesim.X import ...` in the package,
+lazy imports inside functions included, grouped by top-level part (a subpackage such as
+`eyesim.robot`, or a root module such as `eyesim.paths`). The part graph must have no cycle, and
+each part may import only parts on a lower layer of LAYERS (docs/architecture.md, "Layers").
+"""
+
+import ast
+from collections import defaultdict
+from pathlib import Path
+
+PACKAGE = Path(__file__).resolve().parents[1] / "eyesim"  # the source, as the repository holds it
+
+# Lowest first. A part may import the parts of lower layers, and those before it on its own layer.
+LAYERS = [
+    ["paths", "protocol"],
+    ["scene"],
+    ["physics"],
+    ["robot"],
+    ["net", "world", "commands"],
+    ["viewer"],
+    ["core"],
+    ["programs", "record", "web"],
+    ["testing", "grade", "app"],
+]
+ENTRY_POINTS = {"__init__", "__main__"}  # the public API and `python -m eyesim` sit above everything
+
+
+def part_of(module: str) -> str | None:
+    """`eyesim.robot.build` -> `robot`; None for a module outside eyesim, the bare package, or a name
+    the package root defines (`from eyesim import __version__`)."""
+    names = module.split(".")
+    if names[0] != "eyesim" or len(names) < 2:
+        return None
+    if not ((PACKAGE / f"{names[1]}.py").exists() or (PACKAGE / names[1] / "__init__.py").exists()):
+        return None
+    return names[1]
+
+
+def imported_modules(node: ast.AST, module: str, is_package: bool) -> list[str]:
+    if isinstance(node, ast.Import):
+        return [alias.name for alias in node.names]
+    if isinstance(node, ast.ImportFrom):
+        if node.level:
+            base = module.split(".")
+            base = base[: len(base) - node.level + (1 if is_package else 0)]
+            target = ".".join(base + ([node.module] if node.module else []))
+        else:
+            target = node.module or ""
+        if target == "eyesim":  # `from eyesim import robot` imports the subpackage
+            return [f"eyesim.{alias.name}" for alias in node.names]
+        return [target]
+    return []
+
+
+def part_imports() -> dict[tuple[str, str], list[str]]:
+    """(importing part, imported part) -> the places, as 'file:line imports module'."""
+    edges: dict[tuple[str, str], list[str]] = defaultdict(list)
+    for path in sorted(PACKAGE.rglob("*.py")):
+        relative = path.relative_to(PACKAGE.parent)
+        is_package = path.name == "__init__.py"
+        module = ".".join(relative.with_suffix("").parts)
+        if is_package:
+            module = module.removesuffix(".__init__")
+        source = part_of(module) or "__init__"
+        if path.parent == PACKAGE and path.stem in ENTRY_POINTS:
+            source = path.stem
+        for node in ast.walk(ast.parse(path.read_text(), str(path))):
+            for target in imported_modules(node, module, is_package):
+                imported = part_of(target)
+                if imported and imported != source:
+                    edges[(source, imported)].append(f"{relative}:{node.lineno} imports {target}")
+    return edges
+
+
+def cycles(edges) -> list[list[str]]:
+    graph = defaultdict(set)
+    for a, b in edges:
+        graph[a].add(b)
+    found, seen = [], set()
+
+    def visit(part, trail):
+        if part in trail:
+            found.append(trail[trail.index(part):] + [part])
+            return
+        if part in seen:
+            return
+        for nxt in sorted(graph[part]):
+            visit(nxt, trail + [part])
+        seen.add(part)
+
+    for part in sorted(graph):
+        visit(part, [])
+    return found
+
+
+def describe(edges, pairs) -> str:
+    return "\n".join(f"{a} -> {b}:\n    " + "\n    ".join(edges[(a, b)]) for a, b in pairs)
+
+
+def test_no_import_cycle_between_parts():
+    edges = part_imports()
+    found = cycles(edges)
+    pairs = sorted({(c[i], c[i + 1]) for c in found for i in range(len(c) - 1)})
+    assert not found, "import cycles: " + "; ".join(" -> ".join(c) for c in found) + "\n" + describe(edges, pairs)
+
+
+def test_every_part_has_a_layer():
+    layered = {part for layer in LAYERS for part in layer}
+    parts = {p.stem if p.suffix == ".py" else p.name for p in PACKAGE.iterdir()
+             if (p.suffix == ".py" or (p / "__init__.py").exists())} - ENTRY_POINTS
+    assert parts == layered, f"parts without a layer: {sorted(parts - layered)}; layers without a part: {sorted(layered - parts)}"
+
+
+def test_parts_import_only_lower_layers():
+    rank = {part: (i, layer.index(part)) for i, layer in enumerate(LAYERS) for part in layer}
+    upward = sorted((a, b) for a, b in part_imports()
+                    if a not in ENTRY_POINTS and b in rank and a in rank
+                    and rank[b][0] >= rank[a][0] and not (rank[b][0] == rank[a][0] and rank[b][1] < rank[a][1]))
+    assert not upward, "imports of a part on the same or a higher layer:\n" + describe(part_imports(), upward)
+
+
+def test_the_scan_sees_lazy_and_relative_imports():
+    """The scan is what the layer checks rest on: imports inside functions count too."""
+    tree = ast.parse("def f():\n    from eyesim.web import server\n    import eyesim.core.engine\n")
+    found = [t for node in ast.walk(tree) for t in imported_modules(node, "eyesim.robot.build", False)]
+    assert found == ["eyesim.web", "eyesim.core.engine"]
+    relative = ast.parse("from ..scene import loader\n").body[0]
+    assert imported_modules(relative, "eyesim.robot.build", False) == ["eyesim.scene"]
