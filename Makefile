@@ -6,7 +6,7 @@
 PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
-SOURCES := $(shell find eyesim eye robios protocol -type f -not -path '*/__pycache__/*' 2>/dev/null) pyproject.toml
+SOURCES := $(shell find src robios protocol -type f -not -path '*/__pycache__/*' 2>/dev/null) pyproject.toml
 INSTALLED := $(VENV)/.installed
 
 .PHONY: demo test install viewer protocol schemas bench clean
@@ -50,7 +50,7 @@ system-packages:
 		fi; \
 	fi
 
-# Rebuild the browser bundle committed in eyesim/web/static (needs Node.js and npm).
+# Rebuild the browser bundle committed in src/eyesim/web/static (needs Node.js and npm).
 viewer:
 	cd web && npm ci --no-audit --no-fund && npm run build
 

@@ -6,7 +6,7 @@ A 2 m room with the real stop sign (corpus, 144 triangles) and the real S4blue r
 2. building the world (load + MuJoCo compile) with the models against with `model` removed;
 3. a 320x240 camera image, OpenGL and ray caster, with the models against without them.
 
-Run:  PYTHONPATH=. python3 bench/bench_meshes.py
+Run:  PYTHONPATH=src python3 bench/bench_meshes.py
 Prints a table and writes bench/results/meshes.json."""
 
 from __future__ import annotations

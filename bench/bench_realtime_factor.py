@@ -1,7 +1,7 @@
 """Benchmark: real-time factor of the simulation loop with 1, 10, 50 and 100 S4 robots driving
 under VW control, beside MuJoCo's bare mj_step on the same model in the same run.
 
-Run:  PYTHONPATH=. python3 bench/bench_realtime_factor.py [--robots 1 10 50 100] [--seconds 2]
+Run:  PYTHONPATH=src python3 bench/bench_realtime_factor.py [--robots 1 10 50 100] [--seconds 2]
 Prints a table and writes bench/results/realtime_factor.json.
 
 The simulation runs as `eyesim run --speed max` does (realtime clock, as fast as possible) for

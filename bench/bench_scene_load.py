@@ -1,6 +1,6 @@
 """Benchmark: load every real EyeSim scene file of the corpus; compare with just reading the bytes.
 
-Run:  PYTHONPATH=. python3 bench/bench_scene_load.py [--repeat N]
+Run:  PYTHONPATH=src python3 bench/bench_scene_load.py [--repeat N]
 Prints a table and writes bench/results/scene_load.json. Targets (issue "Scene files"): the whole
 corpus under 3 s, the largest world under 50 ms. Then large generated scenes at and below the
 limits (docs/file-formats.md, "Limits"): loading and building (MuJoCo model and robots) a world of

@@ -19,7 +19,7 @@ import layers
 ROOT = Path(__file__).resolve().parent.parent
 SPEC = ROOT / "protocol" / "protocol.json"
 VECTORS = ROOT / "protocol" / "vectors.json"
-PY_OUT = ROOT / "eyesim" / "protocol" / "generated.py"
+PY_OUT = ROOT / "src" / "eyesim" / "protocol" / "generated.py"
 C_OUT = ROOT / "robios" / "src" / "protocol_gen.h"
 C_VECTORS_OUT = ROOT / "robios" / "tests" / "vectors_gen.h"
 

@@ -10,7 +10,7 @@ import ast
 from collections import defaultdict
 from pathlib import Path
 
-PACKAGE = Path(__file__).resolve().parents[1] / "eyesim"  # the source, as the repository holds it
+PACKAGE = Path(__file__).resolve().parents[1] / "src" / "eyesim"  # the source, as the repository holds it
 
 # Lowest first. A part may import the parts of lower layers, and those before it on its own layer.
 LAYERS = [

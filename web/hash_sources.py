@@ -7,7 +7,7 @@ import hashlib
 from pathlib import Path
 
 WEB_DIR = Path(__file__).resolve().parent
-HASH_FILE = WEB_DIR.parent / "eyesim" / "web" / "static" / "source-hash.txt"
+HASH_FILE = WEB_DIR.parent / "src" / "eyesim" / "web" / "static" / "source-hash.txt"
 TOP_LEVEL_SOURCES = (
     "index.html",
     "robot-editor.html",

@@ -6,7 +6,7 @@ export default defineConfig({
   // Relative asset URLs: the page works wherever the simulator serves it.
   base: "./",
   build: {
-    outDir: "../eyesim/web/static",
+    outDir: "../src/eyesim/web/static",
     emptyOutDir: true,
     sourcemap: false,
     // three.js alone is over Vite's default 500 kB warning; one file is what we want.

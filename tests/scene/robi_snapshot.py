@@ -13,7 +13,7 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 CORPUS = HERE.parents[2] / "shared" / "corpus"
-BUILTIN_ROBOTS = HERE.parents[1] / "eyesim" / "data" / "robots"
+BUILTIN_ROBOTS = HERE.parents[1] / "src" / "eyesim" / "data" / "robots"
 
 
 def robi_files() -> dict[str, Path]:

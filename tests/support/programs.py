@@ -13,12 +13,9 @@ PROGRAMS = Path(__file__).resolve().parents[1] / "e2e" / "programs"
 
 
 def eyesim_command(*args: str) -> list[str]:
-    """`eyesim ARGS` run by the Python running the tests, importing the same eyesim package.
-
-    Not `python -m eyesim`: that puts the working directory first on sys.path, and from a source
-    checkout it would pick the source tree instead of the installed package `make test` tests."""
-    return [sys.executable, "-c", "import runpy, sys; del sys.path[0]; runpy.run_module('eyesim', run_name='__main__')",
-            *args]
+    """`eyesim ARGS` run by the Python running the tests, importing the installed eyesim package
+    (the source lives under src/, so no working directory can shadow it)."""
+    return [sys.executable, "-m", "eyesim", *args]
 
 
 def build(name: str, out_dir: Path, *flags: str) -> Path:

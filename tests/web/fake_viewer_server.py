@@ -17,7 +17,7 @@ from typing import Any
 from aiohttp import WSMsgType, web
 from PIL import Image, ImageDraw
 
-STATIC_DIR = Path(__file__).resolve().parents[2] / "eyesim" / "web" / "static"
+STATIC_DIR = Path(__file__).resolve().parents[2] / "src" / "eyesim" / "web" / "static"
 SNAPSHOT_PERIOD = 1 / 30
 STATUS_EVERY = 10  # snapshots
 

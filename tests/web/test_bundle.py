@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-STATIC_DIR = ROOT / "eyesim" / "web" / "static"
+STATIC_DIR = ROOT / "src" / "eyesim" / "web" / "static"
 
 
 def load_hash_sources():
@@ -23,7 +23,7 @@ def test_bundle_matches_sources():
     hash_sources = load_hash_sources()
     recorded = hash_sources.HASH_FILE.read_text().strip() if hash_sources.HASH_FILE.exists() else "(none)"
     assert recorded == hash_sources.source_hash(), (
-        "eyesim/web/static/ is stale: the viewer sources in web/ changed since the last build; "
+        "src/eyesim/web/static/ is stale: the viewer sources in web/ changed since the last build; "
         "run `make viewer` and commit eyesim/web/static/"
     )
 
