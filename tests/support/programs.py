@@ -13,9 +13,10 @@ PROGRAMS = Path(__file__).resolve().parents[1] / "e2e" / "programs"
 
 
 def eyesim_command(*args: str) -> list[str]:
-    """`eyesim ARGS` run by the Python running the tests, importing the installed eyesim package
-    (the source lives under src/, so no working directory can shadow it)."""
-    return [sys.executable, "-m", "eyesim", *args]
+    """`eyesim ARGS` as users run it: the console script installed beside the Python running the
+    tests. (Not `python -m eyesim`: that puts the working directory first on sys.path, where a
+    student's `traceback.py` would stand in for the standard library's.)"""
+    return [str(Path(sys.executable).with_name("eyesim")), *args]
 
 
 def build(name: str, out_dir: Path, *flags: str) -> Path:
