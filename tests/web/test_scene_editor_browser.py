@@ -86,7 +86,8 @@ def test_open_build_edit_undo_save_and_reopen(browser_context, simulator, worksp
     page.fill("#scene-search", "obstacles4k sim")
     page.wait_for_function("() => document.querySelectorAll('#scene-files button').length === 1")
     page.click("#scene-files button")
-    page.wait_for_selector("#scene-browser", state="hidden")
+    # Opening stops the arena's programs and builds the new world: seconds on a loaded 2-core machine.
+    page.wait_for_selector("#scene-browser", state="hidden", timeout=60_000)
     page.wait_for_function("() => window.eyesimViewer.scene().markers === 2")
     walls = viewer.state("scene")["walls"]
     assert walls > 4
@@ -285,7 +286,7 @@ def test_a_new_arena_built_in_the_page_is_saved_and_reopened_the_same(browser_co
     page.fill("#scene-search", "built.json")  # not built.world.json, which is listed too (a world)
     page.wait_for_function("() => document.querySelectorAll('#scene-files button').length === 1")
     page.click("#scene-files button")
-    page.wait_for_selector("#scene-browser", state="hidden")
+    page.wait_for_selector("#scene-browser", state="hidden", timeout=60_000)  # programs stop, the world is built
     reopened = editor_state(page)["items"]
     assert reopened["robots"] == built["robots"] and reopened["objects"] == built["objects"]
     assert reopened["walls"] == built["walls"] and reopened["floor"] == built["floor"] == {"width": 2000, "height": 2000}
