@@ -1,7 +1,4 @@
-"""The omni drive's wheels, motors and kinematics (its declaration: drives/omni.py).
-
-Omni drive (OMNI_DRIVE): four mecanum wheels (motors/encoders 1 front left, 2 front right, 3 back left,
-4 back right), so the robot can drive in any direction and turn at the same time.
+"""The omni drive's wheels, motors and kinematics (its declaration: eyesim/scene/drives/omni.py).
 
 A mecanum wheel's rollers sit at 45 degrees: the wheel only pushes along its bottom roller's axis
 and rolls freely across it. That is modelled exactly by a plain wheel turned by 45 degrees that
