@@ -6,6 +6,7 @@ once per process, on the first camera use, and announced in one line on stderr."
 
 from __future__ import annotations
 
+import concurrent.futures
 import logging
 import os
 import sys
@@ -143,7 +144,14 @@ def prepare(world, width: int = 0, height: int = 0) -> None:
     should not pay a second of CPU for an OpenGL context), so that a program's first CAMGet
     does not hold up the simulation thread (and every other program) while an OpenGL context is
     made and the world copied to it (740 ms)."""
-    threading.Thread(target=_prepare, args=(world, width, height), name="eyesim-render-prepare", daemon=True).start()
+    _preparer().submit(_prepare, world, width, height)
+
+
+@lru_cache(maxsize=None)
+def _preparer() -> concurrent.futures.ThreadPoolExecutor:
+    """One thread for all preparing, made at the first CAMInit: a new thread per CAMInit would give
+    the allocator a new arena each time, and its freed memory stays with the process."""
+    return concurrent.futures.ThreadPoolExecutor(max_workers=1, thread_name_prefix="eyesim-render-prepare")
 
 
 def _prepare(world, width: int, height: int) -> None:
