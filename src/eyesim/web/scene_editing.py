@@ -181,35 +181,30 @@ def _kind(op: dict) -> str:
     return kind
 
 
-def add_robot(draft: Draft, op: dict, locate) -> Draft:
-    robot_files = draft.robot_files
-    if isinstance(op.get("file"), dict):  # a .robi file under the roots
+def _type_name(op: dict, locate, files: tuple[str, ...], load, builtin_path, builtin_names, suffix: str):
+    """The type an add-robot/add-object names: a file under the roots (listed in `files` once) or a
+    built-in; returns (type name, files)."""
+    if isinstance(op.get("file"), dict):
         path = locate(op["file"])
-        name = _definition(load_robot_type, path).name
-        if str(path) not in robot_files:
-            robot_files += (str(path),)
-    elif isinstance(op.get("type"), str) and builtins.robot_path(op["type"]) is not None:
-        name = builtins.robot_path(op["type"]).stem
-    else:
-        raise EditError(f"add-robot: unknown robot type {op.get('type')!r}: expected one of "
-                        f"{', '.join(builtins.robot_names())} or a .robi file")
+        name = _definition(load, path).name
+        return name, files if str(path) in files else files + (str(path),)
+    if isinstance(op.get("type"), str) and builtin_path(op["type"]) is not None:
+        return builtin_path(op["type"]).stem, files
+    raise EditError(f"{op.get('op')}: unknown {op.get('op', '').removeprefix('add-')} type {op.get('type')!r}: "
+                    f"expected one of {', '.join(builtin_names())} or {suffix} file")
+
+
+def add_robot(draft: Draft, op: dict, locate) -> Draft:
+    name, robot_files = _type_name(op, locate, draft.robot_files, load_robot_type, builtins.robot_path,
+                                   builtins.robot_names, "a .robi")
     program = str(locate(op["program"])) if isinstance(op.get("program"), dict) else None
     return dataclasses.replace(draft, robot_files=robot_files,
                                robots=draft.robots + (RobotItem(name, _pose(op), program),))
 
 
 def add_object(draft: Draft, op: dict, locate) -> Draft:
-    object_files = draft.object_files
-    if isinstance(op.get("file"), dict):  # an .esObj file under the roots
-        path = locate(op["file"])
-        name = _definition(load_object_type, path).name
-        if str(path) not in object_files:
-            object_files += (str(path),)
-    elif isinstance(op.get("type"), str) and builtins.object_path(op["type"]) is not None:
-        name = builtins.object_path(op["type"]).stem
-    else:
-        raise EditError(f"add-object: unknown object type {op.get('type')!r}: expected one of "
-                        f"{', '.join(builtins.object_names())} or an .esObj file")
+    name, object_files = _type_name(op, locate, draft.object_files, load_object_type, builtins.object_path,
+                                    builtins.object_names, "an .esObj")
     return dataclasses.replace(draft, object_files=object_files,
                                objects=draft.objects + (ObjectItem(name, _pose(op)),))
 
