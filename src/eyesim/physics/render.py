@@ -6,7 +6,6 @@ once per process, on the first camera use, and announced in one line on stderr."
 
 from __future__ import annotations
 
-import concurrent.futures
 import logging
 import os
 import sys
@@ -139,19 +138,11 @@ def camera_renderer():
 
 
 def prepare(world, width: int = 0, height: int = 0) -> None:
-    """Start the process's renderer and make `world` ready to draw at this size, on a thread of
-    its own: a camera calls it at CAMInit (not when built: a run whose programs never use the camera
-    should not pay a second of CPU for an OpenGL context), so that a program's first CAMGet
-    does not hold up the simulation thread (and every other program) while an OpenGL context is
-    made and the world copied to it (740 ms)."""
-    _preparer().submit(_prepare, world, width, height)
-
-
-@lru_cache(maxsize=None)
-def _preparer() -> concurrent.futures.ThreadPoolExecutor:
-    """One thread for all preparing, made at the first CAMInit: a new thread per CAMInit would give
-    the allocator a new arena each time, and its freed memory stays with the process."""
-    return concurrent.futures.ThreadPoolExecutor(max_workers=1, thread_name_prefix="eyesim-render-prepare")
+    """Start the process's renderer and make `world` ready to draw at this size: a camera calls it
+    at CAMInit (not when built: a run whose programs never use the camera should not pay a second
+    of CPU for an OpenGL context). On the simulation thread: an OpenGL context made on a thread of
+    its own crashed the process at exit when the run ended while it was being made."""
+    _prepare(world, width, height)
 
 
 def _prepare(world, width: int, height: int) -> None:
