@@ -31,6 +31,13 @@ def test_every_operation_but_the_sessions_own_has_a_handler():
     assert missing == []
 
 
+def test_a_handler_module_may_only_handle_its_own_groups_operations(monkeypatch):
+    from eyesim.commands import psd
+    monkeypatch.setitem(psd.HANDLERS, "LIDAR_GET", psd.HANDLERS["PSD_GET"])
+    with pytest.raises(RuntimeError, match="eyesim.commands.psd handles LIDAR_GET, an operation of group lidar"):
+        commands._build_registry()
+
+
 def test_operation_codes_are_unique_and_fit_the_header():
     codes = [op.code for op in g.OPS.values()]
     assert len(codes) == len(set(codes))

@@ -50,6 +50,14 @@ def test_each_keyword_and_field_belongs_to_one_part():
     assert ["name", "source"] + fields == [f.name for f in dataclasses.fields(RobotType)]
 
 
+def test_the_components_a_part_names_are_what_the_robot_builder_calls():
+    from eyesim.robot.components import FACTORIES  # imports the physics: only here, not when reading
+    named = [name for part in PARTS for name in part.components]
+    assert {"eyesim.robot.components.psd:create", "eyesim.robot.components.gripper:create"} <= set(named)
+    called = {f"{factory.__module__}:{factory.__name__}" for factory in FACTORIES}
+    assert set(named) <= called
+
+
 def test_the_schema_is_assembled_from_the_parts_fragments():
     published = schema("robot")
     fields = {name for part in PARTS for name, _, _ in part.fields}

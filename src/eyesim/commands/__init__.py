@@ -1,56 +1,30 @@
 """Registry of RoBIOS operations: one handler module per RoBIOS group, looked up by op code.
 
+The groups are protocol.json's: the operations of group `psd` are handled by the HANDLERS table
+of `eyesim.commands.psd`, so a new group is one new module here and needs no registry line (the
+session group, the handshake, is the engine's own).
+
 A handler is `handler(sim, robot, request) -> reply values | Pending`; it raises CommandError for
 requests it cannot serve. The network layer never knows what an operation means."""
 
 from __future__ import annotations
 
-from eyesim.commands import audio
-from eyesim.commands import io
-from eyesim.commands import irtv
-from eyesim.commands import cam
-from eyesim.commands import key  # one import and one GROUP_MODULES line per group module
-from eyesim.commands import lcd
-from eyesim.commands import lidar
-from eyesim.commands import motor
-from eyesim.commands import os
-from eyesim.commands import psd
-from eyesim.commands import radio
-from eyesim.commands import ser
-from eyesim.commands import servo
-from eyesim.commands import sim
-from eyesim.commands import timer
-from eyesim.commands import vw
+import importlib
+
 from eyesim.commands.errors import CommandError
 from eyesim.protocol import generated
 
-GROUP_MODULES = (
-    lcd,
-    key,
-    os,
-    timer,
-    ser,
-    audio,
-    psd,
-    lidar,
-    servo,
-    motor,
-    cam,
-    radio,
-    vw,
-    io,
-    irtv,
-    sim,
-)
+ENGINE_GROUP = "session"  # HELLO and THREADS: answered by the engine itself
 
 
 def _build_registry() -> dict:
     registry = {}
-    for module in GROUP_MODULES:
+    for group in sorted({op.group for op in generated.OPS.values()} - {ENGINE_GROUP}):
+        module = importlib.import_module(f"{__name__}.{group}")
         for name, handler in module.HANDLERS.items():
             op = generated.OPS_BY_NAME[name]
-            if op.code in registry:
-                raise RuntimeError(f"operation {name} has two handlers")
+            if op.group != group:
+                raise RuntimeError(f"{module.__name__} handles {name}, an operation of group {op.group}")
             registry[op.code] = handler
     return registry
 

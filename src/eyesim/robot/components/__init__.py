@@ -1,39 +1,36 @@
 """Registry of component kinds: each factory looks at a robot type and returns the components it needs.
 
-Adding a component kind = one new module with a `create(context)` function + one line here. A
-robot's drive (wheels, motors, steering) comes from its declared drive archetype (scene/drives),
-built by robot/drives."""
+A robot is built from, in this order: its drive (the wheels its declared drive archetype names,
+scene/drives, built by robot/drives) and the VW controller that drives it; the components of its
+parts, which each part declaration names (scene/parts: a new part kind needs no line here); and
+the parts of the robot's computer that every robot has, listed below (a new one of those = one new
+module with a `create(context)` function + one line here)."""
+
+from __future__ import annotations
+
+import importlib
 
 from eyesim.robot import drives
-from eyesim.robot.components import camera  # one import and one FACTORIES line per kind
-from eyesim.robot.components import thrusters
-from eyesim.robot.components import buoyancy
-from eyesim.robot.components import arm
-from eyesim.robot.components import gripper
 from eyesim.robot.components import analog_io
 from eyesim.robot.components import battery
 from eyesim.robot.components import digital_io
 from eyesim.robot.components import irtv
 from eyesim.robot.components import keys
 from eyesim.robot.components import lcd
-from eyesim.robot.components import lidar
-from eyesim.robot.components import psd
 from eyesim.robot.components import radio
 from eyesim.robot.components import serial_ports
 from eyesim.robot.components import speaker
 from eyesim.robot.components import timers
 from eyesim.robot.components import vw
+from eyesim.scene.parts import PARTS
 
-FACTORIES = (
-    drives.create,
-    vw.create,  # after the drive: it drives any drive with kinematics
-    thrusters.create,
-    buoyancy.create,
-    arm.create,
-    gripper.create,  # after arm: the fingers sit on its last link
-    psd.create,
-    lidar.create,
-    camera.create,
+
+def _factory(name: str):
+    module, function = name.split(":")
+    return getattr(importlib.import_module(module), function)
+
+
+COMPUTER = (
     radio.create,
     lcd.create,
     keys.create,
@@ -44,4 +41,11 @@ FACTORIES = (
     analog_io.create,
     battery.create,
     irtv.create,
+)
+
+FACTORIES = (
+    drives.create,
+    vw.create,  # after the drive: it drives any drive with kinematics
+    *(_factory(name) for part in PARTS for name in part.components),
+    *COMPUTER,
 )

@@ -137,6 +137,7 @@ def json_locations(robot, positions) -> dict:
 
 PART = Part(
     "arm",
+    components=("eyesim.robot.components.arm:create", "eyesim.robot.components.gripper:create",),
     fields=(("arm", ArmSpec | None, None),),
     keywords={"arm": read_arm, "joint": read_joint, "gripper": read_gripper},
     write=write,

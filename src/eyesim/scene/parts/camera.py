@@ -148,6 +148,7 @@ def write(robot) -> list[str]:
 
 PART = Part(
     "camera",
+    components=("eyesim.robot.components.camera:create",),
     fields=(("camera", CameraSpec | None, None),),
     keywords={"camera": read_camera, "fov": _lens("fov"), "fisheye": _lens("fisheye")},
     write=write,

@@ -43,6 +43,7 @@ def write(robot) -> list[str]:
 
 PART = Part(
     "lidar",
+    components=("eyesim.robot.components.lidar:create",),
     fields=(("lidar", LidarSpec | None, None),),
     keywords={"lidar": read_lidar},
     write=write,

@@ -34,7 +34,9 @@ class Part:
     contradictions (errors) and what a usable robot lacks (warnings) once the robot type is read
     from either format, `at(key)` giving where a key was written; returns the fields it fills in.
     `servos(robot)`: (servo number, user, location key) of each servo the part drives (the robot
-    type checks that no two parts share one)."""
+    type checks that no two parts share one). `components`: the factories that build what the part
+    does in the simulation, as "module:function" (robot/components/; named, not imported, so that
+    reading files never loads the physics), called in this order with the robot's build context."""
 
     name: str
     fields: tuple[tuple[str, Any, Any], ...]
@@ -46,6 +48,7 @@ class Part:
     json_locations: Callable[[Any, Any], dict[str, Location]] = lambda robot, positions: {}
     check: Callable[[Any, Diagnostics, Callable[[str], Location]], dict] = lambda robot, diagnostics, at: {}
     servos: Callable[[Any], list[tuple[int, str, str]]] = lambda robot: []
+    components: tuple[str, ...] = ()
 
 
 class PartReader(KeywordReader):

@@ -106,6 +106,7 @@ def write(robot) -> list[str]:
 
 PART = Part(
     "psd",
+    components=("eyesim.robot.components.psd:create",),
     fields=(("psds", tuple[PsdSpec, ...], ()),),
     keywords={"psd": read_psd},
     write=write,

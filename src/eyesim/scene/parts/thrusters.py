@@ -61,6 +61,7 @@ def write(robot) -> list[str]:
 
 PART = Part(
     "thrusters",
+    components=("eyesim.robot.components.thrusters:create",),
     fields=(("thrusters", tuple[ThrusterSpec, ...], ()),),
     keywords={"thruster": read_thruster},
     write=write,

@@ -70,6 +70,7 @@ def write(robot) -> list[str]:
 
 PART = Part(
     "water",
+    components=("eyesim.robot.components.buoyancy:create",),
     fields=(("buoyancy", BuoyancySpec | None, None), ("drag", DragSpec | None, None)),
     keywords={"buoyancy": read_buoyancy, "drag": read_drag},
     write=write,
