@@ -1,5 +1,6 @@
 """A real C program, built with `eyesim cc`, drives S4 in a real `eyesim run` process."""
 
+import json
 import math
 import os
 import signal
@@ -121,3 +122,30 @@ def test_the_bundled_demo_explores_and_ends_on_key4(tmp_path):
     path = read_trajectory(tmp_path / "path.csv")[1]
     travelled = sum(math.hypot(b["x"] - a["x"], b["y"] - a["y"]) for a, b in zip(path, path[1:]))
     assert travelled > 0.8  # it explored: about 250 mm/s for most of 6 s
+
+
+def _log(recording: Path) -> list[tuple[int, str]]:
+    from mcap.reader import make_reader
+    with open(recording, "rb") as file:
+        return [(message.log_time, json.loads(message.data)["message"])
+                for _, _, message in make_reader(file).iter_messages(topics=["/log"])]
+
+
+def test_program_output_is_stamped_when_the_program_wrote_it(tmp_path):
+    """Deterministic runs: a line is taken in before the program's next call, at the simulation
+    time it was written, however late the operating system lets the simulator read the pipe; the
+    console and the recording repeat exactly."""
+    program = build("print_as_time_goes", tmp_path)
+    logs = []
+    for name in ("first", "second"):
+        result = run_headless("--program", f"1={program}", "--record", f"{name}.mcap", cwd=tmp_path)
+        assert result.returncode == 0, result.stderr
+        logs.append(_log(tmp_path / f"{name}.mcap"))
+    assert logs[0] == logs[1]
+    lines = [(time_ns, text) for time_ns, text in logs[0] if text.startswith("at ")]
+    assert len(lines) == 40
+    for time_ns, text in lines:
+        written_ms = int(text.split()[1])
+        assert written_ms - 2 <= time_ns / 1e6 <= written_ms + 4, (time_ns, text)  # within its step and call
+    halves = [text for _, text in logs[0] if "half" in text]
+    assert halves == ["first half, ", "second half"]  # broken where the program made its call

@@ -75,6 +75,9 @@ class Simulation:
         self._held: list = []  # realtime: heap of (due_us, seq, session, frame), replies held for the call time
         # called as observer(robot, request, reply) after a request was answered at once (recorders)
         self.request_observers: list = []
+        # Launched programs' output by process id: deterministic mode passes on what a program wrote
+        # before each of its calls, unfinished lines too (programs/program_output.py).
+        self.program_outputs: dict = {}
         self._build()
 
     # -- building ------------------------------------------------------------------------------
@@ -273,6 +276,8 @@ class Simulation:
                 return
 
     def _take_request(self, session: Session, at_us: int | None = None) -> None:
+        if self.clock.deterministic:
+            self._flush_output(session)
         request = session.queued.popleft()
         session.connection.resume()  # room in its queue again
         request.time_us = max(self.time_us, session.local_time_us) if at_us is None else at_us
@@ -479,8 +484,14 @@ class Simulation:
         if not session.closed:
             session.connection.send(frame)
 
+    def _flush_output(self, session: Session) -> None:
+        output = self.program_outputs.get(session.pid) if session.pid else None
+        if output is not None:
+            output.flush()
+
     def drop_session(self, session: Session) -> None:
         """A program's connection ended (or is ended): forget it; the run may be over."""
+        self._flush_output(session)
         session.closed = True
         session.pending.clear()
         session.queued.clear()

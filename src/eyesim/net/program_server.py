@@ -3,7 +3,8 @@
 The simulation thread waits on the program sockets with a selector between physics steps: a
 request is read, decoded, carried out and answered on that one thread, with no hand-off between
 threads (each hand-off cost as much as the loopback round trip itself). Other threads reach the
-simulation through its inbox and wake the selector through a socket pair.
+simulation through its inbox and wake the selector through a socket pair. The selector also
+watches the launched programs' output pipes (programs/program_output.py).
 
 Every socket is non-blocking. A connection reassembles its own frames, so a client that sends half
 a frame and stalls holds up nobody. Replies go straight into the socket; what the kernel does not
@@ -207,6 +208,16 @@ class ProgramSockets:
         self.selector.unregister(listener)
         listener.close()
 
+    def watch(self, file, on_readable) -> None:
+        """Call `on_readable()` on this thread whenever `file` has data (a program's output pipe)."""
+        self.selector.register(file, selectors.EVENT_READ, on_readable)
+
+    def unwatch(self, file) -> None:
+        try:
+            self.selector.unregister(file)
+        except (KeyError, ValueError):
+            pass  # not watched (any more)
+
     def poll(self, timeout: float | None) -> None:
         """Wait up to `timeout` seconds (0: just look) for sockets, then serve what is ready."""
         for key, events in self.selector.select(timeout):
@@ -215,6 +226,8 @@ class ProgramSockets:
                 self._drain_wake()
             elif isinstance(target, socket.socket):
                 self._accept(target)
+            elif not isinstance(target, ProgramConnection):
+                target()  # a watched file
             else:
                 if events & selectors.EVENT_WRITE and not target.closed:
                     target.flush()

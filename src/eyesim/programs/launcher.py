@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from eyesim import paths
+from eyesim.programs.program_output import ProgramOutput
 
 OUTPUT_LIMIT = 1 << 20  # characters of a program's output kept per stream (a runaway printf loop)
 
@@ -109,7 +110,8 @@ class Launcher:
         self.runs: list[ProgramRun] = []
         self._lock = threading.Lock()
         self._threads: list[threading.Thread] = []
-        self._run_threads: dict[int, list[threading.Thread]] = {}  # id(run) -> its output and exit threads
+        self._waiters: dict[int, threading.Thread] = {}  # id(run) -> the thread that waits for its exit
+        self._outputs: dict[int, ProgramOutput] = {}  # id(run) -> its output pipes, until it exited
 
     def start(self, robot_id: int, path: str | Path, options: ProgramOptions = ProgramOptions()) -> ProgramRun:
         run = ProgramRun(robot_id, Path(path), options=options)
@@ -142,17 +144,24 @@ class Launcher:
             self.sim.call(lambda sim: sim.program_gone(robot_id_))
             return run
         self.sim.call(lambda sim: sim.events.program(robot_id_, "started", run.name, None))
+        output = ProgramOutput({"stdout": run.process.stdout, "stderr": run.process.stderr},
+                               lambda stream, text: self._show(run, stream, text))
+        self._outputs[id(run)] = output
+        pid = run.process.pid
+
+        def watch(sim):
+            output.watch(sim.network)
+            sim.program_outputs[pid] = output
+
+        self.sim.on_loop(watch)
         if options.stdin is not None:
             feeder = threading.Thread(target=self._feed, args=(run,), daemon=True)
             feeder.start()
             self._threads.append(feeder)
-        threads = [threading.Thread(target=self._forward, args=(run, stream), daemon=True)
-                   for stream in ("stdout", "stderr")]
-        threads.append(threading.Thread(target=self._wait, args=(run,), daemon=True))
-        self._threads += threads
-        self._run_threads[id(run)] = threads  # before they start: _wait looks its output threads up
-        for thread in threads:
-            thread.start()
+        waiter = threading.Thread(target=self._wait, args=(run,), daemon=True)
+        self._threads.append(waiter)
+        self._waiters[id(run)] = waiter
+        waiter.start()
         return run
 
     def settle(self, wait: float = 0.0) -> None:
@@ -167,8 +176,8 @@ class Launcher:
                 except subprocess.TimeoutExpired:
                     continue
             if run.process.poll() is not None:
-                for thread in self._run_threads.get(id(run), ()):
-                    thread.join(timeout=2.0)
+                self._waiters[id(run)].join(timeout=2.0)
+                self._take_output(run)
 
     def _feed(self, run: ProgramRun) -> None:
         data = run.options.stdin
@@ -178,13 +187,28 @@ class Launcher:
         except OSError:
             pass  # the program ended without reading all of it
 
-    def _forward(self, run: ProgramRun, stream: str) -> None:
-        pipe = getattr(run.process, stream)
-        for raw in iter(pipe.readline, b""):
-            self._print(run, stream, raw.decode("utf-8", errors="replace"))
-        pipe.close()
+    def _take_output(self, run: ProgramRun) -> None:
+        """The program exited: the rest of its output, and why it ended if it crashed. On the
+        simulation thread, or while no loop runs."""
+        output = self._outputs.pop(id(run), None)
+        if output is not None:
+            output.finish()  # its last words first, then why it ended
+            self.sim.program_outputs.pop(run.process.pid, None)
+            if run.signal is not None and not run.stopped_by_us:
+                self._show(run, "stderr", f"eyesim: {run.name} {crash_reason(run.signal)}\n")
+
+    def _show(self, run: ProgramRun, stream: str, text: str) -> None:
+        """Output read on the simulation thread (or while no loop runs): shown at this simulation time."""
+        self._keep(run, stream, text)
+        self.sim.events.console(run.robot_id, stream, text)
 
     def _print(self, run: ProgramRun, stream: str, text: str) -> None:
+        """The launcher's own messages about a program, from any thread."""
+        self._keep(run, stream, text)
+        robot_id = run.robot_id
+        self.sim.call(lambda sim: sim.events.console(robot_id, stream, text))
+
+    def _keep(self, run: ProgramRun, stream: str, text: str) -> None:
         with self._lock:
             kept = sum(map(len, run.output[stream]))
             if kept + len(text) <= OUTPUT_LIMIT:
@@ -197,18 +221,13 @@ class Launcher:
                 target = sys.stdout if stream == "stdout" else sys.stderr
                 target.write(f"[robot {run.robot_id}] {text.rstrip(chr(10))}\n")
                 target.flush()
-        robot_id = run.robot_id
-        self.sim.call(lambda sim: sim.events.console(robot_id, stream, text))
 
     def _wait(self, run: ProgramRun) -> None:
         run.exit_code = run.process.wait()
         robot_id = run.robot_id
-        if run.signal is not None and not run.stopped_by_us:
-            for thread in self._run_threads.get(id(run), ())[:2]:
-                thread.join(timeout=2.0)  # its last words first, then why it ended
-            self._print(run, "stderr", f"eyesim: {run.name} {crash_reason(run.signal)}\n")
 
         def exited(sim):
+            self._take_output(run)
             sim.events.program(robot_id, "exited", run.name, run.exit_code)
             sim.program_gone(robot_id)
 
@@ -237,8 +256,7 @@ class Launcher:
             run.process.wait()
         if run.options.own_group:
             _kill_group(run.process.pid)
-        for thread in self._run_threads.get(id(run), ()):
-            thread.join(timeout=grace)
+        self._waiters[id(run)].join(timeout=grace)
 
     def latest(self, robot_id: int) -> ProgramRun | None:
         """The robot's most recent program run, if it had one."""
@@ -270,6 +288,9 @@ class Launcher:
                     _kill_group(run.process.pid)  # whatever it started in its group
         for thread in self._threads:
             thread.join(timeout=grace)
+        for run in self.runs:  # the loop has ended: what they printed last is taken in here
+            if run.process is not None:
+                self._take_output(run)
 
 
 
