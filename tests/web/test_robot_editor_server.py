@@ -114,3 +114,26 @@ def test_a_robot_saved_elsewhere_still_finds_its_model(server, tmp_path):
     assert status == 200 and saved["loads"], saved
     assert "model ../robots/meshes/cube.obj" in (root / "copies" / "Box.robi").read_text()
     assert not [p for p in saved["problems"] if "model" in p["message"]]
+
+
+def test_previews_and_test_drives_give_back_their_descriptors(server):
+    """Each check builds a preview simulation and each drive a scratch one: the ones replaced
+    close their sockets and selector at once, not whenever the garbage collector runs."""
+    import gc
+    import os
+
+    status, opened = call(server, "POST", "/open", {"source": "builtin:S4"})
+    assert status == 200
+    gc.disable()  # what is left open must be closed by the editor, not collected
+    try:
+        call(server, "POST", "/check", opened)
+        call(server, "POST", "/drive/start", opened)
+        before = len(os.listdir("/proc/self/fd"))
+        for _ in range(15):
+            assert call(server, "POST", "/check", opened)[0] == 200
+            assert call(server, "POST", "/drive/start", opened)[0] == 200
+        after = len(os.listdir("/proc/self/fd"))
+    finally:
+        gc.enable()
+        call(server, "POST", "/drive/stop", {})
+    assert after - before < 5, (before, after)

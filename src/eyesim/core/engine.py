@@ -513,6 +513,13 @@ class Simulation:
                 not any(s.robot is not None for s in self.sessions):
             self.stop()
 
+    def close(self) -> None:
+        """Let go of the program sockets and the selector's descriptors (a simulation that is thrown
+        away, such as the robot editor's previews, does not hold them until garbage collection).
+        The world stays readable; the loop cannot run again."""
+        self.shutdown_sessions()
+        self.network.close()
+
     def shutdown_sessions(self) -> None:
         self.network.close_all()
         for session in list(self.sessions):

@@ -272,6 +272,13 @@ class ProgramSockets:
         for connection in list(self.connections):
             connection.close()
 
+    def close(self) -> None:
+        """Close every connection, the selector and the wake-up pair (the simulation is done with)."""
+        self.close_all()
+        self.selector.close()
+        self._wake_read.close()
+        self._wake_write.close()
+
 
 class ProgramServer:
     """Listens for programs on host:port (port 0 = any free port; see `port` once started). The

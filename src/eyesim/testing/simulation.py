@@ -327,8 +327,8 @@ class Simulation:
             return
         self._closed = True
         self.stop_programs()
-        self.engine.shutdown_sessions()
         self._server.stop()
+        self.engine.close()
         if self._tmp is not None:
             shutil.rmtree(self._tmp, ignore_errors=True)
 

@@ -323,6 +323,8 @@ class TestDrive:
     def stop(self) -> None:
         self.sim.stop()
         self.thread.join(timeout=5)
+        if not self.thread.is_alive():
+            self.sim.close()
 
     def _watch(self, sim) -> None:
         """Once a simulated second: a test drive nobody looks at any more ends by itself."""
@@ -476,6 +478,8 @@ class RobotEditor:
         async with self.lock:
             floor = max(PREVIEW_FLOOR, 3 * max(robot.length, robot.width))
             sim = await _off_loop(build, resolved_model(robot, origin), floor)
+            if self.preview is not None:
+                self.preview.close()
             self.preview = sim
             preview = await _off_loop(preview_of, sim, f"{PREFIX}/mesh/preview")
         return {"problems": problems, "preview": preview, "robi": write_robi(robot)}
