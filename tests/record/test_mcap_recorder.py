@@ -193,3 +193,18 @@ def _decode_image(data: str) -> np.ndarray:
     import io
 
     return np.asarray(Image.open(io.BytesIO(base64.b64decode(data))).convert("RGB"))
+
+
+def test_a_replaced_scene_goes_on_in_the_next_file(tmp_path):
+    (tmp_path / "two.sim").write_text("S4 500 500 0\nS4 1500 500 90\n")
+    sim = Simulation(load_scene(DEFAULT_SCENE), Clock(DETERMINISTIC))
+    with Recorder(sim, tmp_path / "run.mcap") as recorder:
+        sim.run(until=0.2)
+        sim.replace_scene(load_scene(tmp_path / "two.sim"))
+        sim.run(until=0.5)
+    assert recorder.paths == [tmp_path / "run.mcap", tmp_path / "run-2.mcap"]
+    with Recording(tmp_path / "run.mcap") as first, Recording(tmp_path / "run-2.mcap") as second:
+        assert first.robot_ids == [1] and first.end_us <= 200_000
+        assert second.robot_ids == [1, 2]
+        assert second.start_us == 200_000 and second.end_us >= 498_000
+        assert second.snapshot_at(400_000)["robots"][1]["pos"][:2] == pytest.approx([1.5, 0.5], abs=0.01)

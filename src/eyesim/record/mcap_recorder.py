@@ -12,6 +12,7 @@ import base64
 import dataclasses
 import io
 import json
+import logging
 import math
 import queue
 import threading
@@ -67,11 +68,18 @@ def period_us(rate: float, step_us: int, what: str) -> int:
     return steps * step_us
 
 
+log = logging.getLogger("eyesim")
+
+
 class Recorder:
     """Records `sim` into the MCAP file `path` from now until `close()` (or the end of a `with`).
 
     `pose_rate`: samples per simulated second of every pose and robot state (default 100: the
-    CSV's rows); `lcd_rate`: at most this many LCD images per robot and simulated second."""
+    CSV's rows); `lcd_rate`: at most this many LCD images per robot and simulated second.
+
+    A file describes one scene. When another scene replaces the running one (the viewer's scene
+    browser or editor), this file is finished and the recording goes on in the next one,
+    `<name>-2.mcap`, `<name>-3.mcap` ... (`paths` lists them)."""
 
     wants_lcd = False  # LCDs are sampled on simulation time, not at the viewer's publish ticks
 
@@ -79,24 +87,41 @@ class Recorder:
                  lcd_rate: float = DEFAULT_LCD_RATE):
         self.sim = sim
         self.path = Path(path)
+        self.paths = [self.path]
         self.pose_period_us = period_us(pose_rate, sim.step_us, "pose rate")
         self.lcd_period_us = period_us(lcd_rate, sim.step_us, "LCD rate")
+        self._closed = False
+        self._open()
+        sim.step_observers.append(self)
+        sim.request_observers.append(self.on_request)
+        sim.events.subscribe(self)
+
+    def _open(self) -> None:
+        """Start writing `self.path`: the scene as it is now, then what happens."""
         self._file = open(self.path, "wb")
         self._writer = Writer(self._file, compression=CompressionType.ZSTD)
         self._channels: dict[str, int] = {}
         self._sequence: dict[int, int] = {}
         self._lcd_versions: dict[int, int] = {}
-        self._next_lcd_us = sim.time_us
+        self._next_lcd_us = self.sim.time_us
         self._queue: queue.Queue = queue.Queue(QUEUE_LENGTH)
         self._failure: BaseException | None = None
-        self._closed = False
         self._start_file()
         self._thread = threading.Thread(target=self._write_loop, name="eyesim-recorder", daemon=True)
         self._thread.start()
-        self._sample_lcds(sim)
-        sim.step_observers.append(self)
-        sim.request_observers.append(self.on_request)
-        sim.events.subscribe(self)
+        self._sample_lcds(self.sim)
+
+    def _next_scene(self) -> None:
+        """Another scene replaced the running one: finish this file, go on in the next."""
+        try:
+            self._finish_file(last_lcds=False)  # the robots whose LCDs it has are gone
+        except OSError as error:  # this file is lost (a full disk); the next one may still work
+            log.error("%s", error)
+        stem = self.paths[0].stem
+        self.path = self.paths[0].with_name(f"{stem}-{len(self.paths) + 1}{self.paths[0].suffix}")
+        self.paths.append(self.path)
+        log.info("the scene was replaced: the recording goes on in %s", self.path)
+        self._open()
 
     def __enter__(self) -> "Recorder":
         return self
@@ -190,6 +215,9 @@ class Recorder:
 
     def on_event(self, message: dict) -> None:
         kind, now = message["type"], self.sim.time_us
+        if kind == "new-scene":
+            self._next_scene()
+            return
         if kind == "input":
             values = {k: v for k, v in message.items() if k != "type"}
             self._put(schemas.robot_topic(message["robot"], "input"), now, _json(values))
@@ -219,7 +247,12 @@ class Recorder:
             sim.request_observers.remove(self.on_request)
         if self in sim.events.listeners:
             sim.events.unsubscribe(self)
-        self._sample_lcds(sim)
+        self._finish_file()
+
+    def _finish_file(self, last_lcds: bool = True) -> None:
+        """What the LCDs show now, then the file's end (its index)."""
+        if last_lcds:
+            self._sample_lcds(self.sim)
         self._queue.put(None)
         self._thread.join()
         try:
