@@ -82,7 +82,8 @@ def route_answer_problems(route: str, status: int, body) -> list[str]:
     """Everything wrong with what `route` answered (for tests), [] when it follows the schema: its
     response, or a RouteError for a refusal."""
     name = _definition(ROUTES[route]["response"]) if status < 400 else "RouteError"
-    return [_describe(error, f"{route} ({status})") for error in _validator(name).iter_errors(body)]
+    problems = [_describe(error, f"{route} ({status})") for error in _validator(name).iter_errors(body)]
+    return list(dict.fromkeys(problems))  # several fields missing say so once
 
 
 def _definition(reference: dict) -> str:
