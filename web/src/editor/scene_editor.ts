@@ -7,13 +7,13 @@ import type { PickTarget } from "../interaction";
 import type { BrowserCommand } from "../protocol";
 import type { Viewer } from "../viewer";
 import { call, errorText, RouteError } from "../api";
-import type { EditorState, Place, SceneCatalog, SceneEdit, SceneFiles, SceneSave } from "../generated/viewer_protocol";
+import type { EditKind, EditorState, Place, SceneCatalog, SceneEdit, SceneRoot, SceneSave } from "../generated/viewer_protocol";
 import { placeText } from "./places";
 import { SceneBrowser } from "./scene_browser";
 import { SelectionMark } from "./selection_mark";
 import { WallTool } from "./wall_tool";
 
-type Kind = "robot" | "object" | "marker" | "wall";
+type Kind = EditKind;
 
 interface Selection {
   kind: Kind;
@@ -38,7 +38,7 @@ export class SceneEditor {
   private readonly mark: SelectionMark;
   private state: EditorState | null = null;
   private catalog: SceneCatalog | null = null;
-  private roots: SceneFiles["roots"] = [];
+  private roots: SceneRoot[] = [];
   private selection: Selection | null = null;
   private readonly editButton: HTMLButtonElement;
   private readonly message: HTMLElement;
