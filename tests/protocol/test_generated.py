@@ -18,11 +18,31 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_generated_files_match_protocol_json():
-    """Also the viewer channel's: web/src/generated/viewer_protocol.ts and the server's copy of
-    protocol/viewer.schema.json."""
+    """Also the viewer channel's: web/src/generated/viewer_protocol.ts (the messages' and the HTTP
+    routes' types and parsers) and the server's copy of protocol/viewer.schema.json."""
     result = subprocess.run([sys.executable, str(ROOT / "protocol" / "generate.py"), "--check"],
                             capture_output=True, text=True)
     assert result.returncode == 0, result.stdout + result.stderr
+
+
+def test_the_route_table_is_generated_from_the_schema_and_goes_stale_with_it():
+    """Routes (each route's request and answer types) and ROUTE_ANSWERS come from the schema's
+    `routes`: the committed file has every route, and a route added to the schema changes it."""
+    import generate_viewer  # protocol/, on the path for layers below
+
+    schema = json.loads(generate_viewer.SCHEMA.read_text())
+    committed = generate_viewer.TS_OUT.read_text()
+    for route, entry in schema["routes"].items():
+        answer = entry["response"]["$ref"].removeprefix("#/$defs/")
+        assert f'  "{route}": {{ request: ' in committed and f'  "{route}": parse{answer},' in committed
+    schema["routes"]["POST /scenes/rename"] = {"request": {"$ref": "#/$defs/Place"},
+                                               "response": {"$ref": "#/$defs/EditorState"}}
+    regenerated = generate_viewer.Generator(schema).typescript()
+    assert regenerated != committed
+    assert '  "POST /scenes/rename": { request: Place; response: EditorState };' in regenerated
+    schema["routes"]["POST /scenes/rename"]["response"] = {"type": "object"}
+    with pytest.raises(SystemExit, match="must be a \\$ref to a definition"):
+        generate_viewer.Generator(schema)
 
 
 def test_every_operation_but_the_sessions_own_has_a_handler():

@@ -143,7 +143,7 @@ def test_settings_change_the_running_scene(simulator):
         (False, False, 12.5, 7)
     assert call(url, "/api/settings")[1]["psd_noise"] == 12.5
     for body, reason in (({"psd_noise": -1}, "psd_noise"), ({"seed": 1.5}, "seed"), ({"vis": "yes"}, "vis"),
-                         ({"gravity": 1}, "unknown setting 'gravity'")):
+                         ({"gravity": 1}, "unknown field 'gravity'")):
         status, answer = call(url, "/api/settings", body)
         assert status == 400 and reason in answer["error"], answer
     assert call(url, "/api/settings")[1]["seed"] == 7

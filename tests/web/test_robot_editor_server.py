@@ -58,8 +58,11 @@ def test_bad_requests_get_specific_errors_and_the_simulation_goes_on(server):
         ("POST", "/open", {"source": "new:hovercraft"}, None, 400, "unknown drive 'hovercraft'"),
         ("POST", "/open", {"source": "file:notes.txt"}, None, 400, "expected a .robi or .json robot file"),
         ("POST", "/open", {"source": "file:missing.robi"}, None, 404, "no such file"),
-        ("POST", "/open", {"source": 7}, None, 400, "expected builtin:<name>"),
-        ("POST", "/check", {"robot": "S4"}, None, 400, "expected the robot as a JSON object"),
+        ("POST", "/open", {"source": 7}, None, 400, "source must be text, not 7"),
+        ("POST", "/open", {"source": "S4"}, None, 400, "source must be builtin:<name>, file:<path> or new:<drive>"),
+        ("POST", "/open", {"source": "builtin:S4", "extra": 1}, None, 400, "unknown field 'extra'"),
+        ("POST", "/check", {"robot": "S4"}, None, 400, "robot must be an object, not 'S4'"),
+        ("POST", "/save", {"robot": {}}, None, 400, "field 'path' is missing"),
         ("POST", "/save", {"robot": {"format": "eyesim.robot", "version": 1}, "path": "x.robi"}, None, 400,
          "missing required property 'name'"),
         ("POST", "/drive/command", {"type": "vw", "v": 100, "w": 0}, None, 409, "no test drive is running"),
@@ -73,10 +76,11 @@ def test_bad_requests_get_specific_errors_and_the_simulation_goes_on(server):
     assert status == 200
     status, _ = call(server, "POST", "/drive/start", {"robot": opened["robot"], "builtin": "S4"})
     assert status == 200
-    for body, message in (({"type": "vw", "v": "fast", "w": 0}, "v: expected a number"),
+    for body, message in (({"type": "vw", "v": "fast", "w": 0}, "vw: v must be a number, not 'fast'"),
+                          ({"type": "servo", "servo": 1, "position": 300}, "servo: position must be a number from 0 to 255"),
                           ({"type": "motor", "motor": 9, "speed": 50}, "no motor 9 (motors: [1, 2])"),
                           ({"type": "servo", "servo": 1, "position": 10}, "no servo 1 (servos: none)"),
-                          ({"type": "fly"}, "unknown test-drive command 'fly'")):
+                          ({"type": "fly"}, "type must be one of 'vw', 'motor', 'servo', 'reset', not 'fly'")):
         got, answer = call(server, "POST", "/drive/command", body)
         assert got == 400 and message in answer["error"], (body, answer)
     status, state = call(server, "GET", "/drive/state")
@@ -106,11 +110,12 @@ def test_a_robot_saved_elsewhere_still_finds_its_model(server, tmp_path):
     (root / "robots" / "Box.robi").write_text("drive DIFFERENTIAL_DRIVE\nname Box\nmodel meshes/cube.obj\n")
     status, opened = call(server, "POST", "/open", {"source": "file:robots/Box.robi"})
     assert status == 200 and opened["robot"]["model"] == "meshes/cube.obj"
-    status, checked = call(server, "POST", "/check", opened)
+    robot = {key: opened[key] for key in ("robot", "origin", "builtin")}  # as the page sends it back
+    status, checked = call(server, "POST", "/check", robot)
     assert status == 200 and checked["preview"]["scene"]["robots"][0]["mesh"] == "/robot-editor/api/mesh/preview"
     status, mesh = call(server, "GET", "/mesh/preview")
     assert status == 200 and mesh["parts"]
-    status, saved = call(server, "POST", "/save", {**opened, "path": "copies/Box.robi"})
+    status, saved = call(server, "POST", "/save", {**robot, "path": "copies/Box.robi"})
     assert status == 200 and saved["loads"], saved
     assert "model ../robots/meshes/cube.obj" in (root / "copies" / "Box.robi").read_text()
     assert not [p for p in saved["problems"] if "model" in p["message"]]

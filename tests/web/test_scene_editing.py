@@ -13,6 +13,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.corpus import CORPUS  # noqa: E402
 from support.programs import eyesim_command  # noqa: E402
 
+from eyesim.protocol.channel_schema import route_request_problem
 from eyesim.scene import load_scene
 from eyesim.scene.builtins import DEFAULT_SCENE
 from eyesim.web.scene_editing import Draft, EditError, apply, saved_files
@@ -83,17 +84,29 @@ def test_edits_build_the_scene_through_the_loader():
 
 @pytest.mark.parametrize("op, message", [
     ({"op": "add-robot", "type": "R2D2", "x": 1, "y": 1}, "unknown robot type 'R2D2'"),
-    ({"op": "add-object", "type": "Can", "x": float("nan"), "y": 1}, "x must be a number"),
-    ({"op": "add-object", "type": "Can", "x": 1e9, "y": 1}, "outside"),
     ({"op": "move", "kind": "robot", "index": 5, "x": 1, "y": 1}, "no robot number 5"),
-    ({"op": "delete", "kind": "tree", "index": 0}, "kind must be"),
+    ({"op": "move", "kind": "wall", "index": 0, "x": 1, "y": 1}, "move: field 'x1' is missing"),
     ({"op": "add-wall", "x1": 5, "y1": 5, "x2": 5, "y2": 5}, "no length"),
-    ({"op": "set-floor", "width": 10, "height": 1000}, "outside"),
-    ({"op": "explode"}, "unknown edit 'explode'"),
 ])
-def test_bad_edits_are_refused_with_the_reason(op, message):
+def test_edits_the_scene_cannot_take_are_refused_with_the_reason(op, message):
     with pytest.raises(EditError, match=message):
         apply(draft_of(DEFAULT_SCENE), op, None)
+
+
+@pytest.mark.parametrize("op, message", [
+    ({"op": "add-object", "type": "Can", "x": "1", "y": 1}, "add-object: x must be a number, not '1'"),
+    ({"op": "add-object", "type": "Can", "x": 1e9, "y": 1}, "add-object: x must be a number from -100000 to 100000"),
+    ({"op": "delete", "kind": "tree", "index": 0}, "delete: kind must be one of 'robot', 'object', 'marker', 'wall'"),
+    ({"op": "set-floor", "width": 10, "height": 1000}, "set-floor: width must be a number from 100 to 100000"),
+    ({"op": "add-marker", "x": 1, "y": 1, "color": [1, 2]}, "add-marker: color must have at least 3 items"),
+    ({"op": "move", "kind": "robot", "index": -1}, "move: index must be a whole number at least 0"),
+    ({"op": "explode"}, "op must be one of 'add-robot', "),
+    ({"editing": "yes"}, "editing must be true or false, not 'yes'"),
+    ({}, "field 'editing' is missing"),
+])
+def test_malformed_edits_are_refused_by_the_schema(op, message):
+    """The edit route checks every body against SceneEdit before the edit is tried."""
+    assert message in route_request_problem("POST /scenes/edit", op)
 
 
 def test_a_robi_file_under_the_roots_becomes_a_robot_type(roots, tmp_path):

@@ -2,7 +2,7 @@
 
 import type { ViewMode } from "./camera_modes";
 import type { ConnectionState } from "./connection";
-import type { SceneSettings } from "./settings_panel";
+import type { RunSettings } from "./generated/viewer_protocol";
 import type { DragTarget } from "./interaction";
 import type { Pose } from "./interpolation";
 import { meshBox, meshCount } from "./mesh_loader";
@@ -95,7 +95,7 @@ export interface EyesimViewerDebug {
   programMessage(robot: number): string | null;
   compilerLines(robot: number): string[] | null;
   /** the settings panel: open or not, and the settings it last showed */
-  settingsShown(): { visible: boolean; settings: SceneSettings | null };
+  settingsShown(): { visible: boolean; settings: RunSettings | null };
 }
 
 declare global {

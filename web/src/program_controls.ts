@@ -1,44 +1,9 @@
 // Programs from the page: the files under the scene roots, and per robot a choice of program with
 // Start, Stop, Restart and Compile (`eyesim cc` on the simulator's machine, errors with file:line).
 
-import { ApiError, getJson, postJson } from "./api";
+import { call, RouteError } from "./api";
 import { element } from "./dom";
-
-export interface ProgramFile {
-  root: number;
-  path: string;
-  kind: "executable" | "python" | "c" | "c++";
-}
-
-export interface RobotProgramState {
-  id: number;
-  name: string;
-  program: { root: number | null; path: string } | null;
-  state: "none" | "running" | "exited" | "stopped" | "failed";
-  exit_code: number | null;
-  reason: string | null;
-}
-
-interface Overview {
-  roots: { name: string; path: string }[];
-  files: ProgramFile[];
-  robots: RobotProgramState[];
-}
-
-interface Diagnostic {
-  file: string;
-  line: number;
-  column: number | null;
-  kind: string;
-  message: string;
-}
-
-interface CompileResult {
-  ok: boolean;
-  output: string;
-  diagnostics: Diagnostic[];
-  program: { root: number; path: string } | null;
-}
+import type { CompileResult, ProgramFile, ProgramRoot, ProgramsOverview, RobotProgramState } from "./generated/viewer_protocol";
 
 const SOURCE_KINDS = new Set(["c", "c++"]);
 
@@ -48,7 +13,7 @@ function fileKey(file: { root: number | null; path: string }): string {
 
 /** The program files under the scene roots, fetched once and shared by every robot's controls. */
 export class ProgramCatalog {
-  private overview: Overview = { roots: [], files: [], robots: [] };
+  private overview: ProgramsOverview = { roots: [], files: [], robots: [] };
   private readonly listeners = new Set<() => void>();
   private loading: Promise<void> | null = null;
   private answered = false;
@@ -62,7 +27,7 @@ export class ProgramCatalog {
     return this.overview.files;
   }
 
-  get roots(): { name: string; path: string }[] {
+  get roots(): ProgramRoot[] {
     return this.overview.roots;
   }
 
@@ -76,12 +41,12 @@ export class ProgramCatalog {
 
   /** Reads the list again (after a compile, a new scene, or on request). */
   refresh(): Promise<void> {
-    this.loading ??= getJson<Overview>("api/programs")
+    this.loading ??= call("GET /api/programs")
       .then((overview) => {
         this.overview = overview;
         this.answered = true;
       })
-      .catch((error) => {
+      .catch((error: Error) => {
         this.answered = false;
         console.info("EyeSim viewer: no program controls:", error.message ?? error);
       })
@@ -212,13 +177,15 @@ export class ProgramControls {
 
   private async act(action: "start" | "stop" | "restart"): Promise<void> {
     const file = this.selected();
-    const body = action === "start" && file ? { robot: this.robot, root: file.root, path: file.path } : { robot: this.robot };
+    if (action === "start" && !file) return;
     this.say(`${action === "stop" ? "stopping" : "starting"}…`, "busy");
     try {
-      const state = await postJson<RobotProgramState>(`api/programs/${action}`, body);
+      const state = action === "start" && file
+        ? await call("POST /api/programs/start", { robot: this.robot, root: file.root, path: file.path })
+        : await call(`POST /api/programs/${action === "stop" ? "stop" : "restart"}`, { robot: this.robot });
       this.say(state.state === "failed" ? (state.reason ?? "could not start") : "", state.state === "failed" ? "error" : "");
     } catch (error) {
-      this.say(error instanceof ApiError ? error.message : String(error), "error");
+      this.say(error instanceof RouteError ? error.message : String(error), "error");
     }
   }
 
@@ -230,9 +197,9 @@ export class ProgramControls {
     this.compilerOutput.hidden = true;
     let result: CompileResult;
     try {
-      result = await postJson<CompileResult>("api/programs/compile", { root: file.root, path: file.path });
+      result = await call("POST /api/programs/compile", { root: file.root, path: file.path });
     } catch (error) {
-      this.say(error instanceof ApiError ? error.message : String(error), "error");
+      this.say(error instanceof RouteError ? error.message : String(error), "error");
       return;
     }
     this.showCompilerOutput(result);

@@ -1,18 +1,9 @@
 // The scene's settings from the page: PSD noise and seed, sensor rays (VIS) and paths (TRACE), with
 // the clock shown. Applying changes the running scene's settings, which a saved scene keeps.
 
-import { ApiError, getJson, postJson } from "./api";
+import { call, RouteError } from "./api";
 import { element } from "./dom";
-
-export interface SceneSettings {
-  vis: boolean;
-  trace: boolean;
-  psd_noise: number;
-  seed: number;
-  clock: string;
-  speed: number | "max";
-  paused: boolean;
-}
+import type { RunSettings } from "./generated/viewer_protocol";
 
 function field(label: string, input: HTMLElement, hint = ""): HTMLElement {
   const row = element("label", "setting");
@@ -31,7 +22,7 @@ export class SettingsPanel {
   private readonly apply = element("button", "settings-apply", "Apply");
   private readonly close = element("button", "settings-close", "Close");
   private readonly message = element("p", "settings-message");
-  private shown: SceneSettings | null = null;
+  private shown: RunSettings | null = null;
 
   constructor(container: HTMLElement, toggle: HTMLElement) {
     this.element.setAttribute("aria-label", "Settings");
@@ -67,7 +58,7 @@ export class SettingsPanel {
   }
 
   /** The settings as the simulator last reported them. */
-  get settings(): SceneSettings | null {
+  get settings(): RunSettings | null {
     return this.shown && { ...this.shown };
   }
 
@@ -75,9 +66,9 @@ export class SettingsPanel {
     this.element.hidden = false;
     this.say("");
     try {
-      this.show(await getJson<SceneSettings>("api/settings"));
+      this.show(await call("GET /api/settings"));
     } catch (error) {
-      this.say(error instanceof ApiError ? error.message : String(error), "error");
+      this.say(error instanceof RouteError ? error.message : String(error), "error");
     }
   }
 
@@ -85,7 +76,7 @@ export class SettingsPanel {
     this.element.hidden = true;
   }
 
-  private show(settings: SceneSettings): void {
+  private show(settings: RunSettings): void {
     this.shown = settings;
     this.vis.checked = settings.vis;
     this.trace.checked = settings.trace;
@@ -104,7 +95,7 @@ export class SettingsPanel {
     }
     try {
       this.show(
-        await postJson<SceneSettings>("api/settings", {
+        await call("POST /api/settings", {
           vis: this.vis.checked,
           trace: this.trace.checked,
           psd_noise: noise,
@@ -113,7 +104,7 @@ export class SettingsPanel {
       );
       this.say("applied", "done");
     } catch (error) {
-      this.say(error instanceof ApiError ? error.message : String(error), "error");
+      this.say(error instanceof RouteError ? error.message : String(error), "error");
     }
   }
 

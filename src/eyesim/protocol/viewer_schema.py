@@ -6,10 +6,11 @@ SCHEMA = json.loads(r'''{
   "$schema": "https://json-schema.org/draft/2020-12/schema",
   "$id": "https://eyesim.example/viewer.schema.json",
   "title": "EyeSim viewer channel",
-  "description": "Every message between the simulator and the browser viewer (docs/viewer-channel.md). Edit this file, then run `make protocol`: it generates web/src/generated/viewer_protocol.ts.",
+  "description": "Every message between the simulator and the browser viewer: the WebSocket messages both ways and the JSON bodies of the HTTP routes (docs/viewer-channel.md). `$defs` defines them; `routes` names, for each route (method and path), the definition of its request body and of its answer; a refused request is answered with a RouteError. Edit this file, then run `make protocol`: it generates web/src/generated/viewer_protocol.ts and the server's copy.",
   "$defs": {
     "ServerMessage": {
       "description": "A message from the simulator to the browser (WebSocket).",
+      "x-discriminator": "type",
       "oneOf": [
         {"$ref": "#/$defs/SceneMessage"},
         {"$ref": "#/$defs/SnapshotMessage"},
@@ -32,6 +33,7 @@ SCHEMA = json.loads(r'''{
     },
     "BrowserCommand": {
       "description": "A command from the browser to the simulator (WebSocket).",
+      "x-discriminator": "type",
       "oneOf": [
         {"$ref": "#/$defs/KeyCommand"},
         {"$ref": "#/$defs/PauseCommand"},
@@ -53,6 +55,7 @@ SCHEMA = json.loads(r'''{
     },
     "FrameContent": {
       "description": "A message a frame may carry.",
+      "x-discriminator": "type",
       "oneOf": [
         {"$ref": "#/$defs/SnapshotMessage"},
         {"$ref": "#/$defs/LcdMessage"},
@@ -674,7 +677,738 @@ SCHEMA = json.loads(r'''{
       },
       "required": ["color", "vertices", "triangles"],
       "additionalProperties": false
+    },
+    "RouteError": {
+      "type": "object",
+      "description": "The answer of any route that refused a request (4xx, 5xx): nothing changed.",
+      "properties": {
+        "error": {"description": "why, in one sentence", "type": "string"},
+        "diagnostics": {
+          "description": "the loader's diagnostics (scene routes, 422)",
+          "type": "array",
+          "items": {"$ref": "#/$defs/SceneDiagnostic"}
+        },
+        "exists": {"description": "files a save would overwrite (409)", "type": "array", "items": {"$ref": "#/$defs/Place"}}
+      },
+      "required": ["error"],
+      "additionalProperties": false
+    },
+    "Place": {
+      "type": "object",
+      "description": "A file under a root: the root's index and a path relative to it.",
+      "properties": {
+        "root": {"description": "index into the roots", "type": "integer", "minimum": 0, "maximum": 1000},
+        "path": {"description": "a path relative to the root", "type": "string", "minLength": 1, "maxLength": 1000}
+      },
+      "required": ["root", "path"],
+      "additionalProperties": false
+    },
+    "Done": {
+      "type": "object",
+      "description": "The request was carried out.",
+      "properties": {"ok": {"const": true}},
+      "required": ["ok"],
+      "additionalProperties": false
+    },
+    "NoBody": {
+      "type": "object",
+      "description": "A request that takes no fields: an empty JSON object (or no body).",
+      "properties": {},
+      "required": [],
+      "additionalProperties": false
+    },
+    "SceneDiagnostic": {
+      "type": "object",
+      "description": "A problem the scene loader found.",
+      "properties": {
+        "kind": {"type": "string"},
+        "file": {"type": "string"},
+        "line": {"type": "integer", "minimum": 0},
+        "column": {"type": "integer", "minimum": 0},
+        "message": {"type": "string"},
+        "text": {"description": "file:line: kind: message, as the simulator prints it", "type": "string"}
+      },
+      "required": ["kind", "file", "line", "column", "message", "text"],
+      "additionalProperties": false
+    },
+    "SceneRoot": {
+      "type": "object",
+      "properties": {
+        "index": {"type": "integer", "minimum": 0},
+        "name": {"type": "string"},
+        "path": {"type": "string"},
+        "writable": {"type": "boolean"}
+      },
+      "required": ["index", "name", "path", "writable"],
+      "additionalProperties": false
+    },
+    "SceneFiles": {
+      "type": "object",
+      "description": "GET /scenes/files?q=words: the scene files whose path has every word, the recent ones, the roots.",
+      "properties": {
+        "roots": {"type": "array", "items": {"$ref": "#/$defs/SceneRoot"}},
+        "files": {"type": "array", "items": {"$ref": "#/$defs/Place"}},
+        "recent": {"type": "array", "items": {"$ref": "#/$defs/Place"}}
+      },
+      "required": ["roots", "files", "recent"],
+      "additionalProperties": false
+    },
+    "SceneCatalog": {
+      "type": "object",
+      "description": "What the scene editor can add.",
+      "properties": {
+        "robots": {"description": "built-in robot types", "type": "array", "items": {"type": "string"}},
+        "objects": {"description": "built-in object types", "type": "array", "items": {"type": "string"}},
+        "robot_files": {"type": "array", "items": {"$ref": "#/$defs/Place"}},
+        "object_files": {"type": "array", "items": {"$ref": "#/$defs/Place"}},
+        "programs": {"type": "array", "items": {"$ref": "#/$defs/Place"}}
+      },
+      "required": ["robots", "objects", "robot_files", "object_files", "programs"],
+      "additionalProperties": false
+    },
+    "EditorRobot": {
+      "type": "object",
+      "properties": {
+        "type": {"type": "string"},
+        "x": {"type": "number"},
+        "y": {"type": "number"},
+        "phi": {"type": "number"},
+        "program": {"description": "absolute path", "type": ["string", "null"]}
+      },
+      "required": ["type", "x", "y", "phi", "program"],
+      "additionalProperties": false
+    },
+    "EditorObject": {
+      "type": "object",
+      "properties": {
+        "type": {"type": "string"},
+        "x": {"type": "number"},
+        "y": {"type": "number"},
+        "phi": {"type": "number"},
+        "world": {"description": "one of the world file's own (a maze ball)", "type": "boolean"}
+      },
+      "required": ["type", "x", "y", "phi", "world"],
+      "additionalProperties": false
+    },
+    "EditorMarker": {
+      "type": "object",
+      "properties": {
+        "x": {"type": "number"},
+        "y": {"type": "number"},
+        "color": {"type": "array", "items": {"type": "integer", "minimum": 0, "maximum": 255}, "minItems": 3, "maxItems": 4}
+      },
+      "required": ["x", "y", "color"],
+      "additionalProperties": false
+    },
+    "EditorWall": {
+      "type": "object",
+      "properties": {"x1": {"type": "number"}, "y1": {"type": "number"}, "x2": {"type": "number"}, "y2": {"type": "number"}},
+      "required": ["x1", "y1", "x2", "y2"],
+      "additionalProperties": false
+    },
+    "EditorItems": {
+      "type": "object",
+      "description": "The scene's editable things in mm and degrees, numbered as edits name them.",
+      "properties": {
+        "robots": {"type": "array", "items": {"$ref": "#/$defs/EditorRobot"}},
+        "objects": {"type": "array", "items": {"$ref": "#/$defs/EditorObject"}},
+        "markers": {"type": "array", "items": {"$ref": "#/$defs/EditorMarker"}},
+        "walls": {"type": "array", "items": {"$ref": "#/$defs/EditorWall"}},
+        "floor": {
+          "type": "object",
+          "properties": {"width": {"type": ["number", "null"]}, "height": {"type": ["number", "null"]}},
+          "required": ["width", "height"],
+          "additionalProperties": false
+        }
+      },
+      "required": ["robots", "objects", "markers", "walls", "floor"],
+      "additionalProperties": false
+    },
+    "EditorState": {
+      "type": "object",
+      "description": "The scene being edited (the answer of every /scenes route that changes it).",
+      "properties": {
+        "editing": {"type": "boolean"},
+        "browse_at_start": {"type": "boolean"},
+        "file": {"type": "string"},
+        "place": {"oneOf": [{"$ref": "#/$defs/Place"}, {"type": "null"}]},
+        "can_undo": {"type": "boolean"},
+        "can_redo": {"type": "boolean"},
+        "items": {"$ref": "#/$defs/EditorItems"},
+        "warnings": {
+          "description": "what the loader found wrong in the scene now running",
+          "type": "array",
+          "items": {"$ref": "#/$defs/SceneDiagnostic"}
+        },
+        "saved": {"description": "the files a save wrote", "type": "array", "items": {"$ref": "#/$defs/Place"}}
+      },
+      "required": ["editing", "browse_at_start", "file", "place", "can_undo", "can_redo", "items"],
+      "additionalProperties": false
+    },
+    "NewScene": {
+      "type": "object",
+      "description": "An empty floor (2000 mm each side unless given).",
+      "properties": {
+        "width": {"description": "mm", "type": "number", "minimum": 100, "maximum": 100000},
+        "height": {"description": "mm", "type": "number", "minimum": 100, "maximum": 100000}
+      },
+      "required": [],
+      "additionalProperties": false
+    },
+    "SceneSave": {
+      "type": "object",
+      "description": "Where and how to save the scene (the suffix is added when missing).",
+      "properties": {
+        "root": {"description": "index into the roots", "type": "integer", "minimum": 0, "maximum": 1000},
+        "path": {"description": "a path relative to the root", "type": "string", "minLength": 1, "maxLength": 1000},
+        "format": {"enum": ["sim", "json"]},
+        "overwrite": {"type": "boolean"}
+      },
+      "required": ["root", "path", "format"],
+      "additionalProperties": false
+    },
+    "SceneEdit": {
+      "description": "POST /scenes/edit: start or end editing, or one edit (by its `op`).",
+      "x-discriminator": "op",
+      "oneOf": [
+        {"$ref": "#/$defs/EditingSwitch"},
+        {"$ref": "#/$defs/AddRobotEdit"},
+        {"$ref": "#/$defs/AddObjectEdit"},
+        {"$ref": "#/$defs/AddMarkerEdit"},
+        {"$ref": "#/$defs/AddWallEdit"},
+        {"$ref": "#/$defs/MoveEdit"},
+        {"$ref": "#/$defs/DeleteEdit"},
+        {"$ref": "#/$defs/DuplicateEdit"},
+        {"$ref": "#/$defs/SetFloorEdit"},
+        {"$ref": "#/$defs/SetProgramEdit"}
+      ]
+    },
+    "EditingSwitch": {
+      "type": "object",
+      "description": "Start editing (programs stop, the simulation pauses) or end it.",
+      "properties": {"editing": {"type": "boolean"}},
+      "required": ["editing"],
+      "additionalProperties": false
+    },
+    "AddRobotEdit": {
+      "type": "object",
+      "properties": {
+        "op": {"const": "add-robot"},
+        "type": {"description": "a built-in robot type", "type": "string"},
+        "file": {"description": "a .robi file (instead of type)", "$ref": "#/$defs/Place"},
+        "program": {"description": "the program it runs", "$ref": "#/$defs/Place"},
+        "x": {"description": "mm", "type": "number", "minimum": -100000, "maximum": 100000},
+        "y": {"description": "mm", "type": "number", "minimum": -100000, "maximum": 100000},
+        "phi": {
+          "description": "degrees, counter-clockwise from +x",
+          "type": "number",
+          "minimum": -1000000,
+          "maximum": 1000000
+        }
+      },
+      "required": ["op", "x", "y"],
+      "additionalProperties": false
+    },
+    "AddObjectEdit": {
+      "type": "object",
+      "properties": {
+        "op": {"const": "add-object"},
+        "type": {"description": "a built-in object type", "type": "string"},
+        "file": {"description": "an .esObj file (instead of type)", "$ref": "#/$defs/Place"},
+        "x": {"description": "mm", "type": "number", "minimum": -100000, "maximum": 100000},
+        "y": {"description": "mm", "type": "number", "minimum": -100000, "maximum": 100000},
+        "phi": {
+          "description": "degrees, counter-clockwise from +x",
+          "type": "number",
+          "minimum": -1000000,
+          "maximum": 1000000
+        }
+      },
+      "required": ["op", "x", "y"],
+      "additionalProperties": false
+    },
+    "AddMarkerEdit": {
+      "type": "object",
+      "properties": {
+        "op": {"const": "add-marker"},
+        "x": {"description": "mm", "type": "number", "minimum": -100000, "maximum": 100000},
+        "y": {"description": "mm", "type": "number", "minimum": -100000, "maximum": 100000},
+        "color": {
+          "description": "[r, g, b] or [r, g, b, a], 0..255 (red when absent)",
+          "type": "array",
+          "items": {"type": "integer", "minimum": 0, "maximum": 255},
+          "minItems": 3,
+          "maxItems": 4
+        }
+      },
+      "required": ["op", "x", "y"],
+      "additionalProperties": false
+    },
+    "AddWallEdit": {
+      "type": "object",
+      "properties": {
+        "op": {"const": "add-wall"},
+        "x1": {"description": "mm", "type": "number", "minimum": -100000, "maximum": 100000},
+        "y1": {"description": "mm", "type": "number", "minimum": -100000, "maximum": 100000},
+        "x2": {"description": "mm", "type": "number", "minimum": -100000, "maximum": 100000},
+        "y2": {"description": "mm", "type": "number", "minimum": -100000, "maximum": 100000}
+      },
+      "required": ["op", "x1", "y1", "x2", "y2"],
+      "additionalProperties": false
+    },
+    "EditKind": {"enum": ["robot", "object", "marker", "wall"]},
+    "MoveEdit": {
+      "type": "object",
+      "description": "x, y (and phi) of a robot, object or marker; x1, y1, x2, y2 of a wall.",
+      "properties": {
+        "op": {"const": "move"},
+        "kind": {"$ref": "#/$defs/EditKind"},
+        "index": {"type": "integer", "minimum": 0},
+        "x": {"description": "mm", "type": "number", "minimum": -100000, "maximum": 100000},
+        "y": {"description": "mm", "type": "number", "minimum": -100000, "maximum": 100000},
+        "phi": {
+          "description": "degrees, counter-clockwise from +x",
+          "type": "number",
+          "minimum": -1000000,
+          "maximum": 1000000
+        },
+        "x1": {"description": "mm", "type": "number", "minimum": -100000, "maximum": 100000},
+        "y1": {"description": "mm", "type": "number", "minimum": -100000, "maximum": 100000},
+        "x2": {"description": "mm", "type": "number", "minimum": -100000, "maximum": 100000},
+        "y2": {"description": "mm", "type": "number", "minimum": -100000, "maximum": 100000}
+      },
+      "required": ["op", "kind", "index"],
+      "additionalProperties": false
+    },
+    "DeleteEdit": {
+      "type": "object",
+      "properties": {"op": {"const": "delete"}, "kind": {"$ref": "#/$defs/EditKind"}, "index": {"type": "integer", "minimum": 0}},
+      "required": ["op", "kind", "index"],
+      "additionalProperties": false
+    },
+    "DuplicateEdit": {
+      "type": "object",
+      "properties": {"op": {"const": "duplicate"}, "kind": {"$ref": "#/$defs/EditKind"}, "index": {"type": "integer", "minimum": 0}},
+      "required": ["op", "kind", "index"],
+      "additionalProperties": false
+    },
+    "SetFloorEdit": {
+      "type": "object",
+      "properties": {
+        "op": {"const": "set-floor"},
+        "width": {"description": "mm", "type": "number", "minimum": 100, "maximum": 100000},
+        "height": {"description": "mm", "type": "number", "minimum": 100, "maximum": 100000}
+      },
+      "required": ["op", "width", "height"],
+      "additionalProperties": false
+    },
+    "SetProgramEdit": {
+      "type": "object",
+      "properties": {
+        "op": {"const": "set-program"},
+        "index": {"description": "the robot's number", "type": "integer", "minimum": 0},
+        "program": {"description": "a program file, or null for none", "oneOf": [{"$ref": "#/$defs/Place"}, {"type": "null"}]}
+      },
+      "required": ["op", "index", "program"],
+      "additionalProperties": false
+    },
+    "ProgramRoot": {
+      "type": "object",
+      "properties": {"name": {"type": "string"}, "path": {"type": "string"}},
+      "required": ["name", "path"],
+      "additionalProperties": false
+    },
+    "ProgramFile": {
+      "type": "object",
+      "properties": {
+        "root": {"type": "integer", "minimum": 0},
+        "path": {"type": "string"},
+        "kind": {"enum": ["executable", "python", "c", "c++"]}
+      },
+      "required": ["root", "path", "kind"],
+      "additionalProperties": false
+    },
+    "ProgramRef": {
+      "type": "object",
+      "properties": {
+        "root": {"description": "null: not under a root (path is absolute)", "type": ["integer", "null"]},
+        "path": {"type": "string"}
+      },
+      "required": ["root", "path"],
+      "additionalProperties": false
+    },
+    "RobotProgramState": {
+      "type": "object",
+      "description": "A robot's program and how it is doing.",
+      "properties": {
+        "id": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "name": {"type": "string"},
+        "program": {"oneOf": [{"$ref": "#/$defs/ProgramRef"}, {"type": "null"}]},
+        "state": {"enum": ["none", "running", "exited", "stopped", "failed"]},
+        "exit_code": {"type": ["integer", "null"]},
+        "reason": {"description": "why it failed or how it crashed", "type": ["string", "null"]}
+      },
+      "required": ["id", "name", "program", "state", "exit_code", "reason"],
+      "additionalProperties": false
+    },
+    "ProgramsOverview": {
+      "type": "object",
+      "properties": {
+        "roots": {"type": "array", "items": {"$ref": "#/$defs/ProgramRoot"}},
+        "files": {"type": "array", "items": {"$ref": "#/$defs/ProgramFile"}},
+        "robots": {"type": "array", "items": {"$ref": "#/$defs/RobotProgramState"}}
+      },
+      "required": ["roots", "files", "robots"],
+      "additionalProperties": false
+    },
+    "StartProgram": {
+      "type": "object",
+      "description": "Run an executable or .py file on a robot.",
+      "properties": {
+        "robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000},
+        "root": {"description": "index into the roots", "type": "integer", "minimum": 0, "maximum": 1000},
+        "path": {"description": "a path relative to the root", "type": "string", "minLength": 1, "maxLength": 1000}
+      },
+      "required": ["robot", "root", "path"],
+      "additionalProperties": false
+    },
+    "ProgramRobot": {
+      "type": "object",
+      "properties": {"robot": {"description": "robot id (1..)", "type": "integer", "minimum": 1, "maximum": 1000000}},
+      "required": ["robot"],
+      "additionalProperties": false
+    },
+    "CompilerDiagnostic": {
+      "type": "object",
+      "properties": {
+        "file": {"type": "string"},
+        "line": {"type": "integer", "minimum": 0},
+        "column": {"type": ["integer", "null"]},
+        "kind": {"enum": ["error", "warning", "note"]},
+        "message": {"type": "string"}
+      },
+      "required": ["file", "line", "column", "kind", "message"],
+      "additionalProperties": false
+    },
+    "CompileResult": {
+      "type": "object",
+      "properties": {
+        "ok": {"type": "boolean"},
+        "output": {"description": "what the compiler printed", "type": "string"},
+        "diagnostics": {"type": "array", "items": {"$ref": "#/$defs/CompilerDiagnostic"}},
+        "program": {"description": "the executable made", "oneOf": [{"$ref": "#/$defs/Place"}, {"type": "null"}]}
+      },
+      "required": ["ok", "output", "diagnostics", "program"],
+      "additionalProperties": false
+    },
+    "RunSettings": {
+      "type": "object",
+      "description": "The running scene's settings and the clock.",
+      "properties": {
+        "vis": {"type": "boolean"},
+        "trace": {"type": "boolean"},
+        "psd_noise": {"description": "mm", "type": "number", "minimum": 0},
+        "seed": {"type": "integer", "minimum": 0},
+        "time": {"type": "number"},
+        "paused": {"type": "boolean"},
+        "speed": {"oneOf": [{"type": "number", "exclusiveMinimum": 0}, {"const": "max"}]},
+        "clock": {"enum": ["realtime", "deterministic"]}
+      },
+      "required": ["vis", "trace", "psd_noise", "seed", "time", "paused", "speed", "clock"],
+      "additionalProperties": false
+    },
+    "SettingsChange": {
+      "type": "object",
+      "description": "Any of the settings; the rest stay.",
+      "properties": {
+        "vis": {"type": "boolean"},
+        "trace": {"type": "boolean"},
+        "psd_noise": {"description": "mm of PSD noise", "type": "number", "minimum": 0, "maximum": 1000},
+        "seed": {"type": "integer", "minimum": 0, "maximum": 9223372036854775807}
+      },
+      "required": [],
+      "additionalProperties": false
+    },
+    "RobotDocument": {
+      "type": "object",
+      "description": "A robot as the JSON document of docs/schemas/robot.schema.json; the loader checks it."
+    },
+    "RobotSchemaDocument": {"type": "object", "description": "The published robot JSON Schema (docs/schemas/robot.schema.json)."},
+    "RobotSources": {
+      "type": "object",
+      "properties": {
+        "builtins": {"type": "array", "items": {"type": "string"}},
+        "files": {"description": "robot files under the scene folder", "type": "array", "items": {"type": "string"}},
+        "drives": {"type": "array", "items": {"type": "string"}}
+      },
+      "required": ["builtins", "files", "drives"],
+      "additionalProperties": false
+    },
+    "OpenRobot": {
+      "type": "object",
+      "properties": {
+        "source": {
+          "type": "string",
+          "maxLength": 1100,
+          "pattern": "^(builtin|file|new):",
+          "description": "builtin:<name>, file:<path> or new:<drive>"
+        }
+      },
+      "required": ["source"],
+      "additionalProperties": false
+    },
+    "RobotProblem": {
+      "type": "object",
+      "properties": {
+        "kind": {"enum": ["error", "warning"]},
+        "pointer": {"description": "JSON pointer of the field it is about; \"\" for the robot as a whole", "type": "string"},
+        "message": {"type": "string"},
+        "code": {"type": "string"}
+      },
+      "required": ["kind", "pointer", "message", "code"],
+      "additionalProperties": false
+    },
+    "OpenedRobot": {
+      "type": "object",
+      "properties": {
+        "robot": {"$ref": "#/$defs/RobotDocument"},
+        "origin": {"description": "its file under the scene folder", "type": ["string", "null"]},
+        "builtin": {"description": "the built-in robot it is", "type": ["string", "null"]},
+        "problems": {"type": "array", "items": {"$ref": "#/$defs/RobotProblem"}}
+      },
+      "required": ["robot", "origin", "builtin", "problems"],
+      "additionalProperties": false
+    },
+    "RobotCheck": {
+      "type": "object",
+      "description": "A robot to check, preview or test-drive.",
+      "properties": {
+        "robot": {"$ref": "#/$defs/RobotDocument"},
+        "origin": {
+          "description": "the file it came from (models are found from there)",
+          "type": ["string", "null"],
+          "maxLength": 1000
+        },
+        "builtin": {"type": ["string", "null"], "maxLength": 200}
+      },
+      "required": ["robot"],
+      "additionalProperties": false
+    },
+    "RobotSave": {
+      "type": "object",
+      "description": "Save the robot at path (.robi or .json) under the scene folder.",
+      "properties": {
+        "robot": {"$ref": "#/$defs/RobotDocument"},
+        "origin": {"type": ["string", "null"], "maxLength": 1000},
+        "builtin": {"type": ["string", "null"], "maxLength": 200},
+        "path": {"description": "a path relative to the root", "type": "string", "minLength": 1, "maxLength": 1000},
+        "overwrite": {"type": "boolean"}
+      },
+      "required": ["robot", "path"],
+      "additionalProperties": false
+    },
+    "PsdBeam": {
+      "type": "object",
+      "properties": {
+        "id": {"type": "integer"},
+        "name": {"type": "string"},
+        "origin": {"$ref": "#/$defs/Vec3"},
+        "direction": {"$ref": "#/$defs/Vec3"},
+        "hit": {"description": "m to what the beam hits, or null", "type": ["number", "null"]}
+      },
+      "required": ["id", "name", "origin", "direction", "hit"],
+      "additionalProperties": false
+    },
+    "LidarPlane": {
+      "type": "object",
+      "properties": {
+        "origin": {"$ref": "#/$defs/Vec3"},
+        "directions": {"description": "flat [x, y, z, ...] unit vectors", "type": "array", "items": {"type": "number"}},
+        "points": {"type": "integer"}
+      },
+      "required": ["origin", "directions", "points"],
+      "additionalProperties": false
+    },
+    "CameraFrame": {
+      "type": "object",
+      "properties": {
+        "position": {"$ref": "#/$defs/Vec3"},
+        "forward": {"$ref": "#/$defs/Vec3"},
+        "up": {"$ref": "#/$defs/Vec3"},
+        "fov": {"type": "number"},
+        "aspect": {"type": "number"},
+        "fisheye": {"type": "boolean"}
+      },
+      "required": ["position", "forward", "up", "fov", "aspect", "fisheye"],
+      "additionalProperties": false
+    },
+    "RobotSensors": {
+      "type": "object",
+      "description": "The built robot's poses and sensors (world frame, m).",
+      "properties": {
+        "snapshot": {"$ref": "#/$defs/SnapshotMessage"},
+        "psds": {"type": "array", "items": {"$ref": "#/$defs/PsdBeam"}},
+        "lidar": {"oneOf": [{"$ref": "#/$defs/LidarPlane"}, {"type": "null"}]},
+        "camera": {"oneOf": [{"$ref": "#/$defs/CameraFrame"}, {"type": "null"}]}
+      },
+      "required": ["snapshot", "psds", "lidar", "camera"],
+      "additionalProperties": false
+    },
+    "RobotPreview": {
+      "type": "object",
+      "description": "The robot as built: its scene message and its sensors.",
+      "properties": {
+        "scene": {"$ref": "#/$defs/SceneMessage"},
+        "snapshot": {"$ref": "#/$defs/SnapshotMessage"},
+        "psds": {"type": "array", "items": {"$ref": "#/$defs/PsdBeam"}},
+        "lidar": {"oneOf": [{"$ref": "#/$defs/LidarPlane"}, {"type": "null"}]},
+        "camera": {"oneOf": [{"$ref": "#/$defs/CameraFrame"}, {"type": "null"}]}
+      },
+      "required": ["scene", "snapshot", "psds", "lidar", "camera"],
+      "additionalProperties": false
+    },
+    "CheckedRobot": {
+      "type": "object",
+      "properties": {
+        "problems": {"type": "array", "items": {"$ref": "#/$defs/RobotProblem"}},
+        "preview": {"oneOf": [{"$ref": "#/$defs/RobotPreview"}, {"type": "null"}]},
+        "robi": {"description": "the robot as a .robi file", "type": "string"}
+      },
+      "required": ["problems", "preview"],
+      "additionalProperties": false
+    },
+    "SavedRobot": {
+      "type": "object",
+      "properties": {
+        "path": {"type": "string"},
+        "problems": {"type": "array", "items": {"$ref": "#/$defs/RobotProblem"}},
+        "loads": {"description": "whether it loads back", "type": "boolean"}
+      },
+      "required": ["path", "problems", "loads"],
+      "additionalProperties": false
+    },
+    "DriveStarted": {
+      "type": "object",
+      "properties": {"scene": {"$ref": "#/$defs/SceneMessage"}},
+      "required": ["scene"],
+      "additionalProperties": false
+    },
+    "DriveCommand": {
+      "description": "POST /robot-editor/api/drive/command: one command to the test drive.",
+      "x-discriminator": "type",
+      "oneOf": [
+        {"$ref": "#/$defs/DriveVw"},
+        {"$ref": "#/$defs/DriveMotor"},
+        {"$ref": "#/$defs/DriveServo"},
+        {"$ref": "#/$defs/DriveReset"}
+      ]
+    },
+    "DriveVw": {
+      "type": "object",
+      "properties": {
+        "type": {"const": "vw"},
+        "v": {"description": "mm/s", "type": "number", "minimum": -10000, "maximum": 10000},
+        "w": {"description": "degrees/s", "type": "number", "minimum": -10000, "maximum": 10000}
+      },
+      "required": ["type", "v", "w"],
+      "additionalProperties": false
+    },
+    "DriveMotor": {
+      "type": "object",
+      "properties": {
+        "type": {"const": "motor"},
+        "motor": {"type": "integer", "minimum": 1, "maximum": 64},
+        "speed": {"description": "percent", "type": "number", "minimum": -100, "maximum": 100}
+      },
+      "required": ["type", "motor", "speed"],
+      "additionalProperties": false
+    },
+    "DriveServo": {
+      "type": "object",
+      "properties": {
+        "type": {"const": "servo"},
+        "servo": {"type": "integer", "minimum": 1, "maximum": 64},
+        "position": {"type": "number", "minimum": 0, "maximum": 255}
+      },
+      "required": ["type", "servo", "position"],
+      "additionalProperties": false
+    },
+    "DriveReset": {
+      "type": "object",
+      "properties": {"type": {"const": "reset"}},
+      "required": ["type"],
+      "additionalProperties": false
+    },
+    "DriveReadings": {
+      "type": "object",
+      "properties": {
+        "psd": {"description": "mm by PSD id", "type": "object", "additionalProperties": {"type": "number"}},
+        "servos": {"type": "array", "items": {"type": "integer"}},
+        "motors": {"type": "array", "items": {"type": "integer"}},
+        "lidar": {"description": "the last scan (mm)", "type": "array", "items": {"type": "number"}},
+        "camera": {"description": "JPEG, base64", "type": "string", "pattern": "^[A-Za-z0-9+/]*={0,2}$"},
+        "vw": {
+          "description": "measured mm/s and degrees/s",
+          "type": "array",
+          "items": {"type": "number"},
+          "minItems": 2,
+          "maxItems": 2
+        }
+      },
+      "required": ["psd", "servos", "motors"],
+      "additionalProperties": false
+    },
+    "DriveState": {
+      "type": "object",
+      "description": "The test drive now: poses, sensors and readings.",
+      "properties": {
+        "snapshot": {"$ref": "#/$defs/SnapshotMessage"},
+        "psds": {"type": "array", "items": {"$ref": "#/$defs/PsdBeam"}},
+        "lidar": {"oneOf": [{"$ref": "#/$defs/LidarPlane"}, {"type": "null"}]},
+        "camera": {"oneOf": [{"$ref": "#/$defs/CameraFrame"}, {"type": "null"}]},
+        "time": {"type": "number"},
+        "readings": {"$ref": "#/$defs/DriveReadings"}
+      },
+      "required": ["snapshot", "psds", "lidar", "camera", "time", "readings"],
+      "additionalProperties": false
     }
+  },
+  "routes": {
+    "GET /scene/mesh/{kind}/{id}": {"description": "kind robot or object: its .obj model's triangles", "response": {"$ref": "#/$defs/MeshBody"}},
+    "GET /scenes/files": {"description": "query q: words the path must contain", "response": {"$ref": "#/$defs/SceneFiles"}},
+    "GET /scenes/catalog": {"response": {"$ref": "#/$defs/SceneCatalog"}},
+    "GET /scenes/state": {"response": {"$ref": "#/$defs/EditorState"}},
+    "POST /scenes/open": {
+      "description": "replace the running scene with that file",
+      "request": {"$ref": "#/$defs/Place"},
+      "response": {"$ref": "#/$defs/EditorState"}
+    },
+    "POST /scenes/new": {"request": {"$ref": "#/$defs/NewScene"}, "response": {"$ref": "#/$defs/EditorState"}},
+    "POST /scenes/edit": {"request": {"$ref": "#/$defs/SceneEdit"}, "response": {"$ref": "#/$defs/EditorState"}},
+    "POST /scenes/undo": {"request": {"$ref": "#/$defs/NoBody"}, "response": {"$ref": "#/$defs/EditorState"}},
+    "POST /scenes/redo": {"request": {"$ref": "#/$defs/NoBody"}, "response": {"$ref": "#/$defs/EditorState"}},
+    "POST /scenes/save": {"request": {"$ref": "#/$defs/SceneSave"}, "response": {"$ref": "#/$defs/EditorState"}},
+    "GET /api/programs": {"response": {"$ref": "#/$defs/ProgramsOverview"}},
+    "POST /api/programs/start": {"request": {"$ref": "#/$defs/StartProgram"}, "response": {"$ref": "#/$defs/RobotProgramState"}},
+    "POST /api/programs/stop": {"request": {"$ref": "#/$defs/ProgramRobot"}, "response": {"$ref": "#/$defs/RobotProgramState"}},
+    "POST /api/programs/restart": {"request": {"$ref": "#/$defs/ProgramRobot"}, "response": {"$ref": "#/$defs/RobotProgramState"}},
+    "POST /api/programs/compile": {
+      "description": "a .c, .cc, .cpp or .cxx file",
+      "request": {"$ref": "#/$defs/Place"},
+      "response": {"$ref": "#/$defs/CompileResult"}
+    },
+    "GET /api/settings": {"response": {"$ref": "#/$defs/RunSettings"}},
+    "POST /api/settings": {"request": {"$ref": "#/$defs/SettingsChange"}, "response": {"$ref": "#/$defs/RunSettings"}},
+    "GET /robot-editor/api/schema": {"response": {"$ref": "#/$defs/RobotSchemaDocument"}},
+    "GET /robot-editor/api/sources": {"response": {"$ref": "#/$defs/RobotSources"}},
+    "POST /robot-editor/api/open": {"request": {"$ref": "#/$defs/OpenRobot"}, "response": {"$ref": "#/$defs/OpenedRobot"}},
+    "POST /robot-editor/api/check": {"request": {"$ref": "#/$defs/RobotCheck"}, "response": {"$ref": "#/$defs/CheckedRobot"}},
+    "POST /robot-editor/api/save": {"request": {"$ref": "#/$defs/RobotSave"}, "response": {"$ref": "#/$defs/SavedRobot"}},
+    "POST /robot-editor/api/drive/start": {"request": {"$ref": "#/$defs/RobotCheck"}, "response": {"$ref": "#/$defs/DriveStarted"}},
+    "POST /robot-editor/api/drive/command": {"request": {"$ref": "#/$defs/DriveCommand"}, "response": {"$ref": "#/$defs/Done"}},
+    "GET /robot-editor/api/drive/state": {"response": {"$ref": "#/$defs/DriveState"}},
+    "POST /robot-editor/api/drive/stop": {"request": {"$ref": "#/$defs/NoBody"}, "response": {"$ref": "#/$defs/Done"}},
+    "GET /robot-editor/api/mesh/{which}": {"description": "which: preview or drive", "response": {"$ref": "#/$defs/MeshBody"}}
   }
 }
 ''')

@@ -5,7 +5,8 @@ program_files.py), and compile C/C++ sources there with `eyesim cc`. What the pr
 how they end reaches the page as the usual console and program events. Settings (PSD noise and
 seed, VIS, TRACE) change the running scene's description, so a save writes them.
 
-Every route is behind the viewer's access checks (access.py). Bad requests get 400 and a JSON
+Every route is behind the viewer's access checks (access.py), and every body is checked against
+its definition in protocol/viewer.schema.json (route_bodies.py). Bad requests get 400 and a JSON
 {"error": ...} saying what was wrong; nothing else changes."""
 
 from __future__ import annotations
@@ -13,9 +14,7 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import dataclasses
-import json
 import logging
-import math
 import re
 import subprocess
 from pathlib import Path
@@ -27,14 +26,14 @@ from eyesim.programs.launcher import crash_reason
 from eyesim.robot.components.psd import PsdSensor
 from eyesim.viewer import messages
 from eyesim.web import program_files
+from eyesim.web.route_bodies import BadBody, checked_body
 from eyesim.web.simulation_calls import on_simulation
 from eyesim.web.scene_files import FileAccessError
 
 log = logging.getLogger("eyesim.web")
 COMPILE_SECONDS = 120  # a compiler that takes longer is stopped
 FREE_ROBOT_SECONDS = 5.0  # how long a restart waits for the old program's connection to close
-MAX_SEED = 2**63 - 1
-MAX_PSD_NOISE = 1000.0  # mm
+MAX_BODY = 64 * 1024
 # gcc and clang: "file:line:column: error: message" (column optional)
 DIAGNOSTIC = re.compile(r"^(?P<file>[^:\n]+):(?P<line>\d+):(?:(?P<column>\d+):)? "
                         r"(?P<kind>fatal error|error|warning|note): (?P<message>.*)$", re.MULTILINE)
@@ -115,26 +114,10 @@ class ProgramControl:
                 "seed": settings.seed, **clock}
 
     async def change_settings(self, body: dict) -> dict:
-        changes = {}
-        for flag in ("vis", "trace"):
-            if flag in body:
-                if not isinstance(body[flag], bool):
-                    raise BadRequest(f"{flag}: expected true or false, found {body[flag]!r}")
-                changes[flag] = body[flag]
-        if "psd_noise" in body:
-            noise = body["psd_noise"]
-            if isinstance(noise, bool) or not isinstance(noise, (int, float)) or \
-                    not (math.isfinite(noise) and 0 <= noise <= MAX_PSD_NOISE):
-                raise BadRequest(f"psd_noise: expected a number of mm from 0 to {MAX_PSD_NOISE:g}, found {noise!r}")
-            changes["psd_noise"] = float(noise)
-        if "seed" in body:
-            seed = body["seed"]
-            if isinstance(seed, bool) or not isinstance(seed, int) or not 0 <= seed <= MAX_SEED:
-                raise BadRequest(f"seed: expected a whole number from 0 to 2^63-1, found {seed!r}")
-            changes["seed"] = seed
-        unknown = set(body) - {"vis", "trace", "psd_noise", "seed"}
-        if unknown:
-            raise BadRequest(f"unknown setting {sorted(unknown)[0]!r}: expected vis, trace, psd_noise or seed")
+        """Any of vis, trace, psd_noise and seed (their types and ranges are the schema's)."""
+        changes = dict(body)
+        if "psd_noise" in changes:
+            changes["psd_noise"] = float(changes["psd_noise"])
         if changes:
             await self._on_simulation(lambda sim: apply_settings(sim, **changes))
             self.resend_scene()
@@ -181,15 +164,14 @@ class ProgramControl:
         return await on_simulation(self.sim, action)
 
     def _robot(self, body: dict):
-        robot_id = body.get("robot")
-        robot = self.sim.robot_by_id(robot_id) if isinstance(robot_id, int) and not isinstance(robot_id, bool) else None
+        robot = self.sim.robot_by_id(body["robot"])
         if robot is None:
-            raise BadRequest(f"no robot {robot_id!r}")
+            raise BadRequest(f"no robot {body['robot']}")
         return robot
 
     def _file(self, body: dict, kinds: tuple[str, ...]) -> Path:
         try:
-            path = program_files.resolve(self.roots(), body.get("root"), body.get("path"))
+            path = program_files.resolve(self.roots(), body["root"], body["path"])
         except FileAccessError as error:
             raise BadRequest(str(error)) from None
         kind = program_files.kind_of(path)
@@ -229,16 +211,11 @@ class ProgramControl:
 
     def _json(self, handler):
         async def route(request: web.Request) -> web.Response:
-            body = {}
-            if request.method == "POST":
-                try:
-                    body = json.loads(await request.text())
-                except ValueError as error:
-                    return _error(f"not valid JSON: {error}")
-                if not isinstance(body, dict):
-                    return _error("expected a JSON object")
             try:
+                body = await checked_body(request, MAX_BODY) if request.method == "POST" else {}
                 return web.json_response(await handler(body))
+            except BadBody as error:
+                return _error(str(error), error.status)
             except BadRequest as error:
                 return _error(str(error))
             except toolchain.LibraryMissing as error:

@@ -10,7 +10,10 @@ running scene is never touched.
 
 Files: robots open from and save to the scene root (the folder the simulator was started in) and
 its sub-folders only; paths are relative, without `..`, and a symbolic link that leads out of the
-root is refused. A file is never overwritten unless the request says so."""
+root is refused. A file is never overwritten unless the request says so.
+
+Every request body is checked against its definition in protocol/viewer.schema.json first
+(route_bodies.py); what needs the robot or the files to check is checked here."""
 
 from __future__ import annotations
 
@@ -46,6 +49,7 @@ from eyesim.scene.robi import write_robi
 from eyesim.viewer import messages
 from eyesim.viewer.mesh_message import has_mesh, mesh_message
 from eyesim.web import scene_files
+from eyesim.web.route_bodies import BadBody, checked_body
 from eyesim.web.simulation_calls import on_simulation
 
 log = logging.getLogger("eyesim.web")
@@ -61,7 +65,6 @@ ARENA_START = 0.35  # of the arena's width: where the robot starts, facing the i
 ANSWER_TIMEOUT = 10.0  # s a test-drive request waits for the simulation thread
 IDLE_STOP = 60.0  # s without a state request (the tab was closed): the test drive stops
 CAMERA_SIZE = (160, 120)  # the test drive's camera image
-SERVO_MAX = 255
 
 
 class EditorError(Exception):
@@ -336,19 +339,19 @@ class TestDrive:
 
     # -- on the simulation thread ---------------------------------------------------------
     def command(self, sim, message: dict) -> None:
+        """A DriveCommand of the schema (its fields' types and ranges checked)."""
         robot = sim.robots[0]
-        kind = message.get("type")
+        kind = message["type"]
         if kind == "vw":
             vw = robot.component(VwController)
             if vw is None:
                 raise EditorError(f"a {robot.type.drive} robot has no V-omega drive: use its motors or servos")
-            v, w = _number(message, "v", 1e4), _number(message, "w", 1e4)
             try:
-                vw.set_speed(mm(v), math.radians(w))
+                vw.set_speed(mm(message["v"]), math.radians(message["w"]))
             except ValueError as error:
                 raise EditorError(str(error)) from None
         elif kind == "motor":
-            number, speed = _whole(message, "motor"), _number(message, "speed", 100)
+            number, speed = message["motor"], message["speed"]
             motor = robot.motors.get(number)
             if motor is None:
                 raise EditorError(f"no motor {number} (motors: {sorted(robot.motors) or 'none'})")
@@ -357,17 +360,13 @@ class TestDrive:
                     vw.release()
             motor.drive(round(speed))
         elif kind == "servo":
-            number, position = _whole(message, "servo"), _number(message, "position", SERVO_MAX)
+            number, position = message["servo"], message["position"]
             servo = robot.servos.get(number)
             if servo is None:
                 raise EditorError(f"no servo {number} (servos: {sorted(robot.servos) or 'none'})")
-            if not 0 <= position <= SERVO_MAX:
-                raise EditorError(f"servo position {position:g} is outside 0..{SERVO_MAX}")
             servo.set(round(position))
-        elif kind == "reset":
+        else:  # reset
             sim.reset()
-        else:
-            raise EditorError(f"unknown test-drive command {kind!r}: expected vw, motor, servo or reset")
 
     def state(self, sim) -> dict:
         self.last_seen = time.monotonic()
@@ -386,21 +385,6 @@ class TestDrive:
             v, w = vw.measured_speed()
             readings["vw"] = [round(v * 1000), round(math.degrees(w))]
         return {**sensors(sim), "time": sim.time, "readings": readings}
-
-
-def _number(message: dict, key: str, limit: float) -> float:
-    value = message.get(key)
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
-            or abs(value) > limit:
-        raise EditorError(f"{key}: expected a number from {-limit:g} to {limit:g}, found {value!r}")
-    return float(value)
-
-
-def _whole(message: dict, key: str) -> int:
-    value = message.get(key)
-    if isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= 64:
-        raise EditorError(f"{key}: expected a number from 1 to 64, found {value!r}")
-    return value
 
 
 def _jpeg(pixels) -> str:
@@ -453,10 +437,10 @@ class RobotEditor:
         return await _answer(request, self._opened)
 
     async def _opened(self, body: dict) -> dict:
-        robot, path, problems = await _off_loop(open_robot, self.root, body.get("source"))
+        robot, path, problems = await _off_loop(open_robot, self.root, body["source"])
         origin = path.resolve().relative_to(self.root.resolve()).as_posix() \
             if path is not None and self.root.resolve() in path.resolve().parents else None
-        source = body.get("source")
+        source = body["source"]
         builtin = source.partition(":")[2] if source.startswith("builtin:") else None
         return {"robot": full_json(robot), "origin": origin, "builtin": builtin, "problems": problems}
 
@@ -471,7 +455,7 @@ class RobotEditor:
         return await _answer(request, self._checked)
 
     async def _checked(self, body: dict) -> dict:
-        robot, problems = check_document(body.get("robot"))
+        robot, problems = check_document(body["robot"])
         if robot is None:
             return {"problems": problems, "preview": None}
         origin = self._origin(body)
@@ -488,11 +472,11 @@ class RobotEditor:
         return await _answer(request, self._saved)
 
     async def _saved(self, body: dict) -> dict:
-        robot, problems = check_document(body.get("robot"))
+        robot, problems = check_document(body["robot"])
         if robot is None:
             raise EditorError("the robot has errors: " + "; ".join(
                 f"{p['pointer'] or 'robot'}: {p['message']}" for p in problems if p["kind"] == "error"))
-        path = await _off_loop(save_robot, self.root, robot, body.get("path"), body.get("overwrite") is True,
+        path = await _off_loop(save_robot, self.root, robot, body["path"], body.get("overwrite") is True,
                                self._origin(body))
         diagnostics = Diagnostics()
         _, again = read_document(path, diagnostics, ("robot",))  # what `eyesim check` will say
@@ -505,7 +489,7 @@ class RobotEditor:
         return await _answer(request, self._drive_started)
 
     async def _drive_started(self, body: dict) -> dict:
-        robot, problems = check_document(body.get("robot"))
+        robot, problems = check_document(body["robot"])
         if robot is None:
             raise EditorError("fix the robot's errors before a test drive")
         robot = resolved_model(robot, self._origin(body))
@@ -536,8 +520,11 @@ class RobotEditor:
             return web.json_response({"error": "the test drive did not answer"}, status=504)
 
     async def _drive_stop(self, request: web.Request) -> web.Response:
+        return await _answer(request, self._drive_stopped)
+
+    async def _drive_stopped(self, body: dict) -> dict:
         await _off_loop(self.stop_drive)
-        return web.json_response({"ok": True})
+        return {"ok": True}
 
     def _running_drive(self) -> TestDrive:
         if self.drive is None or not self.drive.thread.is_alive():
@@ -558,21 +545,11 @@ async def _off_loop(function, *args):
 
 
 async def _answer(request: web.Request, handler) -> web.Response:
-    """Reads the JSON body, runs `handler(body)`; a bad request gets its status and message."""
+    """Reads and checks the JSON body, runs `handler(body)`; a bad request gets its status and message."""
     try:
-        if request.content_length is not None and request.content_length > MAX_ROBOT_BYTES:
-            raise EditorError(f"request larger than {MAX_ROBOT_BYTES} bytes", 413)
-        raw = await request.content.read(MAX_ROBOT_BYTES + 1)
-        if len(raw) > MAX_ROBOT_BYTES:
-            raise EditorError(f"request larger than {MAX_ROBOT_BYTES} bytes", 413)
-        try:
-            body = json.loads(raw or b"{}")
-        except (ValueError, RecursionError) as error:
-            raise EditorError(f"not valid JSON: {error}") from None
-        if not isinstance(body, dict):
-            raise EditorError("expected a JSON object")
+        body = await checked_body(request, MAX_ROBOT_BYTES)
         return web.json_response(await handler(body))
-    except EditorError as error:
+    except (BadBody, EditorError) as error:
         return web.json_response({"error": str(error)}, status=error.status)
     except Exception:  # noqa: BLE001 - the editor's request fails, the simulator goes on
         log.exception("robot editor: %s failed", request.path)

@@ -10,7 +10,6 @@ Saving writes the same description as .sim (+ .wld when the world was edited) or
 from __future__ import annotations
 
 import dataclasses
-import math
 import os
 from dataclasses import dataclass
 from pathlib import Path
@@ -22,8 +21,6 @@ from eyesim.scene.loader import build_scene, load_object_type, load_robot_type
 from eyesim.scene.sim import Placement, Reference, SimDocument, write_sim
 from eyesim.scene.wld import write_wld
 
-MAX_COORDINATE = 100_000.0  # mm: a hundred metres is far past any floor
-MIN_FLOOR, MAX_FLOOR = 100.0, 100_000.0  # mm
 DUPLICATE_OFFSET = 150.0  # mm a copy is placed beside its original
 
 
@@ -142,43 +139,31 @@ def _is_builtin(builtin: Path | None, source: str) -> bool:
 
 # -- edit operations --------------------------------------------------------------------------
 def apply(draft: Draft, op: dict, locate) -> Draft:
-    """The draft after the edit `op` (a JSON object from the browser); EditError when it is
-    malformed. `locate(place)` turns a {"root", "path"} object into a confined absolute Path."""
-    if not isinstance(op, dict) or not isinstance(op.get("op"), str):
-        raise EditError('expected an edit object with "op"')
-    handler = OPERATIONS.get(op["op"])
-    if handler is None:
-        raise EditError(f"unknown edit {op['op']!r}: expected one of {', '.join(OPERATIONS)}")
-    return handler(draft, op, locate)
+    """The draft after the edit `op`, a JSON object from the browser that its definition in
+    protocol/viewer.schema.json (`SceneEdit`) has checked: its fields' types and ranges; what
+    depends on the scene (is there a robot 3) is checked here. `locate(place)` turns a
+    {"root", "path"} object into a confined absolute Path."""
+    return OPERATIONS[op["op"]](draft, op, locate)
 
 
-def _number(op: dict, key: str, low: float = -MAX_COORDINATE, high: float = MAX_COORDINATE,
-            default: float | None = None) -> float:
+def _number(op: dict, key: str, default: float | None = None) -> float:
+    """A field the schema checked when present; which ones a move needs depends on what moves."""
     value = op.get(key, default)
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-        raise EditError(f"{op.get('op')}: {key} must be a number, not {value!r}")
-    if not low <= value <= high:
-        raise EditError(f"{op.get('op')}: {key} {value:g} is outside {low:g} .. {high:g}")
+    if value is None:
+        raise EditError(f"{op['op']}: field {key!r} is missing")
     return float(value)
 
 
 def _pose(op: dict) -> Pose:
-    phi = _number(op, "phi", -1e6, 1e6, 0.0)
+    phi = _number(op, "phi", 0.0)
     return Pose(_number(op, "x"), _number(op, "y"), (phi + 180.0) % 360.0 - 180.0)
 
 
 def _index(op: dict, count: int, what: str) -> int:
-    index = op.get("index")
-    if isinstance(index, bool) or not isinstance(index, int) or not 0 <= index < count:
-        raise EditError(f"{op.get('op')}: no {what} number {index!r} (there are {count})")
+    index = op["index"]
+    if index >= count:
+        raise EditError(f"{op['op']}: no {what} number {index} (there are {count})")
     return index
-
-
-def _kind(op: dict) -> str:
-    kind = op.get("kind")
-    if kind not in ("robot", "object", "marker", "wall"):
-        raise EditError(f"{op.get('op')}: kind must be robot, object, marker or wall, not {kind!r}")
-    return kind
 
 
 def _type_name(op: dict, locate, files: tuple[str, ...], load, builtin_path, builtin_names, suffix: str):
@@ -211,9 +196,6 @@ def add_object(draft: Draft, op: dict, locate) -> Draft:
 
 def add_marker(draft: Draft, op: dict, locate) -> Draft:
     color = op.get("color", [255, 0, 0])
-    if not (isinstance(color, list) and len(color) in (3, 4) and
-            all(isinstance(c, int) and not isinstance(c, bool) and 0 <= c <= 255 for c in color)):
-        raise EditError(f"add-marker: color must be 3 or 4 whole numbers 0-255, not {color!r}")
     marker = Marker(_number(op, "x"), _number(op, "y"), tuple(color) if len(color) == 4 else (*color, 255))
     return dataclasses.replace(draft, markers=draft.markers + (marker,))
 
@@ -228,7 +210,7 @@ def add_wall(draft: Draft, op: dict, locate) -> Draft:
 
 def move(draft: Draft, op: dict, locate) -> Draft:
     """x, y (mm) and phi (deg) of a robot, object or marker; x1 y1 x2 y2 of a wall."""
-    kind = _kind(op)
+    kind = op["kind"]
     if kind == "robot":
         index = _index(op, len(draft.robots), "robot")
         robots = list(draft.robots)
@@ -253,7 +235,7 @@ def move(draft: Draft, op: dict, locate) -> Draft:
 
 
 def delete(draft: Draft, op: dict, locate) -> Draft:
-    kind = _kind(op)
+    kind = op["kind"]
     if kind == "robot":
         index = _index(op, len(draft.robots), "robot")
         return dataclasses.replace(draft, robots=draft.robots[:index] + draft.robots[index + 1:])
@@ -271,7 +253,7 @@ def delete(draft: Draft, op: dict, locate) -> Draft:
 
 def duplicate(draft: Draft, op: dict, locate) -> Draft:
     """A copy beside the original (robots, objects and markers), appended to its list."""
-    kind = _kind(op)
+    kind = op["kind"]
     if kind == "robot":
         original = draft.robots[_index(op, len(draft.robots), "robot")]
         pose = Pose(original.pose.x + DUPLICATE_OFFSET, original.pose.y, original.pose.phi)
@@ -292,8 +274,7 @@ def duplicate(draft: Draft, op: dict, locate) -> Draft:
 
 def set_floor(draft: Draft, op: dict, locate) -> Draft:
     draft = draft.with_own_world()
-    world = dataclasses.replace(draft.world, floor_width=_number(op, "width", MIN_FLOOR, MAX_FLOOR),
-                                floor_height=_number(op, "height", MIN_FLOOR, MAX_FLOOR))
+    world = dataclasses.replace(draft.world, floor_width=_number(op, "width"), floor_height=_number(op, "height"))
     return dataclasses.replace(draft, world=world)
 
 
@@ -301,8 +282,6 @@ def set_program(draft: Draft, op: dict, locate) -> Draft:
     """The program a robot runs: a file under the roots, or none (`program: null`)."""
     index = _index(op, len(draft.robots), "robot")
     program = op.get("program")
-    if program is not None and not isinstance(program, dict):
-        raise EditError('set-program: program must be {"root": n, "path": "..."} or null')
     path = locate(program) if program is not None else None
     if path is not None and not path.is_file():
         raise EditError(f"set-program: no program file {program.get('path')!r}")

@@ -12,10 +12,12 @@ JSON routes under /scenes/ (behind the viewer's access checks like every route):
     POST /scenes/undo, /redo
     POST /scenes/save            {"root", "path", "format": "sim"|"json", "overwrite": bool}
 
-A scene that fails to load or an edit the loader refuses answers 422 with the diagnostics
-(file:line) and leaves the running scene as it was. Editing stops the programs and pauses the
-simulation; each edit rebuilds the world from the edited description; ending the edit starts the
-scene's programs again and resumes if the simulation was running before."""
+Every body is checked against its definition in protocol/viewer.schema.json first
+(route_bodies.py): a malformed one answers 400 naming the field. A scene that fails to load or an
+edit the loader refuses answers 422 with the diagnostics (file:line) and leaves the running scene
+as it was. Editing stops the programs and pauses the simulation; each edit rebuilds the world
+from the edited description; ending the edit starts the scene's programs again and resumes if the
+simulation was running before."""
 
 from __future__ import annotations
 
@@ -28,6 +30,7 @@ from pathlib import Path
 from aiohttp import web
 
 from eyesim.scene import SceneError, World, builtins, load_scene
+from eyesim.web.route_bodies import BadBody, checked_body
 from eyesim.web.scene_editing import Draft, EditError, apply, saved_files, set_floor
 from eyesim.web.scene_files import FileAccessError, SceneRoots
 from eyesim.web.simulation_calls import on_simulation
@@ -133,9 +136,7 @@ class SceneWorkspace:
     async def _edit(self, request: web.Request) -> web.Response:
         body = await _body(request)
         async with self._lock:
-            if "editing" in body and "op" not in body:
-                if not isinstance(body["editing"], bool):
-                    raise _bad_request("editing must be true or false")
+            if "op" not in body:  # {"editing": true|false}
                 await self._set_editing(body["editing"])
                 return web.json_response(self.state())
             try:
@@ -145,12 +146,14 @@ class SceneWorkspace:
             return await self._take(draft, self.undo_stack, clear_redo=True)
 
     async def _undo(self, request: web.Request) -> web.Response:
+        await _body(request)
         async with self._lock:
             if not self.undo_stack:
                 return _refused("nothing to undo")
             return await self._take(self.undo_stack.pop(), self.redo_stack, clear_redo=False)
 
     async def _redo(self, request: web.Request) -> web.Response:
+        await _body(request)
         async with self._lock:
             if not self.redo_stack:
                 return _refused("nothing to redo")
@@ -160,9 +163,7 @@ class SceneWorkspace:
         body = await _body(request)
         async with self._lock:
             target = self._locate(body)
-            as_json = body.get("format") == "json"
-            if body.get("format") not in ("sim", "json"):
-                raise _bad_request('format must be "sim" or "json"')
+            as_json = body["format"] == "json"
             wanted = ".json" if as_json else ".sim"
             if not target.name.lower().endswith(wanted):
                 target = target.with_name(target.name + wanted)
@@ -245,11 +246,10 @@ class SceneWorkspace:
                                                                          f"{error}", "diagnostics": []}),
                                               content_type="application/json") from None
 
-    def _locate(self, place) -> Path:
-        if not isinstance(place, dict):
-            raise _bad_request('expected {"root": n, "path": "..."}')
+    def _locate(self, place: dict) -> Path:
+        """The file a {"root", "path"} object (checked by the schema) names, confined to its root."""
         try:
-            return self.roots.locate(place.get("root"), place.get("path"))
+            return self.roots.locate(place["root"], place["path"])
         except FileAccessError as error:
             raise web.HTTPForbidden(text=json.dumps({"error": str(error)}), content_type="application/json")
 
@@ -276,19 +276,14 @@ async def _in_thread(function, *args):
 
 
 async def _body(request: web.Request) -> dict:
-    if request.content_length is not None and request.content_length > MAX_BODY:
-        raise _bad_request("the request is too large")
     try:
-        body = json.loads(await request.text())
-    except ValueError as error:
-        raise _bad_request(f"not valid JSON: {error}") from None
-    if not isinstance(body, dict):
-        raise _bad_request("expected a JSON object")
-    return body
-
-
-def _bad_request(message: str) -> web.HTTPBadRequest:
-    return web.HTTPBadRequest(text=json.dumps({"error": message}), content_type="application/json")
+        return await checked_body(request, MAX_BODY)
+    except BadBody as error:
+        text = json.dumps({"error": str(error)})
+        if error.status == 413:
+            raise web.HTTPRequestEntityTooLarge(MAX_BODY, request.content_length or MAX_BODY + 1, text=text,
+                                                content_type="application/json") from None
+        raise web.HTTPBadRequest(text=text, content_type="application/json") from None
 
 
 def _refused(message: str, diagnostics=()) -> web.Response:

@@ -2,7 +2,9 @@
 // choosing one replaces the running scene. A file that fails to load leaves the scene running and
 // its errors show here with file:line.
 
-import { errorText, getJson, placeText, postJson, type EditorState, type Place, type SceneFiles } from "./api";
+import { call, errorText } from "../api";
+import type { EditorState, Place, SceneFiles } from "../generated/viewer_protocol";
+import { placeText } from "./places";
 
 const SEARCH_DELAY_MS = 200;
 
@@ -51,7 +53,7 @@ export class SceneBrowser {
 
   private async refresh(): Promise<void> {
     try {
-      const listing = await getJson<SceneFiles>(`/scenes/files?q=${encodeURIComponent(this.search.value)}`);
+      const listing = await call("GET /scenes/files", `q=${encodeURIComponent(this.search.value)}`);
       this.fill(this.recent, listing.recent, listing);
       this.fill(this.files, listing.files, listing);
       this.listed++;
@@ -79,7 +81,7 @@ export class SceneBrowser {
 
   private async create(): Promise<void> {
     try {
-      const state = await postJson<EditorState>("/scenes/new", {});
+      const state = await call("POST /scenes/new", {});
       this.element.close();
       this.opened(state);
     } catch (error) {
@@ -90,7 +92,7 @@ export class SceneBrowser {
   private async open(place: Place): Promise<void> {
     this.message.textContent = `opening ${place.path}…`;
     try {
-      const state = await postJson<EditorState>("/scenes/open", place);
+      const state = await call("POST /scenes/open", place);
       this.element.close();
       this.opened(state);
     } catch (error) {

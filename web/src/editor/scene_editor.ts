@@ -6,22 +6,14 @@
 import type { PickTarget } from "../interaction";
 import type { BrowserCommand } from "../protocol";
 import type { Viewer } from "../viewer";
-import {
-  errorText,
-  getJson,
-  placeText,
-  postJson,
-  RouteError,
-  type Catalog,
-  type EditorState,
-  type Place,
-  type SceneFiles,
-} from "./api";
+import { call, errorText, RouteError } from "../api";
+import type { EditKind, EditorState, Place, SceneCatalog, SceneEdit, SceneRoot, SceneSave } from "../generated/viewer_protocol";
+import { placeText } from "./places";
 import { SceneBrowser } from "./scene_browser";
 import { SelectionMark } from "./selection_mark";
 import { WallTool } from "./wall_tool";
 
-type Kind = "robot" | "object" | "marker" | "wall";
+type Kind = EditKind;
 
 interface Selection {
   kind: Kind;
@@ -45,8 +37,8 @@ export class SceneEditor {
   readonly walls: WallTool;
   private readonly mark: SelectionMark;
   private state: EditorState | null = null;
-  private catalog: Catalog | null = null;
-  private roots: SceneFiles["roots"] = [];
+  private catalog: SceneCatalog | null = null;
+  private roots: SceneRoot[] = [];
   private selection: Selection | null = null;
   private readonly editButton: HTMLButtonElement;
   private readonly message: HTMLElement;
@@ -164,8 +156,8 @@ export class SceneEditor {
 
   private wire(): void {
     const on = (id: string, action: () => void) => element(this.panel, id).addEventListener("click", action);
-    on("#editor-undo", () => this.run(() => postJson<EditorState>("/scenes/undo", {})));
-    on("#editor-redo", () => this.run(() => postJson<EditorState>("/scenes/redo", {})));
+    on("#editor-undo", () => this.run(() => call("POST /scenes/undo", {})));
+    on("#editor-redo", () => this.run(() => call("POST /scenes/redo", {})));
     on("#editor-done", () => this.setEditing(false));
     on("#editor-save", () => this.openSave());
     on("#editor-add-robot", () => this.addRobot());
@@ -196,8 +188,8 @@ export class SceneEditor {
     window.addEventListener("keydown", (event) => {
       if (!this.state?.editing || (event.target as HTMLElement).closest("input, select, textarea")) return;
       const key = event.key.toLowerCase();
-      if ((event.ctrlKey || event.metaKey) && key === "z") this.run(() => postJson<EditorState>("/scenes/undo", {}));
-      else if ((event.ctrlKey || event.metaKey) && key === "y") this.run(() => postJson<EditorState>("/scenes/redo", {}));
+      if ((event.ctrlKey || event.metaKey) && key === "z") this.run(() => call("POST /scenes/undo", {}));
+      else if ((event.ctrlKey || event.metaKey) && key === "y") this.run(() => call("POST /scenes/redo", {}));
       else if (key === "delete") this.deleteSelected();
       else return;
       event.preventDefault();
@@ -207,7 +199,7 @@ export class SceneEditor {
   // -- talking to the simulator ----------------------------------------------------------------
   private async refresh(): Promise<void> {
     try {
-      this.state = await getJson<EditorState>("/scenes/state");
+      this.state = await call("GET /scenes/state");
       for (const button of this.panel.ownerDocument.querySelectorAll<HTMLElement>("#open-scenes, #edit-scene")) {
         button.hidden = false;
       }
@@ -232,14 +224,14 @@ export class SceneEditor {
     return next;
   }
 
-  private edit(op: Record<string, unknown>): Promise<void> {
-    return this.run(() => postJson<EditorState>("/scenes/edit", op));
+  private edit(op: SceneEdit): Promise<void> {
+    return this.run(() => call("POST /scenes/edit", op));
   }
 
   private setEditing(editing: boolean): void {
     if (editing) void this.loadCatalog();
     if (!editing) this.setWallDrawing(false);
-    void this.run(() => postJson<EditorState>("/scenes/edit", { editing }));
+    void this.run(() => call("POST /scenes/edit", { editing }));
   }
 
   private show(state: EditorState): void {
@@ -250,7 +242,7 @@ export class SceneEditor {
 
   private async loadCatalog(): Promise<void> {
     try {
-      const [catalog, files] = await Promise.all([getJson<Catalog>("/scenes/catalog"), getJson<SceneFiles>("/scenes/files")]);
+      const [catalog, files] = await Promise.all([call("GET /scenes/catalog"), call("GET /scenes/files")]);
       this.catalog = catalog;
       this.roots = files.roots;
       this.fillCatalog();
@@ -381,7 +373,7 @@ export class SceneEditor {
     return { x: width / 2 + ((count % 5) - 2) * NEW_THING_SPACING, y: height / 2 + NEW_THING_SPACING };
   }
 
-  private typeChoice(id: string): Record<string, unknown> {
+  private typeChoice(id: string): { file: Place } | { type: string } {
     const value = element<HTMLSelectElement>(this.panel, id).value;
     return value.startsWith("{") ? { file: JSON.parse(value) as Place } : { type: value };
   }
@@ -460,17 +452,17 @@ export class SceneEditor {
   private async save(overwrite: boolean): Promise<void> {
     const root = Number(element<HTMLSelectElement>(this.panel, "#save-root").value);
     const path = element<HTMLInputElement>(this.panel, "#save-name").value;
-    const format = element<HTMLSelectElement>(this.panel, "#save-format").value;
+    const format = element<HTMLSelectElement>(this.panel, "#save-format").value as SceneSave["format"];
     let saved: Place[] = [];
     await this.run(async () => {
       let state: EditorState;
       try {
-        state = await postJson<EditorState>("/scenes/save", { root, path, format, overwrite });
+        state = await call("POST /scenes/save", { root, path, format, overwrite });
       } catch (error) {
         const replace = error instanceof RouteError && error.status === 409 && !overwrite &&
           window.confirm(`${error.exists.map((p) => p.path).join(", ")} already exists. Replace it?`);
         if (!replace) throw error;
-        state = await postJson<EditorState>("/scenes/save", { root, path, format, overwrite: true });
+        state = await call("POST /scenes/save", { root, path, format, overwrite: true });
       }
       saved = state.saved ?? [];
       return state;

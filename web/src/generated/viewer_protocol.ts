@@ -63,6 +63,10 @@ function list<T>(value: unknown, what: string, parse: Parse<T>, lenient: boolean
   return parsed;
 }
 
+function mapOf<T>(fields: Fields, what: string, parse: Parse<T>): Record<string, T> {
+  return Object.fromEntries(Object.entries(fields).map(([key, item]) => [key, parse(item, `${what}.${key}`)]));
+}
+
 function either<T>(value: unknown, what: string, parsers: Parse<T>[], must: string): T {
   for (const parse of parsers) {
     try {
@@ -810,3 +814,837 @@ export interface MeshPart {
 export function parseMeshPart(value: unknown, what: string): MeshPart {
   return objectOf(record(value, what), what, {color: [parseRgb, true, undefined], vertices: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), false, undefined, undefined) as number[], true, undefined], triangles: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => num(v, w, true, 0, undefined, false, false), false, undefined, undefined) as number[], true, undefined]}) as unknown as MeshPart;
 }
+
+/** The answer of any route that refused a request (4xx, 5xx): nothing changed. */
+export interface RouteError {
+  /** why, in one sentence */
+  error: string;
+  /** the loader's diagnostics (scene routes, 422) */
+  diagnostics?: SceneDiagnostic[];
+  /** files a save would overwrite (409) */
+  exists?: Place[];
+}
+
+export function parseRouteError(value: unknown, what: string): RouteError {
+  return objectOf(record(value, what), what, {error: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], diagnostics: [(v: unknown, w: string) => list(v, w, parseSceneDiagnostic, true, undefined, undefined) as SceneDiagnostic[], false, undefined], exists: [(v: unknown, w: string) => list(v, w, parsePlace, true, undefined, undefined) as Place[], false, undefined]}) as unknown as RouteError;
+}
+
+/** A file under a root: the root's index and a path relative to it. */
+export interface Place {
+  /** index into the roots */
+  root: number;
+  /** a path relative to the root */
+  path: string;
+}
+
+export function parsePlace(value: unknown, what: string): Place {
+  return objectOf(record(value, what), what, {root: [(v: unknown, w: string) => num(v, w, true, 0, 1000, false, false), true, undefined], path: [(v: unknown, w: string) => str(v, w, 1, 1000, undefined), true, undefined]}) as unknown as Place;
+}
+
+/** The request was carried out. */
+export interface Done {
+  ok: true;
+}
+
+export function parseDone(value: unknown, what: string): Done {
+  return objectOf(record(value, what), what, {ok: [(v: unknown, w: string) => literal(v, [true] as const, w), true, undefined]}) as unknown as Done;
+}
+
+/** A request that takes no fields: an empty JSON object (or no body). */
+export interface NoBody {
+
+}
+
+export function parseNoBody(value: unknown, what: string): NoBody {
+  return objectOf(record(value, what), what, {}) as unknown as NoBody;
+}
+
+/** A problem the scene loader found. */
+export interface SceneDiagnostic {
+  kind: string;
+  file: string;
+  line: number;
+  column: number;
+  message: string;
+  /** file:line: kind: message, as the simulator prints it */
+  text: string;
+}
+
+export function parseSceneDiagnostic(value: unknown, what: string): SceneDiagnostic {
+  return objectOf(record(value, what), what, {kind: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], file: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], line: [(v: unknown, w: string) => num(v, w, true, 0, undefined, false, false), true, undefined], column: [(v: unknown, w: string) => num(v, w, true, 0, undefined, false, false), true, undefined], message: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], text: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined]}) as unknown as SceneDiagnostic;
+}
+
+export interface SceneRoot {
+  index: number;
+  name: string;
+  path: string;
+  writable: boolean;
+}
+
+export function parseSceneRoot(value: unknown, what: string): SceneRoot {
+  return objectOf(record(value, what), what, {index: [(v: unknown, w: string) => num(v, w, true, 0, undefined, false, false), true, undefined], name: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], path: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], writable: [bool, true, undefined]}) as unknown as SceneRoot;
+}
+
+/** GET /scenes/files?q=words: the scene files whose path has every word, the recent ones, the roots. */
+export interface SceneFiles {
+  roots: SceneRoot[];
+  files: Place[];
+  recent: Place[];
+}
+
+export function parseSceneFiles(value: unknown, what: string): SceneFiles {
+  return objectOf(record(value, what), what, {roots: [(v: unknown, w: string) => list(v, w, parseSceneRoot, true, undefined, undefined) as SceneRoot[], true, undefined], files: [(v: unknown, w: string) => list(v, w, parsePlace, true, undefined, undefined) as Place[], true, undefined], recent: [(v: unknown, w: string) => list(v, w, parsePlace, true, undefined, undefined) as Place[], true, undefined]}) as unknown as SceneFiles;
+}
+
+/** What the scene editor can add. */
+export interface SceneCatalog {
+  /** built-in robot types */
+  robots: string[];
+  /** built-in object types */
+  objects: string[];
+  robot_files: Place[];
+  object_files: Place[];
+  programs: Place[];
+}
+
+export function parseSceneCatalog(value: unknown, what: string): SceneCatalog {
+  return objectOf(record(value, what), what, {robots: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined, undefined) as string[], true, undefined], objects: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined, undefined) as string[], true, undefined], robot_files: [(v: unknown, w: string) => list(v, w, parsePlace, true, undefined, undefined) as Place[], true, undefined], object_files: [(v: unknown, w: string) => list(v, w, parsePlace, true, undefined, undefined) as Place[], true, undefined], programs: [(v: unknown, w: string) => list(v, w, parsePlace, true, undefined, undefined) as Place[], true, undefined]}) as unknown as SceneCatalog;
+}
+
+export interface EditorRobot {
+  type: string;
+  x: number;
+  y: number;
+  phi: number;
+  /** absolute path */
+  program: string | null;
+}
+
+export function parseEditorRobot(value: unknown, what: string): EditorRobot {
+  return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], x: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], y: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], phi: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], program: [(v: unknown, w: string): string | null => either<string | null>(v, w, [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), (v: unknown, w: string) => literal(v, [null] as const, w)], "string or null"), true, undefined]}) as unknown as EditorRobot;
+}
+
+export interface EditorObject {
+  type: string;
+  x: number;
+  y: number;
+  phi: number;
+  /** one of the world file's own (a maze ball) */
+  world: boolean;
+}
+
+export function parseEditorObject(value: unknown, what: string): EditorObject {
+  return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], x: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], y: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], phi: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], world: [bool, true, undefined]}) as unknown as EditorObject;
+}
+
+export interface EditorMarker {
+  x: number;
+  y: number;
+  color: number[];
+}
+
+export function parseEditorMarker(value: unknown, what: string): EditorMarker {
+  return objectOf(record(value, what), what, {x: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], y: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], color: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => num(v, w, true, 0, 255, false, false), false, 3, 4) as number[], true, undefined]}) as unknown as EditorMarker;
+}
+
+export interface EditorWall {
+  x1: number;
+  y1: number;
+  x2: number;
+  y2: number;
+}
+
+export function parseEditorWall(value: unknown, what: string): EditorWall {
+  return objectOf(record(value, what), what, {x1: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], y1: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], x2: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], y2: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined]}) as unknown as EditorWall;
+}
+
+/** The scene's editable things in mm and degrees, numbered as edits name them. */
+export interface EditorItems {
+  robots: EditorRobot[];
+  objects: EditorObject[];
+  markers: EditorMarker[];
+  walls: EditorWall[];
+  floor: { width: number | null; height: number | null; };
+}
+
+export function parseEditorItems(value: unknown, what: string): EditorItems {
+  return objectOf(record(value, what), what, {robots: [(v: unknown, w: string) => list(v, w, parseEditorRobot, true, undefined, undefined) as EditorRobot[], true, undefined], objects: [(v: unknown, w: string) => list(v, w, parseEditorObject, true, undefined, undefined) as EditorObject[], true, undefined], markers: [(v: unknown, w: string) => list(v, w, parseEditorMarker, true, undefined, undefined) as EditorMarker[], true, undefined], walls: [(v: unknown, w: string) => list(v, w, parseEditorWall, true, undefined, undefined) as EditorWall[], true, undefined], floor: [(v: unknown, w: string) => objectOf(record(v, w), w, {width: [(v: unknown, w: string): number | null => either<number | null>(v, w, [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), (v: unknown, w: string) => literal(v, [null] as const, w)], "number or null"), true, undefined], height: [(v: unknown, w: string): number | null => either<number | null>(v, w, [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), (v: unknown, w: string) => literal(v, [null] as const, w)], "number or null"), true, undefined]}) as unknown as { width: number | null; height: number | null; }, true, undefined]}) as unknown as EditorItems;
+}
+
+/** The scene being edited (the answer of every /scenes route that changes it). */
+export interface EditorState {
+  editing: boolean;
+  browse_at_start: boolean;
+  file: string;
+  place: Place | null;
+  can_undo: boolean;
+  can_redo: boolean;
+  items: EditorItems;
+  /** what the loader found wrong in the scene now running */
+  warnings?: SceneDiagnostic[];
+  /** the files a save wrote */
+  saved?: Place[];
+}
+
+export function parseEditorState(value: unknown, what: string): EditorState {
+  return objectOf(record(value, what), what, {editing: [bool, true, undefined], browse_at_start: [bool, true, undefined], file: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], place: [(v: unknown, w: string): Place | null => either<Place | null>(v, w, [parsePlace, (v: unknown, w: string) => literal(v, [null] as const, w)], "Place or null"), true, undefined], can_undo: [bool, true, undefined], can_redo: [bool, true, undefined], items: [parseEditorItems, true, undefined], warnings: [(v: unknown, w: string) => list(v, w, parseSceneDiagnostic, true, undefined, undefined) as SceneDiagnostic[], false, undefined], saved: [(v: unknown, w: string) => list(v, w, parsePlace, true, undefined, undefined) as Place[], false, undefined]}) as unknown as EditorState;
+}
+
+/** An empty floor (2000 mm each side unless given). */
+export interface NewScene {
+  /** mm */
+  width?: number;
+  /** mm */
+  height?: number;
+}
+
+export function parseNewScene(value: unknown, what: string): NewScene {
+  return objectOf(record(value, what), what, {width: [(v: unknown, w: string) => num(v, w, false, 100, 100000, false, false), false, undefined], height: [(v: unknown, w: string) => num(v, w, false, 100, 100000, false, false), false, undefined]}) as unknown as NewScene;
+}
+
+/** Where and how to save the scene (the suffix is added when missing). */
+export interface SceneSave {
+  /** index into the roots */
+  root: number;
+  /** a path relative to the root */
+  path: string;
+  format: "sim" | "json";
+  overwrite?: boolean;
+}
+
+export function parseSceneSave(value: unknown, what: string): SceneSave {
+  return objectOf(record(value, what), what, {root: [(v: unknown, w: string) => num(v, w, true, 0, 1000, false, false), true, undefined], path: [(v: unknown, w: string) => str(v, w, 1, 1000, undefined), true, undefined], format: [(v: unknown, w: string) => literal(v, ["sim", "json"] as const, w), true, undefined], overwrite: [bool, false, undefined]}) as unknown as SceneSave;
+}
+
+/** POST /scenes/edit: start or end editing, or one edit (by its `op`). */
+export type SceneEdit = EditingSwitch | AddRobotEdit | AddObjectEdit | AddMarkerEdit | AddWallEdit | MoveEdit | DeleteEdit | DuplicateEdit | SetFloorEdit | SetProgramEdit;
+
+export function parseSceneEdit(value: unknown, what: string): SceneEdit {
+  const fields = record(value, what);
+  switch (fields.op) {
+    case undefined: return parseEditingSwitch(fields, what);
+    case "add-robot": return parseAddRobotEdit(fields, what);
+    case "add-object": return parseAddObjectEdit(fields, what);
+    case "add-marker": return parseAddMarkerEdit(fields, what);
+    case "add-wall": return parseAddWallEdit(fields, what);
+    case "move": return parseMoveEdit(fields, what);
+    case "delete": return parseDeleteEdit(fields, what);
+    case "duplicate": return parseDuplicateEdit(fields, what);
+    case "set-floor": return parseSetFloorEdit(fields, what);
+    case "set-program": return parseSetProgramEdit(fields, what);
+    default: throw new MalformedMessage(`${what}: unknown op ${JSON.stringify(fields.op)}`);
+  }
+}
+
+/** Start editing (programs stop, the simulation pauses) or end it. */
+export interface EditingSwitch {
+  editing: boolean;
+}
+
+export function parseEditingSwitch(value: unknown, what: string): EditingSwitch {
+  return objectOf(record(value, what), what, {editing: [bool, true, undefined]}) as unknown as EditingSwitch;
+}
+
+export interface AddRobotEdit {
+  op: "add-robot";
+  /** a built-in robot type */
+  type?: string;
+  /** a .robi file (instead of type) */
+  file?: Place;
+  /** the program it runs */
+  program?: Place;
+  /** mm */
+  x: number;
+  /** mm */
+  y: number;
+  /** degrees, counter-clockwise from +x */
+  phi?: number;
+}
+
+export function parseAddRobotEdit(value: unknown, what: string): AddRobotEdit {
+  return objectOf(record(value, what), what, {op: [(v: unknown, w: string) => literal(v, ["add-robot"] as const, w), true, undefined], type: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined], file: [parsePlace, false, undefined], program: [parsePlace, false, undefined], x: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), true, undefined], y: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), true, undefined], phi: [(v: unknown, w: string) => num(v, w, false, -1000000, 1000000, false, false), false, undefined]}) as unknown as AddRobotEdit;
+}
+
+export interface AddObjectEdit {
+  op: "add-object";
+  /** a built-in object type */
+  type?: string;
+  /** an .esObj file (instead of type) */
+  file?: Place;
+  /** mm */
+  x: number;
+  /** mm */
+  y: number;
+  /** degrees, counter-clockwise from +x */
+  phi?: number;
+}
+
+export function parseAddObjectEdit(value: unknown, what: string): AddObjectEdit {
+  return objectOf(record(value, what), what, {op: [(v: unknown, w: string) => literal(v, ["add-object"] as const, w), true, undefined], type: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined], file: [parsePlace, false, undefined], x: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), true, undefined], y: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), true, undefined], phi: [(v: unknown, w: string) => num(v, w, false, -1000000, 1000000, false, false), false, undefined]}) as unknown as AddObjectEdit;
+}
+
+export interface AddMarkerEdit {
+  op: "add-marker";
+  /** mm */
+  x: number;
+  /** mm */
+  y: number;
+  /** [r, g, b] or [r, g, b, a], 0..255 (red when absent) */
+  color?: number[];
+}
+
+export function parseAddMarkerEdit(value: unknown, what: string): AddMarkerEdit {
+  return objectOf(record(value, what), what, {op: [(v: unknown, w: string) => literal(v, ["add-marker"] as const, w), true, undefined], x: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), true, undefined], y: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), true, undefined], color: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => num(v, w, true, 0, 255, false, false), false, 3, 4) as number[], false, undefined]}) as unknown as AddMarkerEdit;
+}
+
+export interface AddWallEdit {
+  op: "add-wall";
+  /** mm */
+  x1: number;
+  /** mm */
+  y1: number;
+  /** mm */
+  x2: number;
+  /** mm */
+  y2: number;
+}
+
+export function parseAddWallEdit(value: unknown, what: string): AddWallEdit {
+  return objectOf(record(value, what), what, {op: [(v: unknown, w: string) => literal(v, ["add-wall"] as const, w), true, undefined], x1: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), true, undefined], y1: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), true, undefined], x2: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), true, undefined], y2: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), true, undefined]}) as unknown as AddWallEdit;
+}
+
+export type EditKind = "robot" | "object" | "marker" | "wall";
+
+export function parseEditKind(value: unknown, what: string): EditKind {
+  return ((v: unknown, w: string) => literal(v, ["robot", "object", "marker", "wall"] as const, w))(value, what) as EditKind;
+}
+
+/** x, y (and phi) of a robot, object or marker; x1, y1, x2, y2 of a wall. */
+export interface MoveEdit {
+  op: "move";
+  kind: EditKind;
+  index: number;
+  /** mm */
+  x?: number;
+  /** mm */
+  y?: number;
+  /** degrees, counter-clockwise from +x */
+  phi?: number;
+  /** mm */
+  x1?: number;
+  /** mm */
+  y1?: number;
+  /** mm */
+  x2?: number;
+  /** mm */
+  y2?: number;
+}
+
+export function parseMoveEdit(value: unknown, what: string): MoveEdit {
+  return objectOf(record(value, what), what, {op: [(v: unknown, w: string) => literal(v, ["move"] as const, w), true, undefined], kind: [parseEditKind, true, undefined], index: [(v: unknown, w: string) => num(v, w, true, 0, undefined, false, false), true, undefined], x: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), false, undefined], y: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), false, undefined], phi: [(v: unknown, w: string) => num(v, w, false, -1000000, 1000000, false, false), false, undefined], x1: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), false, undefined], y1: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), false, undefined], x2: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), false, undefined], y2: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), false, undefined]}) as unknown as MoveEdit;
+}
+
+export interface DeleteEdit {
+  op: "delete";
+  kind: EditKind;
+  index: number;
+}
+
+export function parseDeleteEdit(value: unknown, what: string): DeleteEdit {
+  return objectOf(record(value, what), what, {op: [(v: unknown, w: string) => literal(v, ["delete"] as const, w), true, undefined], kind: [parseEditKind, true, undefined], index: [(v: unknown, w: string) => num(v, w, true, 0, undefined, false, false), true, undefined]}) as unknown as DeleteEdit;
+}
+
+export interface DuplicateEdit {
+  op: "duplicate";
+  kind: EditKind;
+  index: number;
+}
+
+export function parseDuplicateEdit(value: unknown, what: string): DuplicateEdit {
+  return objectOf(record(value, what), what, {op: [(v: unknown, w: string) => literal(v, ["duplicate"] as const, w), true, undefined], kind: [parseEditKind, true, undefined], index: [(v: unknown, w: string) => num(v, w, true, 0, undefined, false, false), true, undefined]}) as unknown as DuplicateEdit;
+}
+
+export interface SetFloorEdit {
+  op: "set-floor";
+  /** mm */
+  width: number;
+  /** mm */
+  height: number;
+}
+
+export function parseSetFloorEdit(value: unknown, what: string): SetFloorEdit {
+  return objectOf(record(value, what), what, {op: [(v: unknown, w: string) => literal(v, ["set-floor"] as const, w), true, undefined], width: [(v: unknown, w: string) => num(v, w, false, 100, 100000, false, false), true, undefined], height: [(v: unknown, w: string) => num(v, w, false, 100, 100000, false, false), true, undefined]}) as unknown as SetFloorEdit;
+}
+
+export interface SetProgramEdit {
+  op: "set-program";
+  /** the robot's number */
+  index: number;
+  /** a program file, or null for none */
+  program: Place | null;
+}
+
+export function parseSetProgramEdit(value: unknown, what: string): SetProgramEdit {
+  return objectOf(record(value, what), what, {op: [(v: unknown, w: string) => literal(v, ["set-program"] as const, w), true, undefined], index: [(v: unknown, w: string) => num(v, w, true, 0, undefined, false, false), true, undefined], program: [(v: unknown, w: string): Place | null => either<Place | null>(v, w, [parsePlace, (v: unknown, w: string) => literal(v, [null] as const, w)], "Place or null"), true, undefined]}) as unknown as SetProgramEdit;
+}
+
+export interface ProgramRoot {
+  name: string;
+  path: string;
+}
+
+export function parseProgramRoot(value: unknown, what: string): ProgramRoot {
+  return objectOf(record(value, what), what, {name: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], path: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined]}) as unknown as ProgramRoot;
+}
+
+export interface ProgramFile {
+  root: number;
+  path: string;
+  kind: "executable" | "python" | "c" | "c++";
+}
+
+export function parseProgramFile(value: unknown, what: string): ProgramFile {
+  return objectOf(record(value, what), what, {root: [(v: unknown, w: string) => num(v, w, true, 0, undefined, false, false), true, undefined], path: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], kind: [(v: unknown, w: string) => literal(v, ["executable", "python", "c", "c++"] as const, w), true, undefined]}) as unknown as ProgramFile;
+}
+
+export interface ProgramRef {
+  /** null: not under a root (path is absolute) */
+  root: number | null;
+  path: string;
+}
+
+export function parseProgramRef(value: unknown, what: string): ProgramRef {
+  return objectOf(record(value, what), what, {root: [(v: unknown, w: string): number | null => either<number | null>(v, w, [(v: unknown, w: string) => num(v, w, true, undefined, undefined, false, false), (v: unknown, w: string) => literal(v, [null] as const, w)], "number or null"), true, undefined], path: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined]}) as unknown as ProgramRef;
+}
+
+/** A robot's program and how it is doing. */
+export interface RobotProgramState {
+  /** robot id (1..) */
+  id: number;
+  name: string;
+  program: ProgramRef | null;
+  state: "none" | "running" | "exited" | "stopped" | "failed";
+  exit_code: number | null;
+  /** why it failed or how it crashed */
+  reason: string | null;
+}
+
+export function parseRobotProgramState(value: unknown, what: string): RobotProgramState {
+  return objectOf(record(value, what), what, {id: [(v: unknown, w: string) => num(v, w, true, 1, 1000000, false, false), true, undefined], name: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], program: [(v: unknown, w: string): ProgramRef | null => either<ProgramRef | null>(v, w, [parseProgramRef, (v: unknown, w: string) => literal(v, [null] as const, w)], "ProgramRef or null"), true, undefined], state: [(v: unknown, w: string) => literal(v, ["none", "running", "exited", "stopped", "failed"] as const, w), true, undefined], exit_code: [(v: unknown, w: string): number | null => either<number | null>(v, w, [(v: unknown, w: string) => num(v, w, true, undefined, undefined, false, false), (v: unknown, w: string) => literal(v, [null] as const, w)], "number or null"), true, undefined], reason: [(v: unknown, w: string): string | null => either<string | null>(v, w, [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), (v: unknown, w: string) => literal(v, [null] as const, w)], "string or null"), true, undefined]}) as unknown as RobotProgramState;
+}
+
+export interface ProgramsOverview {
+  roots: ProgramRoot[];
+  files: ProgramFile[];
+  robots: RobotProgramState[];
+}
+
+export function parseProgramsOverview(value: unknown, what: string): ProgramsOverview {
+  return objectOf(record(value, what), what, {roots: [(v: unknown, w: string) => list(v, w, parseProgramRoot, true, undefined, undefined) as ProgramRoot[], true, undefined], files: [(v: unknown, w: string) => list(v, w, parseProgramFile, true, undefined, undefined) as ProgramFile[], true, undefined], robots: [(v: unknown, w: string) => list(v, w, parseRobotProgramState, true, undefined, undefined) as RobotProgramState[], true, undefined]}) as unknown as ProgramsOverview;
+}
+
+/** Run an executable or .py file on a robot. */
+export interface StartProgram {
+  /** robot id (1..) */
+  robot: number;
+  /** index into the roots */
+  root: number;
+  /** a path relative to the root */
+  path: string;
+}
+
+export function parseStartProgram(value: unknown, what: string): StartProgram {
+  return objectOf(record(value, what), what, {robot: [(v: unknown, w: string) => num(v, w, true, 1, 1000000, false, false), true, undefined], root: [(v: unknown, w: string) => num(v, w, true, 0, 1000, false, false), true, undefined], path: [(v: unknown, w: string) => str(v, w, 1, 1000, undefined), true, undefined]}) as unknown as StartProgram;
+}
+
+export interface ProgramRobot {
+  /** robot id (1..) */
+  robot: number;
+}
+
+export function parseProgramRobot(value: unknown, what: string): ProgramRobot {
+  return objectOf(record(value, what), what, {robot: [(v: unknown, w: string) => num(v, w, true, 1, 1000000, false, false), true, undefined]}) as unknown as ProgramRobot;
+}
+
+export interface CompilerDiagnostic {
+  file: string;
+  line: number;
+  column: number | null;
+  kind: "error" | "warning" | "note";
+  message: string;
+}
+
+export function parseCompilerDiagnostic(value: unknown, what: string): CompilerDiagnostic {
+  return objectOf(record(value, what), what, {file: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], line: [(v: unknown, w: string) => num(v, w, true, 0, undefined, false, false), true, undefined], column: [(v: unknown, w: string): number | null => either<number | null>(v, w, [(v: unknown, w: string) => num(v, w, true, undefined, undefined, false, false), (v: unknown, w: string) => literal(v, [null] as const, w)], "number or null"), true, undefined], kind: [(v: unknown, w: string) => literal(v, ["error", "warning", "note"] as const, w), true, undefined], message: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined]}) as unknown as CompilerDiagnostic;
+}
+
+export interface CompileResult {
+  ok: boolean;
+  /** what the compiler printed */
+  output: string;
+  diagnostics: CompilerDiagnostic[];
+  /** the executable made */
+  program: Place | null;
+}
+
+export function parseCompileResult(value: unknown, what: string): CompileResult {
+  return objectOf(record(value, what), what, {ok: [bool, true, undefined], output: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], diagnostics: [(v: unknown, w: string) => list(v, w, parseCompilerDiagnostic, true, undefined, undefined) as CompilerDiagnostic[], true, undefined], program: [(v: unknown, w: string): Place | null => either<Place | null>(v, w, [parsePlace, (v: unknown, w: string) => literal(v, [null] as const, w)], "Place or null"), true, undefined]}) as unknown as CompileResult;
+}
+
+/** The running scene's settings and the clock. */
+export interface RunSettings {
+  vis: boolean;
+  trace: boolean;
+  /** mm */
+  psd_noise: number;
+  seed: number;
+  time: number;
+  paused: boolean;
+  speed: number | "max";
+  clock: "realtime" | "deterministic";
+}
+
+export function parseRunSettings(value: unknown, what: string): RunSettings {
+  return objectOf(record(value, what), what, {vis: [bool, true, undefined], trace: [bool, true, undefined], psd_noise: [(v: unknown, w: string) => num(v, w, false, 0, undefined, false, false), true, undefined], seed: [(v: unknown, w: string) => num(v, w, true, 0, undefined, false, false), true, undefined], time: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], paused: [bool, true, undefined], speed: [(v: unknown, w: string): number | "max" => either<number | "max">(v, w, [(v: unknown, w: string) => num(v, w, false, 0, undefined, true, false), (v: unknown, w: string) => literal(v, ["max"] as const, w)], "number or \"max\""), true, undefined], clock: [(v: unknown, w: string) => literal(v, ["realtime", "deterministic"] as const, w), true, undefined]}) as unknown as RunSettings;
+}
+
+/** Any of the settings; the rest stay. */
+export interface SettingsChange {
+  vis?: boolean;
+  trace?: boolean;
+  /** mm of PSD noise */
+  psd_noise?: number;
+  seed?: number;
+}
+
+export function parseSettingsChange(value: unknown, what: string): SettingsChange {
+  return objectOf(record(value, what), what, {vis: [bool, false, undefined], trace: [bool, false, undefined], psd_noise: [(v: unknown, w: string) => num(v, w, false, 0, 1000, false, false), false, undefined], seed: [(v: unknown, w: string) => num(v, w, true, 0, 9223372036854775807, false, false), false, undefined]}) as unknown as SettingsChange;
+}
+
+/** A robot as the JSON document of docs/schemas/robot.schema.json; the loader checks it. */
+export type RobotDocument = { [key: string]: unknown };
+
+export function parseRobotDocument(value: unknown, what: string): RobotDocument {
+  return ((v: unknown, w: string) => record(v, w))(value, what) as RobotDocument;
+}
+
+/** The published robot JSON Schema (docs/schemas/robot.schema.json). */
+export type RobotSchemaDocument = { [key: string]: unknown };
+
+export function parseRobotSchemaDocument(value: unknown, what: string): RobotSchemaDocument {
+  return ((v: unknown, w: string) => record(v, w))(value, what) as RobotSchemaDocument;
+}
+
+export interface RobotSources {
+  builtins: string[];
+  /** robot files under the scene folder */
+  files: string[];
+  drives: string[];
+}
+
+export function parseRobotSources(value: unknown, what: string): RobotSources {
+  return objectOf(record(value, what), what, {builtins: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined, undefined) as string[], true, undefined], files: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined, undefined) as string[], true, undefined], drives: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined, undefined) as string[], true, undefined]}) as unknown as RobotSources;
+}
+
+export interface OpenRobot {
+  /** builtin:<name>, file:<path> or new:<drive> */
+  source: string;
+}
+
+export function parseOpenRobot(value: unknown, what: string): OpenRobot {
+  return objectOf(record(value, what), what, {source: [(v: unknown, w: string) => str(v, w, undefined, 1100, /^(builtin|file|new):/), true, undefined]}) as unknown as OpenRobot;
+}
+
+export interface RobotProblem {
+  kind: "error" | "warning";
+  /** JSON pointer of the field it is about; "" for the robot as a whole */
+  pointer: string;
+  message: string;
+  code: string;
+}
+
+export function parseRobotProblem(value: unknown, what: string): RobotProblem {
+  return objectOf(record(value, what), what, {kind: [(v: unknown, w: string) => literal(v, ["error", "warning"] as const, w), true, undefined], pointer: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], message: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], code: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined]}) as unknown as RobotProblem;
+}
+
+export interface OpenedRobot {
+  robot: RobotDocument;
+  /** its file under the scene folder */
+  origin: string | null;
+  /** the built-in robot it is */
+  builtin: string | null;
+  problems: RobotProblem[];
+}
+
+export function parseOpenedRobot(value: unknown, what: string): OpenedRobot {
+  return objectOf(record(value, what), what, {robot: [parseRobotDocument, true, undefined], origin: [(v: unknown, w: string): string | null => either<string | null>(v, w, [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), (v: unknown, w: string) => literal(v, [null] as const, w)], "string or null"), true, undefined], builtin: [(v: unknown, w: string): string | null => either<string | null>(v, w, [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), (v: unknown, w: string) => literal(v, [null] as const, w)], "string or null"), true, undefined], problems: [(v: unknown, w: string) => list(v, w, parseRobotProblem, true, undefined, undefined) as RobotProblem[], true, undefined]}) as unknown as OpenedRobot;
+}
+
+/** A robot to check, preview or test-drive. */
+export interface RobotCheck {
+  robot: RobotDocument;
+  /** the file it came from (models are found from there) */
+  origin?: string | null;
+  builtin?: string | null;
+}
+
+export function parseRobotCheck(value: unknown, what: string): RobotCheck {
+  return objectOf(record(value, what), what, {robot: [parseRobotDocument, true, undefined], origin: [(v: unknown, w: string): string | null => either<string | null>(v, w, [(v: unknown, w: string) => str(v, w, undefined, 1000, undefined), (v: unknown, w: string) => literal(v, [null] as const, w)], "string or null"), false, undefined], builtin: [(v: unknown, w: string): string | null => either<string | null>(v, w, [(v: unknown, w: string) => str(v, w, undefined, 200, undefined), (v: unknown, w: string) => literal(v, [null] as const, w)], "string or null"), false, undefined]}) as unknown as RobotCheck;
+}
+
+/** Save the robot at path (.robi or .json) under the scene folder. */
+export interface RobotSave {
+  robot: RobotDocument;
+  origin?: string | null;
+  builtin?: string | null;
+  /** a path relative to the root */
+  path: string;
+  overwrite?: boolean;
+}
+
+export function parseRobotSave(value: unknown, what: string): RobotSave {
+  return objectOf(record(value, what), what, {robot: [parseRobotDocument, true, undefined], origin: [(v: unknown, w: string): string | null => either<string | null>(v, w, [(v: unknown, w: string) => str(v, w, undefined, 1000, undefined), (v: unknown, w: string) => literal(v, [null] as const, w)], "string or null"), false, undefined], builtin: [(v: unknown, w: string): string | null => either<string | null>(v, w, [(v: unknown, w: string) => str(v, w, undefined, 200, undefined), (v: unknown, w: string) => literal(v, [null] as const, w)], "string or null"), false, undefined], path: [(v: unknown, w: string) => str(v, w, 1, 1000, undefined), true, undefined], overwrite: [bool, false, undefined]}) as unknown as RobotSave;
+}
+
+export interface PsdBeam {
+  id: number;
+  name: string;
+  origin: Vec3;
+  direction: Vec3;
+  /** m to what the beam hits, or null */
+  hit: number | null;
+}
+
+export function parsePsdBeam(value: unknown, what: string): PsdBeam {
+  return objectOf(record(value, what), what, {id: [(v: unknown, w: string) => num(v, w, true, undefined, undefined, false, false), true, undefined], name: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], origin: [parseVec3, true, undefined], direction: [parseVec3, true, undefined], hit: [(v: unknown, w: string): number | null => either<number | null>(v, w, [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), (v: unknown, w: string) => literal(v, [null] as const, w)], "number or null"), true, undefined]}) as unknown as PsdBeam;
+}
+
+export interface LidarPlane {
+  origin: Vec3;
+  /** flat [x, y, z, ...] unit vectors */
+  directions: number[];
+  points: number;
+}
+
+export function parseLidarPlane(value: unknown, what: string): LidarPlane {
+  return objectOf(record(value, what), what, {origin: [parseVec3, true, undefined], directions: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), false, undefined, undefined) as number[], true, undefined], points: [(v: unknown, w: string) => num(v, w, true, undefined, undefined, false, false), true, undefined]}) as unknown as LidarPlane;
+}
+
+export interface CameraFrame {
+  position: Vec3;
+  forward: Vec3;
+  up: Vec3;
+  fov: number;
+  aspect: number;
+  fisheye: boolean;
+}
+
+export function parseCameraFrame(value: unknown, what: string): CameraFrame {
+  return objectOf(record(value, what), what, {position: [parseVec3, true, undefined], forward: [parseVec3, true, undefined], up: [parseVec3, true, undefined], fov: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], aspect: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], fisheye: [bool, true, undefined]}) as unknown as CameraFrame;
+}
+
+/** The built robot's poses and sensors (world frame, m). */
+export interface RobotSensors {
+  snapshot: SnapshotMessage;
+  psds: PsdBeam[];
+  lidar: LidarPlane | null;
+  camera: CameraFrame | null;
+}
+
+export function parseRobotSensors(value: unknown, what: string): RobotSensors {
+  return objectOf(record(value, what), what, {snapshot: [parseSnapshotMessage, true, undefined], psds: [(v: unknown, w: string) => list(v, w, parsePsdBeam, true, undefined, undefined) as PsdBeam[], true, undefined], lidar: [(v: unknown, w: string): LidarPlane | null => either<LidarPlane | null>(v, w, [parseLidarPlane, (v: unknown, w: string) => literal(v, [null] as const, w)], "LidarPlane or null"), true, undefined], camera: [(v: unknown, w: string): CameraFrame | null => either<CameraFrame | null>(v, w, [parseCameraFrame, (v: unknown, w: string) => literal(v, [null] as const, w)], "CameraFrame or null"), true, undefined]}) as unknown as RobotSensors;
+}
+
+/** The robot as built: its scene message and its sensors. */
+export interface RobotPreview {
+  scene: SceneMessage;
+  snapshot: SnapshotMessage;
+  psds: PsdBeam[];
+  lidar: LidarPlane | null;
+  camera: CameraFrame | null;
+}
+
+export function parseRobotPreview(value: unknown, what: string): RobotPreview {
+  return objectOf(record(value, what), what, {scene: [parseSceneMessage, true, undefined], snapshot: [parseSnapshotMessage, true, undefined], psds: [(v: unknown, w: string) => list(v, w, parsePsdBeam, true, undefined, undefined) as PsdBeam[], true, undefined], lidar: [(v: unknown, w: string): LidarPlane | null => either<LidarPlane | null>(v, w, [parseLidarPlane, (v: unknown, w: string) => literal(v, [null] as const, w)], "LidarPlane or null"), true, undefined], camera: [(v: unknown, w: string): CameraFrame | null => either<CameraFrame | null>(v, w, [parseCameraFrame, (v: unknown, w: string) => literal(v, [null] as const, w)], "CameraFrame or null"), true, undefined]}) as unknown as RobotPreview;
+}
+
+export interface CheckedRobot {
+  problems: RobotProblem[];
+  preview: RobotPreview | null;
+  /** the robot as a .robi file */
+  robi?: string;
+}
+
+export function parseCheckedRobot(value: unknown, what: string): CheckedRobot {
+  return objectOf(record(value, what), what, {problems: [(v: unknown, w: string) => list(v, w, parseRobotProblem, true, undefined, undefined) as RobotProblem[], true, undefined], preview: [(v: unknown, w: string): RobotPreview | null => either<RobotPreview | null>(v, w, [parseRobotPreview, (v: unknown, w: string) => literal(v, [null] as const, w)], "RobotPreview or null"), true, undefined], robi: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined]}) as unknown as CheckedRobot;
+}
+
+export interface SavedRobot {
+  path: string;
+  problems: RobotProblem[];
+  /** whether it loads back */
+  loads: boolean;
+}
+
+export function parseSavedRobot(value: unknown, what: string): SavedRobot {
+  return objectOf(record(value, what), what, {path: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], problems: [(v: unknown, w: string) => list(v, w, parseRobotProblem, true, undefined, undefined) as RobotProblem[], true, undefined], loads: [bool, true, undefined]}) as unknown as SavedRobot;
+}
+
+export interface DriveStarted {
+  scene: SceneMessage;
+}
+
+export function parseDriveStarted(value: unknown, what: string): DriveStarted {
+  return objectOf(record(value, what), what, {scene: [parseSceneMessage, true, undefined]}) as unknown as DriveStarted;
+}
+
+/** POST /robot-editor/api/drive/command: one command to the test drive. */
+export type DriveCommand = DriveVw | DriveMotor | DriveServo | DriveReset;
+
+export function parseDriveCommand(value: unknown, what: string): DriveCommand {
+  const fields = record(value, what);
+  switch (fields.type) {
+    case "vw": return parseDriveVw(fields, what);
+    case "motor": return parseDriveMotor(fields, what);
+    case "servo": return parseDriveServo(fields, what);
+    case "reset": return parseDriveReset(fields, what);
+    default: throw new MalformedMessage(`${what}: unknown type ${JSON.stringify(fields.type)}`);
+  }
+}
+
+export interface DriveVw {
+  type: "vw";
+  /** mm/s */
+  v: number;
+  /** degrees/s */
+  w: number;
+}
+
+export function parseDriveVw(value: unknown, what: string): DriveVw {
+  return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => literal(v, ["vw"] as const, w), true, undefined], v: [(v: unknown, w: string) => num(v, w, false, -10000, 10000, false, false), true, undefined], w: [(v: unknown, w: string) => num(v, w, false, -10000, 10000, false, false), true, undefined]}) as unknown as DriveVw;
+}
+
+export interface DriveMotor {
+  type: "motor";
+  motor: number;
+  /** percent */
+  speed: number;
+}
+
+export function parseDriveMotor(value: unknown, what: string): DriveMotor {
+  return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => literal(v, ["motor"] as const, w), true, undefined], motor: [(v: unknown, w: string) => num(v, w, true, 1, 64, false, false), true, undefined], speed: [(v: unknown, w: string) => num(v, w, false, -100, 100, false, false), true, undefined]}) as unknown as DriveMotor;
+}
+
+export interface DriveServo {
+  type: "servo";
+  servo: number;
+  position: number;
+}
+
+export function parseDriveServo(value: unknown, what: string): DriveServo {
+  return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => literal(v, ["servo"] as const, w), true, undefined], servo: [(v: unknown, w: string) => num(v, w, true, 1, 64, false, false), true, undefined], position: [(v: unknown, w: string) => num(v, w, false, 0, 255, false, false), true, undefined]}) as unknown as DriveServo;
+}
+
+export interface DriveReset {
+  type: "reset";
+}
+
+export function parseDriveReset(value: unknown, what: string): DriveReset {
+  return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => literal(v, ["reset"] as const, w), true, undefined]}) as unknown as DriveReset;
+}
+
+export interface DriveReadings {
+  /** mm by PSD id */
+  psd: { [key: string]: number };
+  servos: number[];
+  motors: number[];
+  /** the last scan (mm) */
+  lidar?: number[];
+  /** JPEG, base64 */
+  camera?: string;
+  /** measured mm/s and degrees/s */
+  vw?: [number, number];
+}
+
+export function parseDriveReadings(value: unknown, what: string): DriveReadings {
+  return objectOf(record(value, what), what, {psd: [(v: unknown, w: string) => mapOf(record(v, w), w, (v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false)) as { [key: string]: number }, true, undefined], servos: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => num(v, w, true, undefined, undefined, false, false), false, undefined, undefined) as number[], true, undefined], motors: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => num(v, w, true, undefined, undefined, false, false), false, undefined, undefined) as number[], true, undefined], lidar: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), false, undefined, undefined) as number[], false, undefined], camera: [(v: unknown, w: string) => str(v, w, undefined, undefined, /^[A-Za-z0-9+/]*={0,2}$/), false, undefined], vw: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), false, 2, 2) as [number, number], false, undefined]}) as unknown as DriveReadings;
+}
+
+/** The test drive now: poses, sensors and readings. */
+export interface DriveState {
+  snapshot: SnapshotMessage;
+  psds: PsdBeam[];
+  lidar: LidarPlane | null;
+  camera: CameraFrame | null;
+  time: number;
+  readings: DriveReadings;
+}
+
+export function parseDriveState(value: unknown, what: string): DriveState {
+  return objectOf(record(value, what), what, {snapshot: [parseSnapshotMessage, true, undefined], psds: [(v: unknown, w: string) => list(v, w, parsePsdBeam, true, undefined, undefined) as PsdBeam[], true, undefined], lidar: [(v: unknown, w: string): LidarPlane | null => either<LidarPlane | null>(v, w, [parseLidarPlane, (v: unknown, w: string) => literal(v, [null] as const, w)], "LidarPlane or null"), true, undefined], camera: [(v: unknown, w: string): CameraFrame | null => either<CameraFrame | null>(v, w, [parseCameraFrame, (v: unknown, w: string) => literal(v, [null] as const, w)], "CameraFrame or null"), true, undefined], time: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], readings: [parseDriveReadings, true, undefined]}) as unknown as DriveState;
+}
+
+/** The HTTP routes with JSON bodies, by method and path: what each takes and answers (a refusal
+ * answers a RouteError). */
+export interface Routes {
+  "GET /scene/mesh/{kind}/{id}": { request: undefined; response: MeshBody };
+  "GET /scenes/files": { request: undefined; response: SceneFiles };
+  "GET /scenes/catalog": { request: undefined; response: SceneCatalog };
+  "GET /scenes/state": { request: undefined; response: EditorState };
+  "POST /scenes/open": { request: Place; response: EditorState };
+  "POST /scenes/new": { request: NewScene; response: EditorState };
+  "POST /scenes/edit": { request: SceneEdit; response: EditorState };
+  "POST /scenes/undo": { request: NoBody; response: EditorState };
+  "POST /scenes/redo": { request: NoBody; response: EditorState };
+  "POST /scenes/save": { request: SceneSave; response: EditorState };
+  "GET /api/programs": { request: undefined; response: ProgramsOverview };
+  "POST /api/programs/start": { request: StartProgram; response: RobotProgramState };
+  "POST /api/programs/stop": { request: ProgramRobot; response: RobotProgramState };
+  "POST /api/programs/restart": { request: ProgramRobot; response: RobotProgramState };
+  "POST /api/programs/compile": { request: Place; response: CompileResult };
+  "GET /api/settings": { request: undefined; response: RunSettings };
+  "POST /api/settings": { request: SettingsChange; response: RunSettings };
+  "GET /robot-editor/api/schema": { request: undefined; response: RobotSchemaDocument };
+  "GET /robot-editor/api/sources": { request: undefined; response: RobotSources };
+  "POST /robot-editor/api/open": { request: OpenRobot; response: OpenedRobot };
+  "POST /robot-editor/api/check": { request: RobotCheck; response: CheckedRobot };
+  "POST /robot-editor/api/save": { request: RobotSave; response: SavedRobot };
+  "POST /robot-editor/api/drive/start": { request: RobotCheck; response: DriveStarted };
+  "POST /robot-editor/api/drive/command": { request: DriveCommand; response: Done };
+  "GET /robot-editor/api/drive/state": { request: undefined; response: DriveState };
+  "POST /robot-editor/api/drive/stop": { request: NoBody; response: Done };
+  "GET /robot-editor/api/mesh/{which}": { request: undefined; response: MeshBody };
+}
+
+export type RouteName = keyof Routes;
+
+/** Each route's answer parser. */
+export const ROUTE_ANSWERS: { [R in RouteName]: (value: unknown, what: string) => Routes[R]["response"] } = {
+  "GET /scene/mesh/{kind}/{id}": parseMeshBody,
+  "GET /scenes/files": parseSceneFiles,
+  "GET /scenes/catalog": parseSceneCatalog,
+  "GET /scenes/state": parseEditorState,
+  "POST /scenes/open": parseEditorState,
+  "POST /scenes/new": parseEditorState,
+  "POST /scenes/edit": parseEditorState,
+  "POST /scenes/undo": parseEditorState,
+  "POST /scenes/redo": parseEditorState,
+  "POST /scenes/save": parseEditorState,
+  "GET /api/programs": parseProgramsOverview,
+  "POST /api/programs/start": parseRobotProgramState,
+  "POST /api/programs/stop": parseRobotProgramState,
+  "POST /api/programs/restart": parseRobotProgramState,
+  "POST /api/programs/compile": parseCompileResult,
+  "GET /api/settings": parseRunSettings,
+  "POST /api/settings": parseRunSettings,
+  "GET /robot-editor/api/schema": parseRobotSchemaDocument,
+  "GET /robot-editor/api/sources": parseRobotSources,
+  "POST /robot-editor/api/open": parseOpenedRobot,
+  "POST /robot-editor/api/check": parseCheckedRobot,
+  "POST /robot-editor/api/save": parseSavedRobot,
+  "POST /robot-editor/api/drive/start": parseDriveStarted,
+  "POST /robot-editor/api/drive/command": parseDone,
+  "GET /robot-editor/api/drive/state": parseDriveState,
+  "POST /robot-editor/api/drive/stop": parseDone,
+  "GET /robot-editor/api/mesh/{which}": parseMeshBody,
+};

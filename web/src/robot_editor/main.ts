@@ -4,8 +4,9 @@
 import "../style.css";
 import "./editor.css";
 import { element } from "../dom";
-import { fetchSchema, get, post, RequestError, type Checked, type Opened, type Problem, type Saved, type Sources } from "./api";
-import { RobotPreview, type Sensors } from "./preview";
+import { call, RouteError } from "../api";
+import type { RobotCheck, RobotProblem, RobotSensors } from "../generated/viewer_protocol";
+import { RobotPreview } from "./preview";
 import { SchemaForm, pointerOf, type Json, type JsonObject, type Schema } from "./schema_form";
 import { TestDrive } from "./test_drive";
 
@@ -23,7 +24,7 @@ class RobotEditorPage {
   private robot: JsonObject | null = null;
   private origin: string | null = null;
   private builtin: string | null = null;
-  private problems: Problem[] = [];
+  private problems: RobotProblem[] = [];
   private checks = 0; // answered checks (tests wait for them)
   private pending = 0;
   private timer: number | null = null;
@@ -41,10 +42,7 @@ class RobotEditorPage {
       (pointer, change) => this.moveSensor(pointer, change),
     );
     this.drive = new TestDrive(
-      (state) => {
-        const { scene } = state as unknown as { scene: import("../protocol").SceneMessage };
-        this.preview.show(scene, state, "drive");
-      },
+      (state) => this.preview.show(state.scene, state, "drive"),
       (state) => this.preview.place(state),
       () => this.check(),
       () => ({ v: Number(this.robot?.max_speed ?? 300) / 2, w: Number(this.robot?.max_turn ?? 90) / 2 }),
@@ -57,9 +55,9 @@ class RobotEditorPage {
   }
 
   async start(): Promise<void> {
-    this.schema = await fetchSchema();
+    this.schema = (await call("GET /robot-editor/api/schema")) as Schema;
     this.form = new SchemaForm(this.schema, (path, value) => this.change(path, value), () => this.renderForms());
-    const sources = await get<Sources>("/sources");
+    const sources = await call("GET /robot-editor/api/sources");
     const select = byId<HTMLSelectElement>("source");
     const group = (label: string, items: [string, string][]) => {
       if (items.length === 0) return;
@@ -81,8 +79,8 @@ class RobotEditorPage {
     const source = byId<HTMLSelectElement>("source").value;
     try {
       await this.drive.stop();
-      const opened = await post<Opened>("/open", { source });
-      this.robot = opened.robot;
+      const opened = await call("POST /robot-editor/api/open", { source });
+      this.robot = opened.robot as JsonObject;
       this.origin = opened.origin;
       this.builtin = opened.builtin;
       const name = typeof this.robot.name === "string" ? this.robot.name : "robot";
@@ -129,7 +127,7 @@ class RobotEditorPage {
     if (!this.robot || this.drive.running) return;
     this.pending += 1;
     try {
-      const checked = await post<Checked>("/check", this.request());
+      const checked = await call("POST /robot-editor/api/check", this.request());
       this.problems = checked.problems;
       this.robi = checked.robi ?? "";
       this.showProblems();
@@ -146,10 +144,10 @@ class RobotEditorPage {
     }
   }
 
-  private lastPreview: Sensors | null = null;
+  private lastPreview: RobotSensors | null = null;
 
-  private request(): Record<string, unknown> {
-    return { robot: this.robot, origin: this.origin, builtin: this.builtin };
+  private request(): RobotCheck {
+    return { robot: this.robot ?? {}, origin: this.origin, builtin: this.builtin };
   }
 
   private showProblems(): void {
@@ -159,7 +157,7 @@ class RobotEditorPage {
       const message = field.closest(".field")?.querySelector(".field-message");
       if (message) message.textContent = "";
     }
-    const general: Problem[] = [];
+    const general: RobotProblem[] = [];
     for (const problem of this.problems) {
       let pointer = problem.pointer;
       let field = this.form.fields.get(pointer);
@@ -236,13 +234,13 @@ class RobotEditorPage {
   async save(overwrite: boolean): Promise<void> {
     const path = byId<HTMLInputElement>("save-path").value.trim();
     try {
-      const saved = await post<Saved>("/save", { ...this.request(), path, overwrite });
+      const saved = await call("POST /robot-editor/api/save", { ...this.request(), path, overwrite });
       const warnings = saved.problems.filter((p) => p.kind === "warning").length;
       this.setStatus(`Saved ${saved.path}${saved.loads ? " (it loads" : " (it does not load"}` +
         `${warnings ? `, ${warnings} warning(s)` : ""})`);
       this.origin = saved.path;
     } catch (error) {
-      if (error instanceof RequestError && error.status === 409 && !overwrite) {
+      if (error instanceof RouteError && error.status === 409 && !overwrite) {
         if (window.confirm(`${path} exists. Overwrite it?`)) await this.save(true);
         else this.setStatus(`Not saved: ${path} exists`);
         return;

@@ -25,33 +25,9 @@ import {
   WebGLRenderer,
 } from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
-import type { SceneMessage, SnapshotMessage } from "../protocol";
+import type { RobotSensors, SceneMessage } from "../protocol";
 import { buildWorld, disposeWorld, type BuiltWorld } from "../world_builder";
 import { createWorldRoot, worldToThree } from "../world_frame";
-
-export interface PsdBeam {
-  id: number;
-  name: string;
-  origin: number[];
-  direction: number[];
-  hit: number | null;
-}
-
-export interface CameraFrame {
-  position: number[];
-  forward: number[];
-  up: number[];
-  fov: number;
-  aspect: number;
-  fisheye: boolean;
-}
-
-export interface Sensors {
-  snapshot: SnapshotMessage;
-  psds: PsdBeam[];
-  lidar: { origin: number[]; directions: number[]; points: number } | null;
-  camera: CameraFrame | null;
-}
 
 /** A handle was dragged: the sensor at `pointer` goes to (x, y) mm in the robot frame, or turns
  * to `heading` degrees. */
@@ -118,7 +94,7 @@ export class RobotPreview {
   }
 
   /** Draws a built robot (or the test-drive arena) and its sensors. */
-  show(scene: SceneMessage, sensors: Sensors, frameKey: string): void {
+  show(scene: SceneMessage, sensors: RobotSensors, frameKey: string): void {
     if (this.world) disposeWorld(this.world);
     this.world = buildWorld(scene, () => this.draw());
     this.root.add(this.world.group);
@@ -130,7 +106,7 @@ export class RobotPreview {
   }
 
   /** New poses and sensor lines for the drawn world (the test drive's state). */
-  place(sensors: Sensors): void {
+  place(sensors: RobotSensors): void {
     if (!this.world) return;
     for (const pose of sensors.snapshot.robots) {
       const thing = this.world.robots.get(pose.id);
@@ -165,7 +141,7 @@ export class RobotPreview {
     this.controls?.update();
   }
 
-  private drawSensors(sensors: Sensors): void {
+  private drawSensors(sensors: RobotSensors): void {
     for (const child of [...this.overlay.children]) {
       child.removeFromParent();
       if (child instanceof Mesh || child instanceof LineSegments) {

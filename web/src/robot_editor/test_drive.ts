@@ -2,8 +2,9 @@
 // drive it through VW; robots without VW get a slider per motor; every servo (arm joints, gripper,
 // steering, camera pan/tilt) gets a slider. PSD, LIDAR and camera read-outs follow live.
 
+import { call, RouteError } from "../api";
 import { element } from "../dom";
-import { post, get, type DriveState, RequestError } from "./api";
+import type { DriveCommand, DriveState, RobotCheck, SceneMessage } from "../generated/viewer_protocol";
 
 const POLL_MS = 150;
 const KEYS: Record<string, [number, number]> = {
@@ -27,7 +28,7 @@ export class TestDrive {
   last: DriveState | null = null;
 
   constructor(
-    private readonly started: (state: DriveState) => void,
+    private readonly started: (state: DriveState & { scene: SceneMessage }) => void,
     private readonly updated: (state: DriveState) => void,
     private readonly stopped: () => void,
     private readonly speeds: () => { v: number; w: number },
@@ -42,16 +43,16 @@ export class TestDrive {
     window.addEventListener("keyup", (event) => this.key(event, false));
   }
 
-  async start(body: unknown): Promise<void> {
+  async start(body: RobotCheck): Promise<void> {
     await this.stop();
-    const { scene } = await post<{ scene: import("../protocol").SceneMessage }>("/drive/start", body);
+    const { scene } = await call("POST /robot-editor/api/drive/start", body);
     this.running = true;
     this.panel.hidden = false;
     this.sliders = "";
     this.message.textContent = "Arrow keys or the buttons drive the robot (VW).";
-    const state = await get<DriveState>("/drive/state");
+    const state = await call("GET /robot-editor/api/drive/state");
     this.last = state;
-    this.started({ ...state, scene } as DriveState & { scene: typeof scene });
+    this.started({ ...state, scene });
     this.show(state);
     this.timer = window.setInterval(() => void this.poll(), POLL_MS);
   }
@@ -61,24 +62,24 @@ export class TestDrive {
     this.timer = null;
     if (this.running) {
       this.running = false;
-      await post("/drive/stop", {});
+      await call("POST /robot-editor/api/drive/stop", {});
       this.stopped();
     }
     this.panel.hidden = true;
   }
 
-  async command(body: Record<string, unknown>): Promise<void> {
+  async command(body: DriveCommand): Promise<void> {
     try {
-      await post("/drive/command", body);
+      await call("POST /robot-editor/api/drive/command", body);
     } catch (error) {
-      this.message.textContent = error instanceof RequestError ? error.message : String(error);
+      this.message.textContent = error instanceof RouteError ? error.message : String(error);
     }
   }
 
   private async poll(): Promise<void> {
     if (!this.running) return;
     try {
-      const state = await get<DriveState>("/drive/state");
+      const state = await call("GET /robot-editor/api/drive/state");
       this.last = state;
       this.updated(state);
       this.show(state);
@@ -152,11 +153,11 @@ export class TestDrive {
       }
       this.controls.append(pad);
     } else {
-      for (const motor of r.motors) this.controls.append(this.slider(`Motor ${motor}`, -100, 100, 0, "motor", motor, "speed"));
+      for (const motor of r.motors) this.controls.append(this.slider(`Motor ${motor}`, -100, 100, 0, "motor", motor));
     }
     for (const servo of r.servos) {
       const user = this.servoUser(servo);
-      this.controls.append(this.slider(`Servo ${servo}${user ? ` (${user})` : ""}`, 0, 255, 128, "servo", servo, "position"));
+      this.controls.append(this.slider(`Servo ${servo}${user ? ` (${user})` : ""}`, 0, 255, 128, "servo", servo));
     }
     const reset = element("button", "drive-reset", "Back to start");
     reset.type = "button";
@@ -183,7 +184,7 @@ export class TestDrive {
     return found;
   }
 
-  private slider(label: string, min: number, max: number, value: number, type: string, number: number, field: string): HTMLElement {
+  private slider(label: string, min: number, max: number, value: number, type: "motor" | "servo", number: number): HTMLElement {
     const row = element("label", "drive-slider");
     const input = element("input");
     input.type = "range";
@@ -194,7 +195,8 @@ export class TestDrive {
     const shown = element("span", "", String(value));
     input.addEventListener("input", () => {
       shown.textContent = input.value;
-      void this.command({ type, [type]: number, [field]: Number(input.value) });
+      const level = Number(input.value);
+      void this.command(type === "motor" ? { type, motor: number, speed: level } : { type, servo: number, position: level });
     });
     row.append(element("span", "", label), input, shown);
     return row;
