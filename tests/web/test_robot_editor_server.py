@@ -129,14 +129,15 @@ def test_previews_and_test_drives_give_back_their_descriptors(server):
 
     status, opened = call(server, "POST", "/open", {"source": "builtin:S4"})
     assert status == 200
+    robot = {"robot": opened["robot"], "builtin": "S4"}
     gc.disable()  # what is left open must be closed by the editor, not collected
     try:
-        call(server, "POST", "/check", opened)
-        call(server, "POST", "/drive/start", opened)
+        call(server, "POST", "/check", robot)
+        call(server, "POST", "/drive/start", robot)
         before = len(os.listdir("/proc/self/fd"))
         for _ in range(15):
-            assert call(server, "POST", "/check", opened)[0] == 200
-            assert call(server, "POST", "/drive/start", opened)[0] == 200
+            assert call(server, "POST", "/check", robot)[0] == 200
+            assert call(server, "POST", "/drive/start", robot)[0] == 200
         after = len(os.listdir("/proc/self/fd"))
     finally:
         gc.enable()
