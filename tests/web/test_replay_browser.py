@@ -114,7 +114,8 @@ def test_scrubbing_shows_the_recorded_pose_lcd_console_and_path(browser_context,
             page.wait_for_timeout(200)  # the data URL decodes
             lcd = np.asarray(read_lcd_pixels(page, 1))
             assert np.array_equal(lcd, decoded(recording.image(1, "lcd", lcd_at)["data"]))
-        assert viewer.state("consoleText", 1) == "step 1\nstep 2\n"
+        # In realtime the program starts when the machine lets it (0.1-0.3 s): one or two steps by 0.7 s
+        assert viewer.state("consoleText", 1) in ("step 1\n", "step 1\nstep 2\n")
         halfway = viewer.state("tracePoints", 1)
         scrub_to(page, recording.end_us / 1e6)
         assert viewer.state("consoleText", 1).endswith("done\n")
@@ -228,7 +229,8 @@ def test_a_live_run_can_be_scrubbed_back_and_then_follows_the_present_again(brow
         page.click("#tl-play")  # "Look back"
         scrub_to(page, 0.7, exact=False)
         assert viewer.state("timeline")["mode"] == "review"
-        assert viewer.state("consoleText", 1) == "step 1\nstep 2\n"
+        # In realtime the program starts when the machine lets it (0.1-0.3 s): one or two steps by 0.7 s
+        assert viewer.state("consoleText", 1) in ("step 1\n", "step 1\nstep 2\n")
         assert abs(viewer.state("robotPose", 1)["time"] - 0.7) < 0.05
         page.click("#plots-toggle")
         page.check("input[data-signal='robot/1/odometry.x']")
