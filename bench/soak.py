@@ -239,7 +239,9 @@ async def many_tabs(port: int, count: int) -> dict:
     async with aiohttp.ClientSession(connector=aiohttp.TCPConnector(limit=0)) as session:
         results = await asyncio.wait_for(asyncio.gather(*(open_tab(session, port, 1.0) for _ in range(count)),
                                                         return_exceptions=True), timeout=300)
-    return {"opened": count, "failed": sum(1 for r in results if r is not True)}
+    failures = [r for r in results if r is not True]
+    return {"opened": count, "failed": len(failures),
+            "failures": sorted({repr(r) if isinstance(r, BaseException) else "no scene first" for r in failures})[:5]}
 
 
 # -- the runs --------------------------------------------------------------------------------------------------
@@ -375,7 +377,7 @@ def checks(soaked: dict | None, loaded: dict | None) -> list[str]:
             problems.append(f"load: {programs['served']}/{programs['programs']} served, failures {programs['failures'][:3]}")
         if loaded["tabs"]["failed"] or loaded["cycles"]["failed"]:
             problems.append(f"load: {loaded['tabs']['failed']} tabs and {loaded['cycles']['failed']} cycles failed "
-                            f"{loaded['cycles']['failures']}")
+                            f"{loaded['tabs']['failures'] + loaded['cycles']['failures']}")
     return problems
 
 

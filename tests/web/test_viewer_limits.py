@@ -112,3 +112,54 @@ def test_the_live_history_keeps_2000_chunks_per_robot_and_a_frame_carries_500():
     frame = json.loads(run_async(FrameCursor().frame(history, 1_000_000)))
     texts = [m["text"] for m in frame["messages"] if m["type"] == "console"]
     assert texts == [f"{c}\n" for c in range(MAX_CHUNKS + 300 - STREAM_BACKLOG, MAX_CHUNKS + 300)]
+
+
+async def _tabs_receiving(port: int, tabs: int, seconds: float) -> list[dict]:
+    """Open `tabs` viewer connections 0.1 s apart, read each for `seconds`; count LCD images per robot."""
+    import asyncio
+    import time
+
+    async def tab(session):
+        counts: dict = {}
+        async with session.ws_connect(f"ws://127.0.0.1:{port}/ws", max_msg_size=0) as ws:
+            end = time.monotonic() + seconds
+            while time.monotonic() < end:
+                try:
+                    message = await ws.receive(timeout=max(0.01, end - time.monotonic()))
+                except asyncio.TimeoutError:
+                    break
+                if message.type == aiohttp.WSMsgType.TEXT and '"type": "lcd"' in message.data[:40]:
+                    robot = json.loads(message.data)["robot"]
+                    counts[robot] = counts.get(robot, 0) + 1
+        return counts
+
+    async def later(session, delay):
+        await asyncio.sleep(delay)
+        return await tab(session)
+
+    async with aiohttp.ClientSession(connector=aiohttp.TCPConnector(limit=0)) as session:
+        return await asyncio.gather(*(later(session, 0.1 * i) for i in range(tabs)))
+
+
+def test_tabs_opened_one_after_another_each_get_every_lcd_once():
+    """A new tab gets the robots' LCD images the others keep current; it does not make the
+    simulator send every robot's image to every tab again (200 tabs once took half a minute)."""
+    class Published:
+        wants_lcd = False
+        images = 0
+
+        def on_event(self, message):
+            self.images += message["type"] == "lcd"
+
+        def on_snapshot(self, message):
+            pass
+
+    robots = tuple((300 + 300 * i, 500, 0) for i in range(6))
+    published = Published()
+    with viewer_simulation(arena(robots=robots, size=2500)) as (sim, _, server):
+        sim.call(lambda sim: sim.events.subscribe(published))
+        counts = run_async(_tabs_receiving(server.port, 20, 2.5))
+    for tab in counts:
+        assert sorted(tab) == [1, 2, 3, 4, 5, 6]  # every robot's LCD, though no program draws on one
+        assert max(tab.values()) <= 2, tab  # the images do not change: sent once (twice in a race)
+    assert published.images == 6  # made and encoded once for all 20 tabs, not once per tab

@@ -201,10 +201,15 @@ class ViewerHub:
         browser.add_event(json.dumps(messages.scene(self.sim, self._texture_url())))
         browser.add_event(json.dumps(messages.timeline("live")))
         self._present(browser)
+        first = not self.browsers
         self.browsers.add(browser)
-        # A browser that connects now needs the current LCD images even if nothing changes.
-        self.sim.call(lambda sim: sim.republish_lcd())
-        self.sim.call(_publish_io)  # and the I/O panels their state
+        if first:
+            # While no browser watched, LCD images were not published: have every robot's LCD,
+            # camera image and I/O state sent again. While one watches they are kept current and
+            # a new tab gets them from here (_present): asking again for every tab sent each
+            # robot's images to every tab, so 200 tabs opened at once took half a minute.
+            self.sim.call(lambda sim: sim.republish_lcd())
+            self.sim.call(_publish_io)
 
     def _present(self, browser: Browser) -> None:
         """Queue what the robot panels and the world show now."""
