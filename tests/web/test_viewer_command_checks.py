@@ -25,6 +25,7 @@ from eyesim.protocol.viewer_schema import SCHEMA
                                                  "1000000000000000000000000000000"),
     ({"type": "touch", "robot": 1, "x": 480, "y": 0}, "touch: x must be a whole number from 0 to 479, not 480"),
     ({"type": "touch", "robot": 1, "x": 1}, "touch: field 'y' is missing"),
+    ({"type": "touch", "robot": 1}, "touch: fields 'x' and 'y' are missing"),
     ({"type": "speed", "value": 1e-300}, "speed: value must be a number from 0.01 to 1000 or 'max', not 1e-300"),
     ({"type": "speed", "value": 1e308}, "speed: value must be a number from 0.01 to 1000 or 'max', not 1e+308"),
     ({"type": "pause", "why": 1}, "pause: unknown field 'why' (fields: type)"),

@@ -57,7 +57,8 @@ def server_message_problems(message: dict) -> list[str]:
     validator = SERVER_MESSAGES.get(message.get("type"))
     if validator is None:
         return [f"unknown message type {_short.repr(message.get('type'))}"]
-    return [_describe(error, message["type"]) for error in validator.iter_errors(message)]
+    problems = [_describe(error, message["type"]) for error in validator.iter_errors(message)]
+    return list(dict.fromkeys(problems))  # several fields missing say so once
 
 
 def route_request_problem(route: str, body) -> str | None:
@@ -84,7 +85,7 @@ def route_answer_problems(route: str, status: int, body) -> list[str]:
     response, or a RouteError for a refusal."""
     name = _definition(ROUTES[route]["response"]) if status < 400 else "RouteError"
     problems = [_describe(error, f"{route} ({status})") for error in _validator(name).iter_errors(body)]
-    return list(dict.fromkeys(problems))  # several fields missing say so once
+    return list(dict.fromkeys(problems))
 
 
 def _definition(reference: dict) -> str:
@@ -110,8 +111,9 @@ def _describe(error, kind: str | None) -> str:
     elif check in ("minimum", "maximum", "exclusiveMinimum", "exclusiveMaximum", "enum", "const"):
         text = f"{where} must be {_alternative(error.schema)}, not {got}"
     elif check == "required":
-        missing = [name for name in limit if name not in error.instance]
-        text = f"field {missing[0]!r} is missing"
+        missing = [repr(name) for name in limit if name not in error.instance]  # one error per name: say all
+        text = f"field {missing[0]} is missing" if len(missing) == 1 else \
+            f"fields {', '.join(missing[:-1])} and {missing[-1]} are missing"
     elif check == "additionalProperties":
         known = error.schema.get("properties", {})
         extra = [name for name in error.instance if name not in known]
