@@ -54,6 +54,32 @@ class Pending:
     def until(cls, wake_us: int, reply: tuple) -> "Pending":
         return cls(lambda at_us: reply if at_us >= wake_us else None, wake_us)
 
+    def cancel(self) -> None:
+        """The call will not be answered (its program is gone)."""
+
+
+class Deferred(Pending):
+    """An ordinary call whose reply is made off the simulation thread (a camera image, drawn on the
+    render thread): `work` is a physics.render_worker.Frame whose result is (reply values, encoded
+    reply frame). It takes its cost in simulation time like a call answered at once; the engine
+    sets `wake_us` to when its reply is due and `notify` to what the work calls when it is done.
+    The reply leaves once both hold; in deterministic mode the simulation waits for the work at
+    that time, so the reply comes at the same simulation time in every run. `answered()` runs on
+    the simulation thread when it leaves."""
+
+    def __init__(self, work, answered: Callable[[], None] = lambda: None):
+        super().__init__(self._poll, 0)
+        self.work = work
+        self.answered = answered
+
+    def _poll(self, at_us: int) -> tuple | None:
+        if at_us < self.wake_us or not self.work.done():
+            return None
+        return self.work.result[0] if self.work.error is None else ()
+
+    def cancel(self) -> None:
+        self.work.cancel()
+
 
 @dataclass
 class Session:
