@@ -68,11 +68,13 @@ class Deferred(Pending):
     the simulation thread when it leaves."""
 
     def __init__(self, work, answered: Callable[[], None] = lambda: None):
-        super().__init__(self._poll, 0)
+        # not Pending.__init__: a bound method kept on the instance would make a reference cycle,
+        # and the frame's megabytes would wait for the garbage collector
+        self.wake_us = 0
         self.work = work
         self.answered = answered
 
-    def _poll(self, at_us: int) -> tuple | None:
+    def poll(self, at_us: int) -> tuple | None:
         if at_us < self.wake_us or not self.work.done():
             return None
         return self.work.result[0] if self.work.error is None else ()
