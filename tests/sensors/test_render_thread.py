@@ -146,3 +146,14 @@ def test_deterministic_runs_with_cameras_repeat_bit_identically(tmp_path, progra
     assert len(frames) == 8 and all(result == 0 for result, _, _ in frames)
     assert len({checksum for _, _, checksum in frames}) > 4  # the robot drives: the pictures change
     assert len({checksum for _, _, checksum in first.values(1, "gray")}) > 4
+
+
+def test_a_run_that_ends_while_the_renderer_is_prepared_exits_cleanly(tmp_path, programs, run_scene):
+    """The program's CAMInit starts the render thread making an OpenGL context and the run ends at
+    once: the process waits for the thread and ends normally (a context still being made at exit
+    crashed it)."""
+    scene = write_scene(tmp_path, square_room(), ["S4 1000 1000 0"])
+    for _ in range(3):
+        run = run_scene(scene, {1: programs("camera_init_exit")}, "--clock", "deterministic")
+        assert run.returncode == 0, (run.returncode, run.stderr)
+        assert run.values(1, "init") == [[0]]
