@@ -8,7 +8,7 @@ import socket
 import threading
 
 import pytest
-from support.client import ProgramClient
+from support.client import ProgramClient, RemoteError
 from support.scenes import arena
 from support.rooms import square_room, write_scene
 from support.simulator import running_simulation
@@ -122,6 +122,25 @@ def test_a_frame_being_drawn_holds_deterministic_time_at_its_reply(gated):
             caller.join(60)
         assert answered[-1] >= due_ms  # its waiting call was answered after the frame
         other.close()
+
+
+def test_a_frame_that_cannot_be_drawn_is_an_error_reply_and_the_simulation_goes_on(monkeypatch, caplog):
+    class Broken:
+        def render(self, world, view, data=None):
+            raise RuntimeError("the renderer broke")
+
+    monkeypatch.setattr(render, "camera_renderer", lambda: Broken())
+    with running_simulation(arena(robots=((500, 500, 0), (1500, 500, 180))), "realtime") as (sim, port):
+        camera, other = ProgramClient(port), ProgramClient(port)
+        camera.hello("1")
+        other.hello("2")
+        camera.call("CAM_INIT", 0)
+        with pytest.raises(RemoteError, match="internal simulator error"):
+            camera.call("CAM_GET_GRAY")
+        assert camera.call("OS_GET_COUNT")[0] >= 0 and other.call("PSD_GET", 1)[0] > 0
+        camera.close()
+        other.close()
+    assert "handler for CAM_GET_GRAY from test (robot 1" in caplog.text and "the renderer broke" in caplog.text
 
 
 def snapshot_run(tmp_path, programs, run_scene, renderer: str, name: str):

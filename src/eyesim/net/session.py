@@ -61,9 +61,9 @@ class Pending:
 class Deferred(Pending):
     """An ordinary call whose reply is made off the simulation thread (a camera image, drawn on the
     render thread): `work` is a physics.render_worker.Frame whose result is (reply values, encoded
-    reply frame). It takes its cost in simulation time like a call answered at once; the engine
-    sets `wake_us` to when its reply is due and `notify` to what the work calls when it is done.
-    The reply leaves once both hold; in deterministic mode the simulation waits for the work at
+    reply frame). It takes its cost in simulation time like a call answered at once: the engine
+    sets `wake_us` to when its reply is due, and the work wakes the engine when it is done. The
+    reply leaves once both hold; in deterministic mode the simulation waits for the work at
     that time, so the reply comes at the same simulation time in every run. `answered()` runs on
     the simulation thread when it leaves."""
 

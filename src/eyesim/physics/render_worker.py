@@ -68,7 +68,9 @@ class Frame:
 
     def _draw(self) -> None:
         try:
-            if not self.cancelled:
+            if self.cancelled:
+                self.error = "not drawn: nobody waits for it any more"
+            else:
                 self.image = render.camera_renderer().render(self.world, self.view, self.data)
                 self.result = self.finish(self.image)
         except Exception:
