@@ -130,7 +130,7 @@ _thread: threading.Thread | None = None
 def _submit(job) -> None:
     global _thread
     with _start_lock:
-        if _thread is None:
+        if _thread is None or not _thread.is_alive():  # not alive: it ended with the main thread
             _thread = threading.Thread(target=_run, name="eyesim-render")
             _thread.start()
     _jobs.put(job)
