@@ -140,7 +140,7 @@ def test_no_image_is_rendered_unless_a_program_asks(monkeypatch):
     calls = []
 
     class Counting:
-        def render(self, world, view):
+        def render(self, world, view, data=None):
             calls.append(view)
             return np.zeros((view.height, view.width, 3), dtype=np.uint8)
 

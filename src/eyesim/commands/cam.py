@@ -1,7 +1,12 @@
-"""RoBIOS camera group: CAMInit/CAMRelease and colour and gray frames from the robot's camera."""
+"""RoBIOS camera group: CAMInit/CAMRelease and colour and gray frames from the robot's camera.
+
+A frame is drawn, turned gray and encoded on the render thread (physics/render_worker.py), not on
+the simulation thread, which serves every program: CAMGet's reply is Deferred."""
 
 from eyesim.commands.errors import CommandError, require
+from eyesim.net.session import Deferred
 from eyesim.physics.render import to_gray
+from eyesim.protocol import encode_image_reply
 from eyesim.robot.components.camera import Camera
 
 # RoBIOS resolution constants -> (width, height)
@@ -39,15 +44,24 @@ def cam_release(sim, robot, request):
 
 
 def cam_get(sim, robot, request):
-    camera = _started(robot)
-    image = camera.capture()
-    return (0, camera.size[0], camera.size[1], image.tobytes())
+    return _image(robot, request, gray=False)
 
 
 def cam_get_gray(sim, robot, request):
+    return _image(robot, request, gray=True)
+
+
+def _image(robot, request, gray: bool) -> Deferred:
     camera = _started(robot)
-    image = camera.capture()
-    return (0, camera.size[0], camera.size[1], to_gray(image).tobytes())
+    width, height = camera.size
+
+    def reply(image):  # on the render thread
+        pixels = to_gray(image) if gray else image
+        values = (0, width, height, pixels)  # for request observers (the recorder): the array, not bytes
+        return values, encode_image_reply(request.op.code, request.request_id, values[:3], pixels)
+
+    frame = camera.take(reply)
+    return Deferred(frame, lambda: camera.taken(frame))
 
 
 HANDLERS = {

@@ -30,7 +30,7 @@ from eyesim import commands
 from eyesim.core.clock import Clock
 from eyesim.core.events import EventBus
 from eyesim.net.program_server import ProgramSockets
-from eyesim.net.session import Pending, Request, Session
+from eyesim.net.session import Deferred, Pending, Request, Session
 from eyesim.protocol import encode_error, encode_message, generated as g
 from eyesim.robot.component import Component
 from eyesim.scene.description import Scene
@@ -296,7 +296,7 @@ class Simulation:
         boundary = self.time_us + self.step_us
         best = None
         for session in live:
-            if session.queued:
+            if session.queued and not any(isinstance(p, Deferred) for _, p in session.pending):
                 key = (session.local_time_us, session.robot.id)
             else:
                 wake = min((p.wake_us for _, p in session.pending if p.wake_us is not None), default=None)
@@ -311,8 +311,8 @@ class Simulation:
         (at_us, _), session = best
         if session.queued:
             self._take_request(session, at_us)
-        else:
-            self._wake_session(session, at_us)
+        elif not self._wake_session(session, at_us):
+            self._wait(IDLE_WAIT)  # its reply is still being made (a camera image): wait for it, not time
 
     def step(self) -> None:
         """One physics step with its three phases."""
@@ -357,6 +357,9 @@ class Simulation:
             self._answer(request, encode_error(op.code, request.request_id, g.ERR_BAD_ARGUMENT,
                                                "internal simulator error (see the simulator log)"))
             return
+        if isinstance(result, Deferred):
+            self._defer(request, result)
+            return
         if isinstance(result, Pending):
             session.pending.append((request, result))
             session.local_time_us = request.time_us
@@ -397,6 +400,35 @@ class Simulation:
         session.local_time_us = due  # the program's next call cannot be earlier
         session.replies_held += 1  # its next request waits for this reply, as the program itself would
         heapq.heappush(self._held, (due, next(self._sequence), session, frame))
+
+    def _defer(self, request: Request, deferred: Deferred) -> None:
+        """A call answered like any other (see _answer) whose reply is made on another thread: it
+        leaves at the same simulation time as _answer's would, or when it is made if that is later
+        (deterministic mode waits for it: see _deterministic_round). The program's next request
+        waits for the reply, as it would for a held one: one image at a time per program, however
+        many it pipelines."""
+        session = request.session
+        cost = self.call_cost_us(request.op)
+        if self.clock.deterministic:
+            deferred.wake_us = request.time_us + cost
+            session.local_time_us = request.time_us
+        else:
+            if not self.call_time_us or cost == 0:
+                deferred.wake_us = 0  # as soon as it is made
+                session.local_time_us = request.time_us + cost
+            else:
+                deferred.wake_us = session.local_time_us = max(self._realtime_now_us(), request.time_us) + cost
+            session.replies_held += 1
+        session.pending.append((request, deferred))
+        deferred.work.when_done(lambda: self.call(Simulation._wake_pending))
+
+    def _deferred_frame(self, request: Request, deferred: Deferred) -> bytes:
+        """The reply a Deferred made; an error reply if making it failed (logged here, once)."""
+        if deferred.work.error is None:
+            return deferred.work.result[1]
+        log.error("handler for %s from %s failed:\n%s", request.op.name, request.session.name, deferred.work.error)
+        return encode_error(request.op.code, request.request_id, g.ERR_BAD_ARGUMENT,
+                            "internal simulator error (see the simulator log)")
 
     def _realtime_now_us(self) -> int:
         """Realtime: simulation time now, between steps: the wall clock's, within the step under way
@@ -468,8 +500,8 @@ class Simulation:
             if session.pending:
                 self._wake_session(session, self.time_us)
 
-    def _wake_session(self, session: Session, at_us: int) -> None:
-        """Complete the session's pending replies whose condition holds at time `at_us`."""
+    def _wake_session(self, session: Session, at_us: int) -> bool:
+        """Complete the session's pending replies whose condition holds at time `at_us`; whether any did."""
         still = []
         for request, pending in session.pending:
             values = pending.poll(at_us)
@@ -477,8 +509,20 @@ class Simulation:
                 still.append((request, pending))
                 continue
             session.local_time_us = max(session.local_time_us, at_us)
-            self._send(session, self._reply_frame(request, values))
+            if not isinstance(pending, Deferred):
+                self._send(session, self._reply_frame(request, values))
+                continue
+            self._send(session, self._deferred_frame(request, pending))
+            pending.answered()
+            if not self.clock.deterministic:
+                session.replies_held -= 1
+                self._take_turn(session)
+            if pending.work.error is None:
+                for observer in self.request_observers:
+                    observer(session.robot, request, values)
+        answered = len(still) < len(session.pending)
         session.pending = still
+        return answered
 
     def _send(self, session: Session, frame: bytes) -> None:
         if not session.closed:
@@ -493,6 +537,8 @@ class Simulation:
         """A program's connection ended (or is ended): forget it; the run may be over."""
         self._flush_output(session)
         session.closed = True
+        for _, pending in session.pending:
+            pending.cancel()
         session.pending.clear()
         session.queued.clear()
         if session in self.sessions:

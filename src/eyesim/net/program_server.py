@@ -23,6 +23,7 @@ import selectors
 import socket
 import time
 
+from eyesim.net.backlog import Backlog
 from eyesim.net.session import Request, Session
 from eyesim.protocol import FrameDecoder, ProtocolError, decode_payload, encode_error, generated as g
 
@@ -41,7 +42,7 @@ class ProgramConnection:
         self.sockets = sockets
         self.sock = sock
         self.decoder = FrameDecoder()
-        self.backlog = bytearray()  # reply bytes the kernel has not taken yet
+        self.backlog = Backlog()  # reply bytes the kernel has not taken yet
         self.closed = False
         self.session = Session(connection=self, peer=peer)
         self._events = selectors.EVENT_READ
@@ -73,14 +74,14 @@ class ProgramConnection:
 
     def flush(self) -> None:
         try:
-            sent = self.sock.send(self.backlog)
+            sent = self.sock.send(self.backlog.first())
         except BlockingIOError:
             return
         except OSError:
             sent = len(self.backlog)
         if sent:
             self.backlog_progress = time.monotonic()
-        del self.backlog[:sent]
+        self.backlog.consume(sent)
         self.resume()  # requests held back while the replies piled up
 
     # -- requests ------------------------------------------------------------------------------
@@ -166,10 +167,11 @@ class ProgramConnection:
             try:
                 self.sock.setblocking(True)
                 self.sock.settimeout(1.0)
-                self.sock.sendall(self.backlog)
+                for chunk in self.backlog.chunks():
+                    self.sock.sendall(chunk)
             except OSError:
                 pass
-        self.backlog = bytearray()  # given back at once, not when the session is forgotten
+        self.backlog = Backlog()  # given back at once, not when the session is forgotten
         if self._events:
             self.sockets.selector.unregister(self.sock)
             self._events = 0

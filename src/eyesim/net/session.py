@@ -54,6 +54,34 @@ class Pending:
     def until(cls, wake_us: int, reply: tuple) -> "Pending":
         return cls(lambda at_us: reply if at_us >= wake_us else None, wake_us)
 
+    def cancel(self) -> None:
+        """The call will not be answered (its program is gone)."""
+
+
+class Deferred(Pending):
+    """An ordinary call whose reply is made off the simulation thread (a camera image, drawn on the
+    render thread): `work` is a physics.render_worker.Frame whose result is (reply values, encoded
+    reply frame). It takes its cost in simulation time like a call answered at once: the engine
+    sets `wake_us` to when its reply is due, and the work wakes the engine when it is done. The
+    reply leaves once both hold; in deterministic mode the simulation waits for the work at
+    that time, so the reply comes at the same simulation time in every run. `answered()` runs on
+    the simulation thread when it leaves."""
+
+    def __init__(self, work, answered: Callable[[], None] = lambda: None):
+        # not Pending.__init__: a bound method kept on the instance would make a reference cycle,
+        # and the frame's megabytes would wait for the garbage collector
+        self.wake_us = 0
+        self.work = work
+        self.answered = answered
+
+    def poll(self, at_us: int) -> tuple | None:
+        if at_us < self.wake_us or not self.work.done():
+            return None
+        return self.work.result[0] if self.work.error is None else ()
+
+    def cancel(self) -> None:
+        self.work.cancel()
+
 
 @dataclass
 class Session:

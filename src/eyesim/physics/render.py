@@ -2,7 +2,8 @@
 
 Two renderers draw the same picture: MuJoCo's OpenGL renderer (render_gl.py) wherever an OpenGL
 context can be made, and a CPU ray caster (render_raycast.py) everywhere else. The choice is made
-once per process, on the first camera use, and announced in one line on stderr."""
+once per process, on the first camera use, and announced in one line on stderr. The simulator
+draws on its render thread (render_worker.py), off the simulation thread."""
 
 from __future__ import annotations
 
@@ -129,7 +130,8 @@ _renderer = None
 
 
 def camera_renderer():
-    """The process's renderer: OpenGL when a context can be made, else the ray caster."""
+    """The process's renderer: OpenGL when a context can be made, else the ray caster. Chosen and
+    used on the render thread (render_worker.py): an OpenGL renderer draws on the thread that made it."""
     global _renderer
     with _lock:
         if _renderer is None:
@@ -137,18 +139,13 @@ def camera_renderer():
         return _renderer
 
 
-def prepare(world, width: int = 0, height: int = 0) -> None:
-    """Start the process's renderer and make `world` ready to draw at this size: a camera calls it
-    at CAMInit (not when built: a run whose programs never use the camera should not pay a second
-    of CPU for an OpenGL context). On the simulation thread: an OpenGL context made on a thread of
-    its own crashed the process at exit when the run ended while it was being made."""
-    _prepare(world, width, height)
-
-
-def _prepare(world, width: int, height: int) -> None:
-    renderer = camera_renderer()
-    if hasattr(renderer, "prepare"):
-        renderer.prepare(world, width, height)
+def close_renderer() -> None:
+    """Free the process's renderer (the render thread calls it as the process ends)."""
+    global _renderer
+    with _lock:
+        if _renderer is not None and hasattr(_renderer, "close"):
+            _renderer.close()
+        _renderer = None
 
 
 def _choose():

@@ -3,17 +3,15 @@
 PyOpenGL binds itself to one platform for the life of a process, so a backend that fails cannot
 be swapped for another. The backend is therefore tried first in a short-lived child process
 (`python -m eyesim.physics.render_gl <backend>`), in MuJoCo's order of preference, and only the
-first that works is loaded here. All OpenGL calls run on one thread that owns the context."""
+first that works is loaded here. A GlRenderer draws on the thread that made it, which owns its
+context (the simulator's is the render thread, physics/render_worker.py)."""
 
 from __future__ import annotations
 
 import os
-import queue
 import subprocess
 import sys
-import threading
 import weakref
-from concurrent.futures import Future
 from functools import lru_cache
 
 import mujoco
@@ -112,52 +110,48 @@ class _Target:
 
 
 class GlRenderer:
-    """Draws views on its own thread, which makes the GL context and keeps it for the process."""
+    """Draws views with an OpenGL context it makes on the thread that creates it; every call must
+    come from that thread (each makes the context current: a thread may have more than one)."""
 
     name = "opengl"
 
     def __init__(self, backend: str):
         self.backend = backend
-        self._jobs: queue.SimpleQueue = queue.SimpleQueue()
         self._targets: dict[int, _Target] = {}
-        ready: Future = Future()
-        threading.Thread(target=self._run, args=(ready,), name="eyesim-render", daemon=True).start()
-        ready.result()  # raises NoOpenGL when the context cannot be made
+        context_class = _context_class(backend)
+        try:
+            self._gl = context_class(64, 64)
+            self._gl.make_current()
+        except Exception as error:  # whatever the GL stack raises when it cannot make a context
+            raise NoOpenGL(f"{backend}: {error}") from None
 
-    def render(self, world, view: render.View) -> np.ndarray:
-        """The view's image, (height, width, 3) uint8, top row first."""
-        done: Future = Future()
-        self._jobs.put((world, view, done))
-        return done.result()
+    def render(self, world, view: render.View, data=None) -> np.ndarray:
+        """The view's image, (height, width, 3) uint8, top row first; `data`: the physics state to
+        draw (a copy of the world's), else the world's own."""
+        self._gl.make_current()
+        target = self._target(world)
+        data = world.data if data is None else data
+        if not view.fisheye:
+            return self._perspective(world.model, data, target, view, view.width, view.height, view.fov)
+        # A fisheye image is resampled from a square pinhole image of the same field of view.
+        side = int(min(MAX_TEXTURE_SIDE, round(view.width * FISHEYE_OVERSAMPLE)))
+        square = self._perspective(world.model, data, target, view, side, side, view.fov)
+        rows, cols, inside = _fisheye_map(view.width, view.height, view.fov, side)
+        image = square[rows, cols]
+        image[~inside] = render.BACKGROUND
+        return image
 
     def prepare(self, world, width: int, height: int) -> None:
         """Make the world's GPU copy and an image buffer of this size before the first image."""
-        self._jobs.put((world, (width, height), None))
+        self._gl.make_current()
+        self._target(world).ensure_size(width, height)
 
-    # -- the render thread ---------------------------------------------------------------------
-    def _run(self, ready: Future) -> None:
-        try:
-            gl = _context_class(self.backend)(64, 64)
-            gl.make_current()
-        except NoOpenGL as error:
-            ready.set_exception(error)
-            return
-        except Exception as error:  # whatever the GL stack raises when it cannot make a context
-            ready.set_exception(NoOpenGL(f"{self.backend}: {error}"))
-            return
-        ready.set_result(None)
-        while True:
-            world, view, done = self._jobs.get()
-            if done is None:  # prepare
-                try:
-                    self._target(world).ensure_size(*view)
-                except Exception:  # the first image meets the same problem and reports it
-                    pass
-                continue
-            try:
-                done.set_result(self._draw(world, view))
-            except Exception as error:
-                done.set_exception(error)
+    def close(self) -> None:
+        """Free the GPU copies and the context (on the thread that made them)."""
+        for target in self._targets.values():
+            target.free()
+        self._targets.clear()
+        self._gl.free()
 
     def _target(self, world) -> _Target:
         for key, target in list(self._targets.items()):
@@ -169,24 +163,12 @@ class GlRenderer:
             target = self._targets[id(world)] = _Target(world)
         return target
 
-    def _draw(self, world, view: render.View) -> np.ndarray:
-        target = self._target(world)
-        if not view.fisheye:
-            return self._perspective(world, target, view, view.width, view.height, view.fov)
-        # A fisheye image is resampled from a square pinhole image of the same field of view.
-        side = int(min(MAX_TEXTURE_SIDE, round(view.width * FISHEYE_OVERSAMPLE)))
-        square = self._perspective(world, target, view, side, side, view.fov)
-        rows, cols, inside = _fisheye_map(view.width, view.height, view.fov, side)
-        image = square[rows, cols]
-        image[~inside] = render.BACKGROUND
-        return image
-
-    def _perspective(self, world, target: _Target, view: render.View, width: int, height: int,
+    def _perspective(self, model, data, target: _Target, view: render.View, width: int, height: int,
                      fov: float) -> np.ndarray:
         """A pinhole image of `fov` degrees across its width."""
         target.ensure_size(width, height)
-        model, scene = world.model, target.scene
-        mujoco.mjv_updateScene(model, world.data, target.option, None, target.camera,
+        scene = target.scene
+        mujoco.mjv_updateScene(model, data, target.option, None, target.camera,
                                mujoco.mjtCatBit.mjCAT_ALL, scene)
         for geom in scene.geoms[:scene.ngeom]:
             if geom.objtype == mujoco.mjtObj.mjOBJ_GEOM and model.geom_bodyid[geom.objid] == view.own_body:

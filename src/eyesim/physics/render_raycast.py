@@ -30,9 +30,10 @@ CORNERS = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)
 class RayCastRenderer:
     name = "raycast"
 
-    def render(self, world, view: render.View) -> np.ndarray:
-        """The view's image, (height, width, 3) uint8, top row first."""
-        model, data = world.model, world.data
+    def render(self, world, view: render.View, data=None) -> np.ndarray:
+        """The view's image, (height, width, 3) uint8, top row first; `data`: the physics state to
+        draw (a copy of the world's), else the world's own."""
+        model, data = world.model, world.data if data is None else data
         inside = render.camera_ray_axes(view.width, view.height, view.fov, view.fisheye)[3]
         forward = np.asarray(view.forward, dtype=np.float64)
         basis = np.stack([view.right, np.asarray(view.up, dtype=np.float64), forward])

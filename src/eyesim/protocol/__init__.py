@@ -2,7 +2,7 @@
 
 from eyesim.protocol import generated
 from eyesim.protocol.codec import (FrameDecoder, Message, ProtocolError, decode_body, decode_payload,
-                                   encode_error, encode_frame, encode_message, encode_payload)
+                                   encode_error, encode_frame, encode_image_reply, encode_message, encode_payload)
 
 __all__ = ["generated", "FrameDecoder", "Message", "ProtocolError", "decode_body", "decode_payload",
-           "encode_error", "encode_frame", "encode_message", "encode_payload"]
+           "encode_error", "encode_frame", "encode_image_reply", "encode_message", "encode_payload"]

@@ -1,7 +1,8 @@
 """The robot's camera: its pose on the robot (with pan and tilt), its resolution, its images.
 
-An image is rendered only when a program asks for one (CAMGet), by the process's renderer
-(physics/render.py); the last image is kept for the viewer."""
+An image is rendered only when a program asks for one (CAMGet), on the process's render thread
+(physics/render_worker.py) from a copy of the world taken when it was asked for; the last image
+the program got is kept for the viewer."""
 
 from __future__ import annotations
 
@@ -9,7 +10,7 @@ import math
 
 import numpy as np
 
-from eyesim.physics import render
+from eyesim.physics import render, render_worker
 from eyesim.physics.units import mm
 from eyesim.robot.actuators import Servo
 from eyesim.robot.component import Component
@@ -46,7 +47,7 @@ class Camera(Component):
     # -- set-up ----------------------------------------------------------------------------
     def start(self, width: int, height: int) -> None:
         self.size = (width, height)
-        render.prepare(self.world, width, height)
+        render_worker.prepare(self.world, width, height)
 
     def stop(self) -> None:
         self.size = None
@@ -64,11 +65,26 @@ class Camera(Component):
                            width=width, height=height, fov=self.fov, fisheye=self.spec.fisheye,
                            own_body=self.robot.body)
 
-    def capture(self) -> np.ndarray:
-        """A colour image at the chosen resolution: (height, width, 3) uint8, top row first."""
+    def take(self, finish) -> render_worker.Frame:
+        """Start an image at the chosen resolution, of the world as it is now, drawn on the render
+        thread; `finish(image)` makes the reply there. `taken(frame)` once the program has it."""
         width, height = self.size
-        self.image = render.camera_renderer().render(self.world, self.view(width, height))
-        self.image_count += 1
+        return render_worker.draw(self.world, self.view(width, height), finish)
+
+    def taken(self, frame: render_worker.Frame) -> None:
+        """The program got this image: it is the one the viewer shows."""
+        if frame.image is not None:
+            self.image = frame.image
+            self.image_count += 1
+
+    def capture(self) -> np.ndarray:
+        """A colour image at the chosen resolution, (height, width, 3) uint8, top row first, waited
+        for (not for programs' calls: the robot editor's preview, tests)."""
+        frame = self.take(lambda image: None)
+        frame.wait()
+        if frame.error is not None:
+            raise RuntimeError(f"the camera image could not be drawn:\n{frame.error}")
+        self.taken(frame)
         return self.image
 
 
