@@ -75,3 +75,18 @@ def test_random_payloads_raise_only_protocol_errors(payload):
 
 def test_frame_header_layout():
     assert encode_frame(0x1234, 2, 0x01020304, b"") == bytes.fromhex("08000000" "3412" "0200" "04030201")
+
+
+def test_a_large_bytes_field_is_a_read_only_view_of_the_frame_and_a_small_one_a_copy():
+    from eyesim.protocol.codec import VIEW_FIELDS_FROM
+
+    image = bytes(range(256)) * (VIEW_FIELDS_FROM // 256)
+    for data, kept_as in ((image, memoryview), (b"\x01\x02\x03", bytes)):
+        frame = encode_message(g.OP_LCD_IMAGE, g.KIND_REQUEST, 5, (0, 0, 1, len(data), 1, 1, 1, data))
+        (message,) = FrameDecoder().feed(frame)
+        values = decode_payload(g.OPS[g.OP_LCD_IMAGE].request, message.payload)
+        assert type(values[-1]) is kept_as and values[-1] == data
+    with pytest.raises(TypeError):
+        values = decode_payload(g.OPS[g.OP_LCD_IMAGE].request, FrameDecoder().feed(
+            encode_message(g.OP_LCD_IMAGE, g.KIND_REQUEST, 5, (0, 0, 1, len(image), 1, 1, 1, image)))[0].payload)
+        values[-1][0] = 0  # nobody can change the frame it came from

@@ -15,6 +15,9 @@ _I32 = struct.Struct("<i")
 _U32 = struct.Struct("<I")
 _F64 = struct.Struct("<d")
 SHARE_BUFFER_FROM = 64 * 1024  # frame bytes from which the decoder hands its buffer over rather than copy
+# A bytes field from this size on (an LCDImage picture, an AUPlay sound: megabytes) is passed on as a
+# read-only view of the received frame, not copied: every frame body is a buffer of its own.
+VIEW_FIELDS_FROM = 1 << 20
 
 
 class ProtocolError(Exception):
@@ -71,7 +74,8 @@ def decode_payload(layout: Sequence[tuple[str, str]], payload: bytes | memoryvie
     """Decode `payload` by `layout`; raises ProtocolError(BAD_PAYLOAD) on any mismatch, and
     ProtocolError(BAD_ARGUMENT) for a field longer than `lengths` allows (an OpSpec's: (field
     index, most bytes)), before it is decoded. Text is decoded straight from the payload (a
-    memoryview is not copied first); bytes are copied once."""
+    memoryview is not copied first); bytes are copied once, or not at all when they are large
+    (VIEW_FIELDS_FROM: a read-only memoryview)."""
     most = dict(lengths)
     values = []
     pos = 0
@@ -100,7 +104,7 @@ def decode_payload(layout: Sequence[tuple[str, str]], payload: bytes | memoryvie
                 if typ == "str":
                     values.append(str(raw, "utf-8"))
                 elif typ == "bytes":
-                    values.append(bytes(raw))
+                    values.append(memoryview(raw).toreadonly() if size >= VIEW_FIELDS_FROM else bytes(raw))
                 else:
                     values.append(list(struct.unpack(f"<{n}i", raw)))
     except struct.error:

@@ -491,4 +491,6 @@ def _octants(x: int, y: int) -> list[tuple[int, int]]:
 
 
 def create(context) -> list[Component]:
+    # The default font is opened now, once per process, not by the first LCDPrintf of a run.
+    lcd_fonts.truetype(lcd_fonts.DEFAULT_FONT, NORMAL, lcd_fonts.DEFAULT_SIZE)
     return [Lcd()]
