@@ -46,6 +46,16 @@ def shot(page, name: str) -> None:
         page.screenshot(path=str(Path(SHOTS) / f"{name}.png"))
 
 
+def search_one(page, text: str, expected: str) -> None:
+    """Type `text` into the scene browser's search and wait until its one result is `expected`
+    (the list is fetched again after a short pause: the previous search's result stays meanwhile)."""
+    page.fill("#scene-search", text)
+    page.wait_for_function("""expected => {
+        const buttons = document.querySelectorAll('#scene-files button');
+        return buttons.length === 1 && buttons[0].textContent.includes(expected);
+    }""", arg=expected)
+
+
 def editor_state(page) -> dict:
     return page.evaluate("() => fetch('/scenes/state').then(r => r.json())")
 
@@ -74,8 +84,7 @@ def test_open_build_edit_undo_save_and_reopen(browser_context, simulator, worksp
     shot(page, "1-browser")
 
     # A broken file: its error with file:line, and the arena keeps running.
-    page.fill("#scene-search", "broken")
-    page.wait_for_function("() => document.querySelectorAll('#scene-files button').length === 1")
+    search_one(page, "broken", "broken.sim")
     page.click("#scene-files button")
     page.wait_for_function("() => document.querySelector('#scene-browser-message').textContent.includes('broken.sim:3')")
     assert "Teapot" in page.inner_text("#scene-browser-message")
@@ -83,8 +92,7 @@ def test_open_build_edit_undo_save_and_reopen(browser_context, simulator, worksp
     assert viewer.state("robotIds") == [1] and viewer.state("scene")["markers"] == 0
 
     # A corpus scene replaces the arena.
-    page.fill("#scene-search", "obstacles4k sim")
-    page.wait_for_function("() => document.querySelectorAll('#scene-files button').length === 1")
+    search_one(page, "obstacles4k sim", "obstacles4k.sim")
     page.click("#scene-files button")
     # Opening stops the arena's programs and builds the new world: seconds on a loaded 2-core machine.
     page.wait_for_selector("#scene-browser", state="hidden", timeout=60_000)
@@ -283,8 +291,7 @@ def test_a_new_arena_built_in_the_page_is_saved_and_reopened_the_same(browser_co
     page.click("#edit-scene")
     page.wait_for_function("() => window.eyesimViewer.programState(2)?.event === 'started'")
     page.click("#open-scenes")
-    page.fill("#scene-search", "built.json")  # not built.world.json, which is listed too (a world)
-    page.wait_for_function("() => document.querySelectorAll('#scene-files button').length === 1")
+    search_one(page, "built.json", "built.json")  # not built.world.json, which is listed too (a world)
     page.click("#scene-files button")
     page.wait_for_selector("#scene-browser", state="hidden", timeout=60_000)  # programs stop, the world is built
     reopened = editor_state(page)["items"]
