@@ -34,6 +34,14 @@ class LidarScanner(Component):
         self.mount = np.array([0.0, 0.0, mm(context.robot_type.height + MOUNT_ABOVE_TOP)])
         self.last_scan: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
 
+    def bind(self, world) -> None:
+        super().bind(world)
+        model = world.model
+        # Which geoms are the robot's own moving parts (wheels, arm links: the chassis is left
+        # out by the ray cast itself); one more entry, False, for "hit nothing" (geom -1).
+        own = model.body_rootid[model.geom_bodyid] == self.robot.body
+        self._own_parts = np.append(own, False)
+
     def reset(self) -> None:
         self.configure(360, self.spec.tilt, self.spec.points)
         self.last_scan = None
@@ -76,10 +84,10 @@ class LidarScanner(Component):
                              dists: np.ndarray) -> None:
         """Beams that hit one of the robot's own moving parts (a wheel, an arm link: bodies other
         than the chassis, which the ray cast already ignores) continue past it."""
+        own = np.flatnonzero(self._own_parts[geoms])
+        if not len(own):
+            return
         model, data = self.world.model, self.world.data
-        hit = geoms >= 0
-        own = np.flatnonzero(hit & (model.body_rootid[model.geom_bodyid[np.where(hit, geoms, 0)]]
-                                    == self.robot.body))
         geom = np.zeros(1, dtype=np.int32)
         for i in own:
             travelled, part, segment = 0.0, geoms[i], dists[i]
