@@ -249,6 +249,12 @@ class Launcher:
             return
         run.stopped_by_us = True
         run.process.terminate()
+        self._end(run, grace)
+        self._waiters[id(run)].join(timeout=grace)
+
+    @staticmethod
+    def _end(run: ProgramRun, grace: float) -> None:
+        """Wait `grace` s for a program asked to end, then kill it; and whatever it started in its group."""
         try:
             run.process.wait(timeout=grace)
         except subprocess.TimeoutExpired:
@@ -256,7 +262,6 @@ class Launcher:
             run.process.wait()
         if run.options.own_group:
             _kill_group(run.process.pid)
-        self._waiters[id(run)].join(timeout=grace)
 
     def latest(self, robot_id: int) -> ProgramRun | None:
         """The robot's most recent program run, if it had one."""
@@ -279,19 +284,12 @@ class Launcher:
                 run.process.terminate()
         for run in self.runs:
             if run.process is not None:
-                try:
-                    run.process.wait(timeout=grace)
-                except subprocess.TimeoutExpired:
-                    run.process.kill()
-                    run.process.wait()
-                if run.options.own_group:
-                    _kill_group(run.process.pid)  # whatever it started in its group
+                self._end(run, grace)
         for thread in self._threads:
             thread.join(timeout=grace)
         for run in self.runs:  # the loop has ended: what they printed last is taken in here
             if run.process is not None:
                 self._take_output(run)
-
 
 
 def crash_reason(number: int) -> str:

@@ -71,9 +71,8 @@ class ProgramOutput:
         still hold the pipe open; what that writes later is not shown)."""
         for stream in list(self.pipes):
             self.read(stream, whole=True)
-        self.flush()
-        for stream in list(self.pipes):
-            self._close(stream)
+            if stream in self.pipes:  # not at its end: a process it started still holds it
+                self._close(stream)
 
     def _show(self, stream: str, data: bytes) -> None:
         start = 0

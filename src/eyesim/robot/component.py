@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
@@ -31,3 +32,10 @@ class Component:
     def publish(self, robot_id: int, events, again: bool) -> None:
         """Emit what changed since the last tick on `events` (eyesim.core.events); `again`: also what
         did not (a browser has just connected)."""
+
+
+def named(reference: str):
+    """What a declaration names as "module:name" (a drive's wheel component, a part's component
+    factories): declarations below the physics name them instead of importing them."""
+    module, name = reference.split(":")
+    return getattr(importlib.import_module(module), name)

@@ -8,9 +8,8 @@ module with a `create(context)` function + one line here)."""
 
 from __future__ import annotations
 
-import importlib
-
 from eyesim.robot import drives
+from eyesim.robot.component import named
 from eyesim.robot.components import analog_io
 from eyesim.robot.components import battery
 from eyesim.robot.components import digital_io
@@ -23,11 +22,6 @@ from eyesim.robot.components import speaker
 from eyesim.robot.components import timers
 from eyesim.robot.components import vw
 from eyesim.scene.parts import PARTS
-
-
-def _factory(name: str):
-    module, function = name.split(":")
-    return getattr(importlib.import_module(module), function)
 
 
 COMPUTER = (
@@ -46,6 +40,6 @@ COMPUTER = (
 FACTORIES = (
     drives.create,
     vw.create,  # after the drive: it drives any drive with kinematics
-    *(_factory(name) for part in PARTS for name in part.components),
+    *(named(name) for part in PARTS for name in part.components),
     *COMPUTER,
 )

@@ -2,8 +2,7 @@
 
 from __future__ import annotations
 
-import importlib
-
+from eyesim.robot.component import named
 from eyesim.scene.drives import drive_of
 
 
@@ -13,5 +12,4 @@ def create(context) -> list:
     drive = drive_of(context.robot_type)
     if not drive.component or context.robot_type.wheels is None:
         return []
-    module, name = drive.component.split(":")
-    return [getattr(importlib.import_module(module), name)(context)]
+    return [named(drive.component)(context)]
