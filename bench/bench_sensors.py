@@ -54,13 +54,18 @@ def in_process() -> dict:
     maze_view = maze.robots[0].component(Camera).view(320, 240)
     gl = render_gl.GlRenderer(render_gl.choose_backend(os.environ.get("MUJOCO_GL", "").lower()))
     ray_caster = RayCastRenderer()
+
+    def new_scan():  # as after a physics step: the scanner keeps only a scan of the same state
+        sim.world.state_version += 1
+        scanner.scan()
+
     return {"step_s": best_time(sim.step, 500),
             "render_opengl_s": best_time(lambda: gl.render(sim.world, view), IN_PROCESS_FRAMES),
             "render_raycast_s": best_time(lambda: ray_caster.render(sim.world, view), IN_PROCESS_FRAMES),
             "maze_opengl_s": best_time(lambda: gl.render(maze.world, maze_view), IN_PROCESS_FRAMES),
             "maze_raycast_s": best_time(lambda: ray_caster.render(maze.world, maze_view), IN_PROCESS_FRAMES),
             "maze_walls": len(maze.scene.world.walls),
-            "lidar_scan_s": best_time(scanner.scan, SCANS), "opengl_backend": gl.backend}
+            "lidar_scan_s": best_time(new_scan, SCANS), "opengl_backend": gl.backend}
 
 
 def maze_walls():
@@ -115,17 +120,20 @@ def main() -> int:
     print_table("In process (arena, 3 robots)", rows, ("what", "time", "rate", "vs physics step"))
     print()
     base = opengl["os_get_count"]["median_ms"]
-    rows = [("OSGetCount (baseline)", f"{base:.3f}", f"{opengl['os_get_count']['p99_ms']:.3f}", "", "1.00x")]
-    for name, label, unit in (("psd_get", "PSDGet", "calls/s"), ("lidar_get", "LIDARGet 360 points", "scans/s")):
-        r = opengl[name]
-        rows.append((label, f"{r['median_ms']:.3f}", f"{r['p99_ms']:.3f}", f"{1000 / r['median_ms']:.0f} {unit}",
-                     f"{r['median_ms'] / base:.2f}x"))
-    for label, runs in (("CAMGet QVGA, OpenGL", opengl), ("CAMGet QVGA, ray caster", raycast)):
-        r = runs["cam_get"]
-        rows.append((label, f"{r['median_ms']:.3f}", f"{r['p99_ms']:.3f}", f"{1000 / r['median_ms']:.0f} fps",
-                     f"{r['median_ms'] / base:.2f}x"))
+    rows = [("OSGetCount (baseline)", f"{base:.3f}", f"{opengl['os_get_count']['p99_ms']:.3f}",
+             f"{opengl['os_get_count']['mean_ms']:.3f}", "", "1.00x")]
+    measured = [("PSDGet", opengl["psd_get"], "calls/s"),
+                ("LIDARGet 360 points", opengl["lidar_get"], "scans/s"),
+                ("LIDARGet, every scan cast anew", opengl["lidar_get_fresh"], "scans/s"),
+                ("CAMGet QVGA, OpenGL", opengl["cam_get"], "fps"),
+                ("CAMGet QVGA, ray caster", raycast["cam_get"], "fps")]
+    for label, r, unit in measured:
+        rows.append((label, f"{r['median_ms']:.3f}", f"{r['p99_ms']:.3f}", f"{r['mean_ms']:.3f}",
+                     f"{1000 / r['mean_ms']:.0f} {unit}", f"{r['median_ms'] / base:.2f}x"))
     print_table(f"Through the protocol, realtime ({CALLS} calls, {FRAMES} frames; ms)", rows,
-                ("call", "median", "p99", "rate", "median vs OSGetCount"))
+                ("call", "median", "p99", "mean", "rate (1 / mean)", "median vs OSGetCount"))
+    print("LIDARGet polled faster than the physics steps returns the scan made at the same state; "
+          "'every scan cast anew' alternates it with SIMLaserScan, so that no scan is reused.")
     print("targets: CAMGet QVGA >= 30 fps per renderer, lidar >= 2000 scans/s, PSDGet within 20% of the "
           "foundation's round trip (bench_roundtrip.py)")
     print(f"wrote {write_results('sensors', results)}")

@@ -1,6 +1,7 @@
 /* Benchmark client: times sensor calls and prints "<call> <microseconds>" per call:
  * OSGetCount (no sensor work: the protocol's floor), PSDGet and LIDARGet (360 points) in turn,
- * then CAMGet (QVGA). */
+ * then LIDARGet and SIMLaserScan in turn (each casts its scan anew: the simulator keeps only the
+ * last scan made at the current physics state), then CAMGet (QVGA). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
@@ -19,6 +20,7 @@ static QVGAcol image;
 static void os_get_count(void) { OSGetCount(); }
 static void psd_get(void) { PSDGet(PSD_FRONT); }
 static void lidar_get(void) { LIDARGet(scan); }
+static void laser_scan(void) { SIMLaserScan(scan); }
 static void cam_get(void) { CAMGet(image); }
 
 /* Times the calls in turn, `rounds` times, so each sees the same load on the machine. */
@@ -44,6 +46,9 @@ int main(int argc, char **argv)
     const char *const sensors[] = {"os_get_count", "psd_get", "lidar_get"};
     void (*const sensor_calls[])(void) = {os_get_count, psd_get, lidar_get};
     measure(sensors, sensor_calls, 3, calls);
+    const char *const fresh[] = {"lidar_get_fresh", "laser_scan_fresh"};
+    void (*const fresh_calls[])(void) = {lidar_get, laser_scan};
+    measure(fresh, fresh_calls, 2, calls);
     const char *const camera[] = {"cam_get"};
     void (*const camera_calls[])(void) = {cam_get};
     measure(camera, camera_calls, 1, frames);

@@ -119,3 +119,30 @@ def test_a_scan_never_overruns_the_programs_array(tmp_path, programs, run_scene)
         assert abs(measured - to_wall(1000, 1000, beam_heading(0, i, 720, 360))) <= 10, (i, measured)
     assert "LIDARGet: the robot's lidar has 720 points, LIDAR_RESOLUTION is 360" in run.stderr
     assert run.values(1, "narrow")[0][:2] == [0, 8]  # after LIDARSet all is well
+
+
+def test_a_scan_is_cast_again_whenever_the_state_or_the_beams_change():
+    """Polled faster than the physics steps, the lidar returns the scan it made at this state; a
+    step, a teleport (no step) and new settings each make a new one, and the legacy laser scan in
+    between does not stand in for it."""
+    sim = Simulation(arena(robots=((1000, 1000, 0),)))
+    robot = sim.robots[0]
+    scanner = robot.component(LidarScanner)
+    first = scanner.scan()
+    assert scanner.scan() is first and not first.flags.writeable
+    ahead = first[180]
+
+    sim.world.set_free_pose(robot.body, 1.5, 1.0, sim.world.pose(robot.body)[2], 0.0)  # 500 mm on
+    teleported = scanner.scan()
+    assert teleported is not first and abs(int(ahead) - int(teleported[180]) - 500) <= 2
+
+    legacy = scanner.laser_scan()
+    assert legacy is not teleported and scanner.laser_scan() is legacy
+    assert scanner.scan() is not legacy and scanner.scan()[180] == teleported[180]
+
+    scanner.configure(90, 0, 90)
+    assert len(scanner.scan()) == 90
+
+    before = scanner.scan()
+    sim.step()
+    assert scanner.scan() is not before

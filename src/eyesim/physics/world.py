@@ -158,14 +158,23 @@ class PhysicsWorld:
         self.model = spec.compile()
         self.data = mujoco.MjData(self.model)
         self.water = water
-        mujoco.mj_forward(self.model, self.data)
+        # Goes up whenever the state the sensors see changes (a step, a reset, a teleport): a
+        # sensor may keep a reading made at the same state_version, it would come out the same.
+        self.state_version = 0
+        self.forward()
 
     def step(self) -> None:
         mujoco.mj_step(self.model, self.data)
+        self.state_version += 1
+
+    def forward(self) -> None:
+        """Work out positions and contacts after the state was changed other than by a step."""
+        mujoco.mj_forward(self.model, self.data)
+        self.state_version += 1
 
     def reset(self) -> None:
         mujoco.mj_resetData(self.model, self.data)
-        mujoco.mj_forward(self.model, self.data)
+        self.forward()
 
     @property
     def time(self) -> float:
@@ -196,7 +205,7 @@ class PhysicsWorld:
         self.data.qpos[qadr:qadr + 3] = (x, y, z)
         self.data.qpos[qadr + 3:qadr + 7] = yaw_quat(yaw)
         self.data.qvel[vadr:vadr + 6] = 0.0
-        mujoco.mj_forward(self.model, self.data)
+        self.forward()
 
     def ray(self, origin, direction, exclude_body: int) -> float | None:
         """Distance (m) along a unit direction to the first geom hit, ignoring one body; None = no hit."""

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import mujoco
-
 from eyesim.physics.units import mm
 from eyesim.physics.water import DENSITY, WaterForces
 from eyesim.robot.component import Component
@@ -45,7 +43,7 @@ class Buoyancy(Component):
         model, data = self.world.model, self.world.data
         joint = model.body_jntadr[self.robot.body]
         data.qpos[model.jnt_qposadr[joint] + 2] = self.world.water.surface - self.afloat_draft
-        mujoco.mj_forward(model, data)
+        self.world.forward()
 
     def before_step(self, dt: float) -> None:
         if self.world.water is not None:

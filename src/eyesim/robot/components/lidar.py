@@ -33,6 +33,9 @@ class LidarScanner(Component):
         self.robot = context.robot
         self.mount = np.array([0.0, 0.0, mm(context.robot_type.height + MOUNT_ABOVE_TOP)])
         self.last_scan: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
+        # (world.state_version, beams, distances) of the last cast: a program polling faster than
+        # the physics steps (2 ms) gets the same scan again without casting it again.
+        self._cached: tuple[int, np.ndarray, np.ndarray] | None = None
 
     def bind(self, world) -> None:
         super().bind(world)
@@ -45,6 +48,7 @@ class LidarScanner(Component):
     def reset(self) -> None:
         self.configure(360, self.spec.tilt, self.spec.points)
         self.last_scan = None
+        self._cached = None
 
     def configure(self, field_deg: float, tilt_deg: float, points: int) -> None:
         """Field of view (degrees, centred ahead), tilt (degrees, positive = front down), beam count."""
@@ -65,7 +69,11 @@ class LidarScanner(Component):
         return self._cast(LASER_SCAN_BEAMS)
 
     def _cast(self, local: np.ndarray) -> np.ndarray:
-        """Distances in mm along beams given in the robot's frame; the last scan, for the viewer."""
+        """Distances in mm along beams given in the robot's frame (read-only: the same array comes
+        back while the state is the same); the last scan, for the viewer."""
+        cached = self._cached
+        if cached is not None and cached[0] == self.world.state_version and cached[1] is local:
+            return cached[2]
         model, data = self.world.model, self.world.data
         rotation = data.xmat[self.robot.body].reshape(3, 3)
         origin = data.xpos[self.robot.body] + rotation @ self.mount
@@ -77,7 +85,9 @@ class LidarScanner(Component):
         self._look_past_own_parts(origin, directions, geom, dist)
         within = (dist >= 0) & (dist < mm(MAX_RANGE_MM))
         distances = np.where(within, np.rint(dist * 1000.0), MAX_RANGE_MM).astype(np.int32)
+        distances.flags.writeable = False
         self.last_scan = (origin.copy(), directions, distances)
+        self._cached = (self.world.state_version, local, distances)
         return distances
 
     def _look_past_own_parts(self, origin: np.ndarray, directions: np.ndarray, geoms: np.ndarray,
