@@ -113,6 +113,23 @@ def test_realtime_with_a_call_time_of_0_answers_at_once():
         assert sim.call_cost_us(g.OPS_BY_NAME["OS_GET_COUNT"]) == g.OPS_BY_NAME["OS_GET_COUNT"].cost_us
 
 
+def test_realtime_calls_without_a_call_time_never_take_a_programs_clock_past_the_step_under_way():
+    """Each call still moves the program's clock on by its own cost, but only within the physics
+    step under way: 200 calls in a row while paused see at most one step (2 ms) go by, not 200
+    calls' costs; the clock follows the simulation's again once it runs."""
+    with running_simulation(with_call_time(arena(), 0), "realtime") as (sim, port):
+        client = ProgramClient(port)
+        client.hello()
+        sim.call(lambda s: s.clock.set_paused(True, s.time_us))
+        paused_at = sim.time_us // 1000
+        counts = [client.call("OS_GET_COUNT")[0] for _ in range(200)]
+        assert 200 * g.OPS_BY_NAME["OS_GET_COUNT"].cost_us // 1000 > 2 * sim.step_us // 1000
+        assert paused_at <= counts[0] <= counts[-1] <= paused_at + sim.step_us // 1000
+        sim.call(lambda s: s.clock.set_paused(False, s.time_us))
+        time.sleep(0.3)
+        assert client.call("OS_GET_COUNT")[0] >= paused_at + 250
+
+
 def test_key_get_waits_for_a_press_while_other_calls_go_on():
     with running_simulation(arena(robots=((500, 500, 0), (1500, 500, 0)))) as (sim, port):
         waiter, other = ProgramClient(port), ProgramClient(port)

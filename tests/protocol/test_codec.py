@@ -1,9 +1,11 @@
 """Framing survives any split or coalescing of the byte stream; bad frames give our own error."""
 
+import struct
+
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from eyesim.protocol import (FrameDecoder, ProtocolError, decode_payload, encode_frame, encode_message,
+from eyesim.protocol import (FrameDecoder, ProtocolError, decode_payload, encode_frame, encode_message, encode_payload,
                              generated as g)
 
 FRAMES = [
@@ -90,3 +92,34 @@ def test_a_large_bytes_field_is_a_read_only_view_of_the_frame_and_a_small_one_a_
         values = decode_payload(g.OPS[g.OP_LCD_IMAGE].request, FrameDecoder().feed(
             encode_message(g.OP_LCD_IMAGE, g.KIND_REQUEST, 5, (0, 0, 1, len(image), 1, 1, 1, image)))[0].payload)
         values[-1][0] = 0  # nobody can change the frame it came from
+
+
+def test_messages_of_fixed_size_fields_pack_in_one_go_as_field_by_field():
+    """Layouts of i32/u32/f64 fields only are packed and unpacked with one Struct: the bytes, the
+    values and the errors are those of the general field-by-field code."""
+    from eyesim.protocol.codec import _scalar_structs
+
+    samples = {"i32": -123456, "u32": 4000000000, "f64": -2.5}
+    checked = 0
+    for op in g.OPS.values():
+        for kind, layout in ((g.KIND_REQUEST, op.request), (g.KIND_REPLY, op.reply)):
+            if _scalar_structs(layout)[0] is None:
+                continue
+            values = tuple(samples[typ] for _, typ in layout)
+            general = encode_frame(op.code, kind, 77, encode_payload(layout, values))
+            assert encode_message(op.code, kind, 77, values) == general
+            assert decode_payload(layout, general[4 + 8:]) == values
+            with pytest.raises(ValueError, match="expected"):
+                encode_message(op.code, kind, 77, values + (1,))
+            checked += 1
+    assert checked > 100  # most calls: PSDGet, VWGetPosition, OSGetCount ...
+    with pytest.raises(struct.error):
+        encode_message(g.OP_PSD_GET, g.KIND_REQUEST, 1, (2 ** 31,))
+
+
+def test_a_lone_frame_is_still_held_to_the_decoders_limit():
+    frame = encode_message(g.OP_SIM_SET_ROBOT, g.KIND_REQUEST, 5, (0, 1, 2, 3, -4))
+    with pytest.raises(ProtocolError) as error:
+        FrameDecoder(max_frame=16).feed(frame)
+    assert error.value.code == g.ERR_BAD_FRAME
+    assert FrameDecoder().feed(frame, limit=0) == []

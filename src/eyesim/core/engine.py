@@ -200,13 +200,16 @@ class Simulation:
         self._release_held()
         wait = self.clock.seconds_until(self.time_us + self.step_us)
         if wait > 0:
+            step_due = time.perf_counter() + wait
             if self._ready:  # serve in turn until the step is due, then look at the sockets again
-                self._serve(deadline=time.perf_counter() + wait)
+                self._serve(deadline=step_due)
                 self._wait(0)
                 return
             if self._held:  # due by now (it was not a moment ago): 0, just look at the sockets
                 wait = max(0.0, min(wait, self.clock.seconds_until(self._held[0][0])))
             self._wait(min(wait, SNAPSHOT_PERIOD))
+            if self._ready:  # what arrived is served now, not a round later
+                self._serve(deadline=step_due)
             return
         self._wait(0)
         for _ in range(MAX_CATCH_UP_STEPS):
@@ -280,7 +283,11 @@ class Simulation:
             self._flush_output(session)
         request = session.queued.popleft()
         session.connection.resume()  # room in its queue again
-        request.time_us = max(self.time_us, session.local_time_us) if at_us is None else at_us
+        if at_us is None:
+            # Realtime: calls answered at once move the program's clock on by their cost within
+            # the step under way, never past it (it would run ahead of the simulation).
+            at_us = max(self.time_us, min(session.local_time_us, self.time_us + self.step_us))
+        request.time_us = at_us
         self._execute(request)
 
     def _deterministic_round(self) -> None:

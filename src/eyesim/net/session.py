@@ -102,7 +102,7 @@ class Session:
 
     def note_request(self, now_wall: float) -> None:
         self.last_request_wall = now_wall
-        if any(p.background for _, p in self.pending):
+        if self.pending and any(p.background for _, p in self.pending):
             self.free_running = False  # the timer thread waits, so the main thread made this call
 
     def blocked(self, now_wall: float) -> bool:

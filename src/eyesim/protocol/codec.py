@@ -35,6 +35,26 @@ class Message(NamedTuple):
     payload: bytes | memoryview  # a view into the received frame: decode_payload copies what it keeps
 
 
+_SCALAR_CODES = {"i32": "i", "u32": "I", "f64": "d"}
+_scalar_layouts: dict[int, tuple] = {}  # id(layout) -> (layout, payload Struct, frame Struct) or (layout, None, None)
+
+
+def _scalar_structs(layout: Sequence[tuple[str, str]]) -> tuple[struct.Struct | None, struct.Struct | None]:
+    """For a layout of fixed-size fields only (most calls' requests and replies): one Struct for
+    the payload and one for the whole frame (length, header, payload), so a message is packed or
+    unpacked in one go; (None, None) for a layout with a text, bytes or array field."""
+    known = _scalar_layouts.get(id(layout))
+    if known is None or known[0] is not layout:  # layouts are long-lived constants: keyed by identity
+        codes = [_SCALAR_CODES.get(typ) for _, typ in layout]
+        if None in codes:
+            known = (layout, None, None)
+        else:
+            fields = "".join(codes)
+            known = (layout, struct.Struct("<" + fields), struct.Struct("<IHHI" + fields))
+        _scalar_layouts[id(layout)] = known
+    return known[1], known[2]
+
+
 def _encode_field(out: list[bytes], typ: str, value) -> None:
     if typ == "i32":
         out.append(_I32.pack(value))
@@ -76,10 +96,17 @@ def decode_payload(layout: Sequence[tuple[str, str]], payload: bytes | memoryvie
     index, most bytes)), before it is decoded. Text is decoded straight from the payload (a
     memoryview is not copied first); bytes are copied once, or not at all when they are large
     (VIEW_FIELDS_FROM: a read-only memoryview)."""
+    end = len(payload)
+    scalars, _ = _scalar_structs(layout)
+    if scalars is not None:
+        if end < scalars.size:
+            raise ProtocolError(g.ERR_BAD_PAYLOAD, f"payload too short ({end} bytes) for its fields")
+        if end > scalars.size:
+            raise ProtocolError(g.ERR_BAD_PAYLOAD, f"{end - scalars.size} unexpected bytes after the last field")
+        return scalars.unpack_from(payload)
     most = dict(lengths)
     values = []
     pos = 0
-    end = len(payload)
     try:
         for index, (name, typ) in enumerate(layout):
             if typ == "i32":
@@ -125,7 +152,12 @@ def encode_message(op: int, kind: int, request_id: int, values: Sequence) -> byt
     """Encode a request or reply of operation `op` with its fields' values."""
     spec = g.OPS[op]
     layout = spec.request if kind == g.KIND_REQUEST else spec.reply
-    return encode_frame(op, kind, request_id, encode_payload(layout, values))
+    _, frame = _scalar_structs(layout)
+    if frame is None:
+        return encode_frame(op, kind, request_id, encode_payload(layout, values))
+    if len(values) != len(layout):
+        raise ValueError(f"expected {len(layout)} values, got {len(values)}")
+    return frame.pack(frame.size - _LEN.size, op, kind, request_id, *values)
 
 
 def encode_error(op: int, request_id: int, code: int, message: str) -> bytes:
@@ -151,6 +183,12 @@ class FrameDecoder:
         of them (the rest stay buffered: feed b"" later to take them).
 
         Raises ProtocolError(BAD_FRAME) when a frame announces a size beyond the limit."""
+        if not self._buffer and type(data) is bytes and len(data) >= 4 and (limit is None or limit > 0):
+            (length,) = _LEN.unpack_from(data)
+            if len(data) == 4 + length and _HEADER.size <= length <= min(self._max_frame, SHARE_BUFFER_FROM):
+                # Exactly one small frame and nothing buffered (a call's request, as a rule): the
+                # received bytes are the frame, and they never change, so nothing is copied.
+                return [decode_body(memoryview(data)[4:])]
         self._buffer += data
         messages = []
         buf = self._buffer
