@@ -269,7 +269,9 @@ class Simulation:
         while self._ready and remaining != 0:
             session = self._ready.popleft()
             session.in_turn = False
-            if session.closed:
+            # Taking a request can decode the next one and put the program back in the round
+            # before its reply is held; the release of that reply gives it its next turn.
+            if session.closed or session.replies_held:
                 continue
             self._take_request(session)
             self._take_turn(session)
