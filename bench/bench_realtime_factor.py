@@ -9,7 +9,7 @@ The simulation runs as `eyesim run --speed max` does (realtime clock, as fast as
 a driver in the same process gives each robot its next manoeuvre (300 mm straight, 90 degree turn:
 squares, each robot in its own 600 mm cell) through the VW controller the handlers use, so what is
 measured is the simulator, not the scheduling of 100 processes on a small machine. The baseline is
-mj_step alone on a copy of the same state, for as many steps, measured between the runs.
+mj_step alone through the same states, for as many steps, measured between the runs (see bare_steps).
 Targets (performance issue): >= 120x real time for one robot with our overhead per step <= 0.4x
 mj_step's cost, >= 2x real time for 100 robots. The machine is shared: compare runs of the same
 session only, and repeat.
@@ -87,13 +87,53 @@ def run_for_wall_time(sim: Simulation, wall_seconds: float) -> tuple[float, int,
 
 
 def bare_steps(sim: Simulation, steps: int) -> float:
-    """Wall seconds of `steps` bare mj_step calls from a copy of the current state."""
-    data = copy.copy(sim.world.data)
-    model = sim.world.model
-    start = time.perf_counter()
-    for _ in range(steps):
+    """Wall seconds of `steps` bare mj_step calls through the states the loop itself goes through.
+
+    The loop runs the next `steps` steps first (untimed), noting the motors' controls before each;
+    then mj_step alone replays them from a copy of the starting state, setting the controls where
+    they changed, and must end in the very state the loop reached. (Stepping a copy with the
+    controls left as they were is no baseline: the robots drive off their squares into the walls
+    and each other, and pushing against a wall costs MuJoCo a third more.) The replay's own
+    bookkeeping, timed with a step that does nothing, is taken off."""
+    model, data = sim.world.model, sim.world.data
+    start = copy.copy(data)
+    changes = []  # (step index, the controls from then on)
+    recorded = 0
+
+    def recording_step():
+        nonlocal recorded
+        controls = data.ctrl.tolist()
+        if not changes or controls != changes[-1][1]:
+            changes.append((recorded, controls))
+        recorded += 1
         mujoco.mj_step(model, data)
-    return time.perf_counter() - start
+
+    sim.world.step = recording_step  # in place of the world's own step, for this run only
+    try:
+        sim.run(until=(sim.time_us + steps * sim.step_us) / 1e6)
+    finally:
+        del sim.world.step
+    if recorded != steps:
+        raise RuntimeError(f"the loop took {recorded} steps, not {steps}")
+
+    def replay(step) -> tuple[float, mujoco.MjData]:
+        state = copy.copy(start)
+        ctrl = state.ctrl
+        pending = iter(changes)
+        at, controls = next(pending)
+        begin = time.perf_counter()
+        for index in range(steps):
+            if index == at:
+                ctrl[:] = controls
+                at, controls = next(pending, (-1, None))
+            step(model, state)
+        return time.perf_counter() - begin, state
+
+    bare, state = replay(mujoco.mj_step)
+    if not (state.qpos == data.qpos).all():
+        raise RuntimeError("replaying the controls did not go through the loop's states")
+    bookkeeping, _ = replay(lambda model, state: None)
+    return bare - bookkeeping
 
 
 def hook_costs(sim: Simulation, steps: int) -> dict[str, float]:
