@@ -25,10 +25,12 @@ STALL_WINDOW = 0.1  # s over which a wheel's progress is judged
 STALL_FRACTION = 0.25  # a wheel turning less than this share of its set speed is stalled
 STALL_MIN_TICKS = 4  # a window in which a wheel should turn fewer ticks says nothing
 STALL_END_WINDOWS = 3  # a manoeuvre stalled for this many windows in a row ends (VWWait returns)
-# Far from its end a manoeuvre cruises at its top speed and only the heading correction changes:
-# it is re-planned at the controller's rate (RoBIOS's VW timer: 100 Hz), not at every physics
-# step; within reach of its end it is planned at every step, so it stops as precisely as before.
-PLAN_PERIOD = 0.01  # s between plans while cruising
+# The controller's rate (RoBIOS's VW timer: 100 Hz). Far from its end a manoeuvre cruises at its
+# top speed and only the heading correction changes: it is re-planned at this rate, not at every
+# physics step; within reach of its end it is planned at every step, so it stops precisely. The
+# odometry and the stall watch are kept at this rate too (the odometry reads up to the last step
+# whenever it is asked for).
+PLAN_PERIOD = 0.01  # s
 
 
 class DriveLimitError(ValueError):
@@ -88,10 +90,12 @@ class VwController(Component):
         self._owed: tuple[str, float] | None = None  # ("turn" | "straight", what the last one left over)
         self.engaged = False  # the wheels' speeds still need setting every step (ramp, manoeuvre)
         self.driving = False  # the controller has the wheels turning: watch for stalls
-        self.odometry = [0.0, 0.0, 0.0]  # x, y (m), phi (rad) since start or VWSetPosition
-        self._reading: tuple | None = None  # the drive's odometer after the last step
+        self._odometry = [0.0, 0.0, 0.0]  # x, y (m), phi (rad) since start or VWSetPosition, at _reading
+        self._reading: tuple | None = None  # the drive's odometer when the books were last kept
+        self._unkept = 0  # steps since then
+        self._period_steps = 1  # steps between keeping the books (PLAN_PERIOD; known at the first step)
         self.stalled = 0  # bit 0 left, bit 1 right
-        self._window_time = 0.0  # s into the current stall window
+        self._window_steps = 0  # steps into the current stall window
         self._window_start: tuple | None = None  # ticks, wheel speed set points, wheel ground positions
         self._stalled_windows = 0  # in a row, during a manoeuvre
         self._cruise_steps = 0  # steps the current plan still holds for (cruising far from the end)
@@ -99,10 +103,8 @@ class VwController(Component):
 
     # -- geometry ----------------------------------------------------------------------------
     def _progress(self) -> tuple[float, float]:
-        """Distance (m) and rotation (rad) since the manoeuvre started, from the encoders (as read
-        after the last step: the wheels have not moved since)."""
-        reading = self._reading if self._reading is not None else self.drive.odometer()
-        distance, _, rotation = self.drive.motion(self.manoeuvre.start, reading)
+        """Distance (m) and rotation (rad) since the manoeuvre started, from the encoders."""
+        distance, _, rotation = self.drive.motion(self.manoeuvre.start, self.drive.odometer())
         return distance, rotation
 
     def _refuse_spot_turn(self) -> None:
@@ -209,8 +211,19 @@ class VwController(Component):
         """Speeds from the wheels' rotation: m/s and rad/s."""
         return self.drive.measured_speed()
 
+    @property
+    def odometry(self) -> list[float]:
+        """x, y (m), phi (rad) since start or VWSetPosition, up to the last step: as kept at the
+        controller's rate, with what the wheels did since added (not kept: asking changes nothing)."""
+        reading, last = self.drive.odometer(), self._reading
+        if last is None or reading == last:
+            return list(self._odometry)
+        return _moved(self._odometry, *self.drive.motion(last, reading))
+
     def set_odometry(self, x: float, y: float, phi: float) -> None:
-        self.odometry = [x, y, phi]
+        self._odometry = [x, y, phi]
+        if self._reading is not None:  # counted from here (before the first step: from there)
+            self._reading = self.drive.odometer()
 
     # -- control loop ------------------------------------------------------------------------
     # These run for every driving robot at every step: locals instead of repeated attribute
@@ -266,29 +279,28 @@ class VwController(Component):
             self.w = self.v * m.curvature - HEADING_GAIN * heading_error
 
     def after_step(self, dt: float) -> None:
+        # The books (odometry, stall watch) are kept at the controller's rate, not every step.
+        unkept = self._unkept + 1
+        if unkept < self._period_steps:
+            self._unkept = unkept
+            return
+        self._unkept = 0
+        self._period_steps = max(round(PLAN_PERIOD / dt), 1)
         reading, last = self.drive.odometer(), self._reading
         if reading != last:
             self._reading = reading
             if last is not None:
-                self._integrate(*self.drive.motion(last, reading))
+                self._odometry = _moved(self._odometry, *self.drive.motion(last, reading))
         if self.driving:
-            self._window_time += dt
-            if self._window_start is None or self._window_time >= STALL_WINDOW:
-                self._watch_stall()
+            self._window_steps += unkept
+            if self._window_start is None or self._window_steps >= round(STALL_WINDOW / dt):
+                self._watch_stall(dt)
         elif (self.stalled and not self.stuck) or self._window_start is not None:
             self.stalled = self.stalled if self.stuck else 0
             self._window_start = None
             self._stalled_windows = 0
 
-    def _integrate(self, dx: float, dy: float, rotation: float) -> None:
-        """Odometry: the robot moved dx ahead, dy to the left (m) and turned by `rotation` since the
-        last step; the move is taken along the step's mean heading."""
-        x, y, phi = self.odometry
-        mid = phi + rotation / 2
-        cos, sin = math.cos(mid), math.sin(mid)
-        self.odometry = [x + dx * cos - dy * sin, y + dx * sin + dy * cos, phi + rotation]
-
-    def _watch_stall(self) -> None:
+    def _watch_stall(self, dt: float) -> None:
         """At the end of each short window, compares each wheel's progress with what its speed set
         point asked for (the smaller of the set points at the window's start and end, so that
         speeding up or slowing down is never taken for a stall). Progress is both what its encoder
@@ -301,18 +313,19 @@ class VwController(Component):
         ground = self.drive.wheel_ground_positions()
         start = self._window_start
         if start is not None:
+            window_time = self._window_steps * dt
             stalled = 0
             start_ticks, start_targets, start_ground = start
             for index, (bit, motor, wheel, roll) in enumerate(watched):
                 target, earlier = targets[index], start_targets[index]
                 speed = min(abs(target), abs(earlier)) if target * earlier > 0 else 0.0
-                expected = speed * self._window_time * motor.ticks_per_radian
+                expected = speed * window_time * motor.ticks_per_radian
                 if expected < STALL_MIN_TICKS:
                     continue
                 x, y, forward_x, forward_y = ground[wheel]
                 x0, y0 = start_ground[wheel][:2]
                 over_floor = ((x - x0) * forward_x + (y - y0) * forward_y) * math.copysign(1.0, target)
-                expected_m = speed * self._window_time * roll
+                expected_m = speed * window_time * roll
                 if abs(ticks[index] - start_ticks[index]) < STALL_FRACTION * expected \
                         or over_floor < STALL_FRACTION * expected_m:
                     stalled |= bit
@@ -322,7 +335,16 @@ class VwController(Component):
                 self._finish()
                 self.stuck = True
         self._window_start = (ticks, targets, ground)
-        self._window_time = 0.0
+        self._window_steps = 0
+
+
+def _moved(odometry: list[float], dx: float, dy: float, rotation: float) -> list[float]:
+    """The odometry after the robot moved dx ahead, dy to the left (m) and turned by `rotation`
+    (what the encoders counted since it was kept); the move is taken along the mean heading."""
+    x, y, phi = odometry
+    mid = phi + rotation / 2
+    cos, sin = math.cos(mid), math.sin(mid)
+    return [x + dx * cos - dy * sin, y + dx * sin + dy * cos, phi + rotation]
 
 
 def _ramp(current: float, target: float, step: float) -> float:
