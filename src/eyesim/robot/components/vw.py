@@ -25,12 +25,14 @@ STALL_WINDOW = 0.1  # s over which a wheel's progress is judged
 STALL_FRACTION = 0.25  # a wheel turning less than this share of its set speed is stalled
 STALL_MIN_TICKS = 4  # a window in which a wheel should turn fewer ticks says nothing
 STALL_END_WINDOWS = 3  # a manoeuvre stalled for this many windows in a row ends (VWWait returns)
-# The controller's rate (RoBIOS's VW timer: 100 Hz). Far from its end a manoeuvre cruises at its
-# top speed and only the heading correction changes: it is re-planned at this rate, not at every
-# physics step; within reach of its end it is planned at every step, so it stops precisely. The
-# odometry and the stall watch are kept at this rate too (the odometry reads up to the last step
-# whenever it is asked for).
+# The controller's rate (RoBIOS's VW timer: 100 Hz). A manoeuvre is re-planned at this rate, not
+# at every physics step, while it cruises at its top speed far from its end (only the heading
+# correction changes) and while it brakes with a period's travel a small share of what is left
+# before the crawl; within reach of its end it is planned at every step, so it stops precisely.
+# The odometry and the stall watch are kept at this rate too (the odometry reads up to the last
+# step whenever it is asked for).
 PLAN_PERIOD = 0.01  # s
+HOLD_SHARE = 0.1  # braking, a plan holds for a period if that covers at most this share of the way to the crawl
 
 
 class DriveLimitError(ValueError):
@@ -263,9 +265,13 @@ class VwController(Component):
             return
         # As fast as allowed, but slow enough to brake in what remains, never slower than a crawl.
         speed = max(min(m.top_speed, math.sqrt(m.braking * max(0.0, remaining - m.crawl))), m.floor)
-        braking = speed < m.top_speed
         if remaining > m.cruise_beyond:
             self._cruise_steps = max(round(PLAN_PERIOD / dt) - 1, 0)
+        elif speed * PLAN_PERIOD <= HOLD_SHARE * (remaining - m.crawl):
+            # Held for a period: the speed for its middle, so that the steps straddle the braking curve.
+            speed = min(m.top_speed, math.sqrt(m.braking * (remaining - m.crawl - speed * PLAN_PERIOD / 2)))
+            self._cruise_steps = max(round(PLAN_PERIOD / dt) - 1, 0)
+        braking = speed < m.top_speed
         if m.on_the_spot:
             self.target_v, self.target_w = 0.0, m.sign * speed
             if braking:  # braking must not wait for the ramp: the approach follows the plan directly
