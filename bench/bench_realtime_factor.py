@@ -59,13 +59,17 @@ class SquareDriver:
         self.legs = [0] * len(self.controllers)
 
     def __call__(self, sim: Simulation) -> None:
-        for index, vw in enumerate(self.controllers):
-            if vw.done:
+        # It stands in for the robots' programs, whose commands cost the simulator nothing between
+        # them: it only looks (the `manoeuvre` attribute: the `done` property would cost more).
+        index = 0
+        for vw in self.controllers:
+            if vw.manoeuvre is None:
                 if self.legs[index] % 2 == 0:
                     vw.straight(SIDE, 0.3)
                 else:
                     vw.turn(math.pi / 2, math.radians(120))
                 self.legs[index] += 1
+            index += 1
 
 
 def run_for_wall_time(sim: Simulation, wall_seconds: float) -> tuple[float, int, float]:

@@ -33,7 +33,7 @@ class Clock:
 
     @property
     def as_fast_as_possible(self) -> bool:
-        return self.deterministic or self.speed == MAX_SPEED
+        return self.mode == DETERMINISTIC or self.speed == MAX_SPEED  # every loop round asks: one call
 
     def anchor(self, sim_time_us: int) -> None:
         """Restart wall-clock pacing from the current simulation time (after pause/speed change)."""

@@ -166,13 +166,12 @@ class Simulation:
         until_us = None if until is None else round(until * 1e6)
         self.clock.anchor(self.time_us)
         self._running = True
+        one_round = self._deterministic_round if self.clock.deterministic else self._realtime_round
         try:
             while not self._stopping and (until_us is None or self.time_us < until_us):
-                if self.clock.deterministic:
-                    self._deterministic_round()
-                else:
-                    self._realtime_round()
-                self._publish()
+                one_round()
+                if self.events.listeners:
+                    self._publish()
         finally:
             self._running = False
             self._drain_inbox()  # actions queued while the loop was ending, e.g. a listener to remove
@@ -193,9 +192,11 @@ class Simulation:
                 self._wait(0)
             else:  # no program connected: only a new connection could come, and it can wait a little
                 self._drain_inbox()
-            self._serve(rounds=1)
+            if self._ready:
+                self._serve(rounds=1)
             self.step()
-            self._release_held()
+            if self._held:
+                self._release_held()
             return
         self._release_held()
         wait = self.clock.seconds_until(self.time_us + self.step_us)
@@ -329,7 +330,8 @@ class Simulation:
         self.steps += 1
         for after_step in self._after_step:
             after_step(dt)
-        self._wake_pending()
+        if self.sessions:
+            self._wake_pending()
         for observer in self.step_observers:
             observer(self)
 

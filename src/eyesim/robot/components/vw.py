@@ -233,14 +233,13 @@ class VwController(Component):
     def before_step(self, dt: float) -> None:
         if not self.engaged:
             return
-        v, w, target_v, target_w = self.v, self.w, self.target_v, self.target_w
         if self._cruise_steps > 0:
             self._cruise_steps -= 1
-            if v == target_v and w == target_w:
+            if self.v == self.target_v and self.w == self.target_w:
                 return  # the wheels hold the speeds set last step, and the plan still holds
         elif self.manoeuvre is not None:
             self._plan(dt)
-            v, w, target_v, target_w = self.v, self.w, self.target_v, self.target_w
+        v, w, target_v, target_w = self.v, self.w, self.target_v, self.target_w
         v = _ramp(v, target_v, LINEAR_ACCEL * dt)
         if self.steered:  # the arc's curvature holds while the speed ramps
             w = target_w if v == target_v else v * target_w / target_v if target_v else 0.0
@@ -255,7 +254,8 @@ class VwController(Component):
 
     def _plan(self, dt: float) -> None:
         m = self.manoeuvre
-        distance, rotation = self._progress()
+        drive = self.drive
+        distance, _, rotation = drive.motion(m.start, drive.odometer())  # what _progress() says, one call less
         remaining = m.length - m.sign * (rotation if m.on_the_spot else distance)
         if remaining <= m.tolerance:
             if m.on_the_spot or m.rotation == 0:
