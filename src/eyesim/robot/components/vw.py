@@ -101,6 +101,8 @@ class VwController(Component):
         self._window_start: tuple | None = None  # ticks, wheel speed set points, wheel ground positions
         self._stalled_windows = 0  # in a row, during a manoeuvre
         self._cruise_steps = 0  # steps the current plan still holds for (cruising far from the end)
+        self._planned_at: tuple | None = None  # the odometer reading the last plan was made at
+        self._held_steps = 0  # what the last plan set _cruise_steps to
         self.stuck = False  # the last manoeuvre ended stalled: VWStalled keeps saying so until the next command
 
     # -- geometry ----------------------------------------------------------------------------
@@ -174,6 +176,7 @@ class VwController(Component):
         self._stalled_windows = 0
         self._window_start = None
         self._cruise_steps = 0
+        self._planned_at = None
 
     def _start(self, distance: float, rotation: float, speed: float) -> None:
         self._new_command()
@@ -238,7 +241,13 @@ class VwController(Component):
             if self.v == self.target_v and self.w == self.target_w:
                 return  # the wheels hold the speeds set last step, and the plan still holds
         elif self.manoeuvre is not None:
-            self._plan(dt)
+            reading = self.drive.odometer()
+            if reading == self._planned_at and self.v == self.target_v and self.w == self.target_w:
+                # The encoders have not moved since the last plan (crawling, they count a tick every
+                # few dozen steps): planning again would come out the same, and the wheels hold its speeds.
+                self._cruise_steps = self._held_steps
+                return
+            self._plan(dt, reading)
         v, w, target_v, target_w = self.v, self.w, self.target_v, self.target_w
         v = _ramp(v, target_v, LINEAR_ACCEL * dt)
         if self.steered:  # the arc's curvature holds while the speed ramps
@@ -252,10 +261,11 @@ class VwController(Component):
             self.engaged = False
             self.driving = v != 0.0 or w != 0.0
 
-    def _plan(self, dt: float) -> None:
+    def _plan(self, dt: float, reading: tuple) -> None:
         m = self.manoeuvre
-        drive = self.drive
-        distance, _, rotation = drive.motion(m.start, drive.odometer())  # what _progress() says, one call less
+        distance, _, rotation = self.drive.motion(m.start, reading)
+        self._planned_at = reading
+        self._held_steps = 0
         remaining = m.length - m.sign * (rotation if m.on_the_spot else distance)
         if remaining <= m.tolerance:
             if m.on_the_spot or m.rotation == 0:
@@ -266,11 +276,11 @@ class VwController(Component):
         # As fast as allowed, but slow enough to brake in what remains, never slower than a crawl.
         speed = max(min(m.top_speed, math.sqrt(m.braking * max(0.0, remaining - m.crawl))), m.floor)
         if remaining > m.cruise_beyond:
-            self._cruise_steps = max(round(PLAN_PERIOD / dt) - 1, 0)
+            self._cruise_steps = self._held_steps = max(round(PLAN_PERIOD / dt) - 1, 0)
         elif speed * PLAN_PERIOD <= HOLD_SHARE * (remaining - m.crawl):
             # Held for a period: the speed for its middle, so that the steps straddle the braking curve.
             speed = min(m.top_speed, math.sqrt(m.braking * (remaining - m.crawl - speed * PLAN_PERIOD / 2)))
-            self._cruise_steps = max(round(PLAN_PERIOD / dt) - 1, 0)
+            self._cruise_steps = self._held_steps = max(round(PLAN_PERIOD / dt) - 1, 0)
         braking = speed < m.top_speed
         if m.on_the_spot:
             self.target_v, self.target_w = 0.0, m.sign * speed
