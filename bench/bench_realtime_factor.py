@@ -156,7 +156,7 @@ def bare_steps(sim: Simulation, steps: int) -> float:
 
 
 def hook_costs(sim: Simulation, steps: int) -> dict[str, float]:
-    """Microseconds per robot per step of each component kind's step hooks, timed where they run
+    """Microseconds per robot per step of each component kind's step hooks and ticks, timed where they run
     (in the loop, the robots driving: called on their own, a VW controller would stop at once),
     less the cost of timing a hook that does nothing."""
     spent = defaultdict(float)
@@ -173,18 +173,21 @@ def hook_costs(sim: Simulation, steps: int) -> dict[str, float]:
     for _ in range(10000):
         idle(0.002)
     timing = spent.pop("idle") / 10000
-    before, after = sim._before_step, sim._after_step
+    before, after, ticks = sim._before_step, sim._after_step, sim._tick
     sim._before_step = [timed(type(h.__self__).__name__, h) for h in before]
     sim._after_step = [timed(type(h.__self__).__name__, h) for h in after]
-    calls = defaultdict(int)
+    sim._tick = [timed(type(h.__self__).__name__, h) for h in ticks]
+    calls = defaultdict(float)  # per step
     for hook in before + after:
         calls[type(hook.__self__).__name__] += 1
+    for hook in ticks:
+        calls[type(hook.__self__).__name__] += 1 / sim._tick_steps
     try:
         start = sim.steps
         sim.run(until=sim.time + steps * sim.step_us / 1e6)
         done = sim.steps - start
     finally:
-        sim._before_step, sim._after_step = before, after
+        sim._before_step, sim._after_step, sim._tick = before, after, ticks
     return {kind: max(0.0, (total / done - timing * calls[kind]) / len(sim.robots) * 1e6)
             for kind, total in sorted(spent.items())}
 

@@ -29,8 +29,8 @@ STALL_END_WINDOWS = 3  # a manoeuvre stalled for this many windows in a row ends
 # at every physics step, while it cruises at its top speed far from its end (only the heading
 # correction changes) and while it brakes with a period's travel a small share of what is left
 # before the crawl; within reach of its end it is planned at every step, so it stops precisely.
-# The odometry and the stall watch are kept at this rate too (the odometry reads up to the last
-# step whenever it is asked for).
+# The odometry and the stall watch are kept at the components' tick (Component.tick: the same
+# 100 Hz); the odometry reads up to the last step whenever it is asked for.
 PLAN_PERIOD = 0.01  # s
 HOLD_SHARE = 0.1  # braking, a plan holds for a period if that covers at most this share of the way to the crawl
 
@@ -93,11 +93,11 @@ class VwController(Component):
         self.engaged = False  # the wheels' speeds still need setting every step (ramp, manoeuvre)
         self.driving = False  # the controller has the wheels turning: watch for stalls
         self._odometry = [0.0, 0.0, 0.0]  # x, y (m), phi (rad) since start or VWSetPosition, at _reading
-        self._reading: tuple | None = None  # the drive's odometer when the books were last kept
-        self._unkept = 0  # steps since then
-        self._period_steps = 1  # steps between keeping the books (PLAN_PERIOD; known at the first step)
+        # The drive's odometer when the books were last kept (before the model is bound there is
+        # nothing to read yet: the engine resets every component again once it is).
+        self._reading: tuple | None = self.drive.odometer() if hasattr(self, "world") else None
         self.stalled = 0  # bit 0 left, bit 1 right
-        self._window_steps = 0  # steps into the current stall window
+        self._window_ticks = 0  # ticks into the current stall window
         self._window_start: tuple | None = None  # ticks, wheel speed set points, wheel ground positions
         self._stalled_windows = 0  # in a row, during a manoeuvre
         self._cruise_steps = 0  # steps the current plan still holds for (cruising far from the end)
@@ -294,22 +294,16 @@ class VwController(Component):
             self.v = m.sign * min(abs(self.v), speed)
             self.w = self.v * m.curvature - HEADING_GAIN * heading_error
 
-    def after_step(self, dt: float) -> None:
-        # The books (odometry, stall watch) are kept at the controller's rate, not every step.
-        unkept = self._unkept + 1
-        if unkept < self._period_steps:
-            self._unkept = unkept
-            return
-        self._unkept = 0
-        self._period_steps = max(round(PLAN_PERIOD / dt), 1)
+    def tick(self, dt: float) -> None:
+        """The books (odometry, stall watch), kept at the components' tick, not every step."""
         reading, last = self.drive.odometer(), self._reading
         if reading != last:
             self._reading = reading
             if last is not None:
                 self._odometry = _moved(self._odometry, *self.drive.motion(last, reading))
         if self.driving:
-            self._window_steps += unkept
-            if self._window_start is None or self._window_steps >= round(STALL_WINDOW / dt):
+            self._window_ticks += 1
+            if self._window_start is None or self._window_ticks >= round(STALL_WINDOW / dt):
                 self._watch_stall(dt)
         elif (self.stalled and not self.stuck) or self._window_start is not None:
             self.stalled = self.stalled if self.stuck else 0
@@ -329,7 +323,7 @@ class VwController(Component):
         ground = self.drive.wheel_ground_positions()
         start = self._window_start
         if start is not None:
-            window_time = self._window_steps * dt
+            window_time = self._window_ticks * dt
             stalled = 0
             start_ticks, start_targets, start_ground = start
             for index, (bit, motor, wheel, roll) in enumerate(watched):
@@ -351,7 +345,7 @@ class VwController(Component):
                 self._finish()
                 self.stuck = True
         self._window_start = (ticks, targets, ground)
-        self._window_steps = 0
+        self._window_ticks = 0
 
 
 def _moved(odometry: list[float], dx: float, dy: float, rotation: float) -> list[float]:
