@@ -32,7 +32,7 @@ STALL_END_WINDOWS = 3  # a manoeuvre stalled for this many windows in a row ends
 # The odometry and the stall watch are kept at the components' tick (Component.tick: the same
 # 100 Hz); the odometry reads up to the last step whenever it is asked for.
 PLAN_PERIOD = 0.01  # s
-HOLD_SHARE = 0.1  # braking, a plan holds for a period if that covers at most this share of the way to the crawl
+HOLD_SHARE = 0.25  # braking, a plan holds for a period if that covers at most this share of the way to the crawl
 
 
 class DriveLimitError(ValueError):
@@ -277,7 +277,7 @@ class VwController(Component):
         speed = max(min(m.top_speed, math.sqrt(m.braking * max(0.0, remaining - m.crawl))), m.floor)
         if remaining > m.cruise_beyond:
             self._cruise_steps = self._held_steps = max(round(PLAN_PERIOD / dt) - 1, 0)
-        elif speed * PLAN_PERIOD <= HOLD_SHARE * (remaining - m.crawl):
+        elif speed < m.top_speed and speed * PLAN_PERIOD <= HOLD_SHARE * (remaining - m.crawl):
             # Held for a period: the speed for its middle, so that the steps straddle the braking curve.
             speed = min(m.top_speed, math.sqrt(m.braking * (remaining - m.crawl - speed * PLAN_PERIOD / 2)))
             self._cruise_steps = self._held_steps = max(round(PLAN_PERIOD / dt) - 1, 0)
