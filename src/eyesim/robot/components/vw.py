@@ -279,7 +279,7 @@ class VwController(Component):
             self._cruise_steps = self._held_steps = max(round(PLAN_PERIOD / dt) - 1, 0)
         elif speed < m.top_speed and speed * PLAN_PERIOD <= HOLD_SHARE * (remaining - m.crawl):
             # Held for a period: the speed for its middle, so that the steps straddle the braking curve.
-            speed = min(m.top_speed, math.sqrt(m.braking * (remaining - m.crawl - speed * PLAN_PERIOD / 2)))
+            speed = math.sqrt(m.braking * (remaining - m.crawl - speed * PLAN_PERIOD / 2))
             self._cruise_steps = self._held_steps = max(round(PLAN_PERIOD / dt) - 1, 0)
         braking = speed < m.top_speed
         if m.on_the_spot:
