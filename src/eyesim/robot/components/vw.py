@@ -100,7 +100,7 @@ class VwController(Component):
         self._window_ticks = 0  # ticks into the current stall window
         self._window_start: tuple | None = None  # ticks, wheel speed set points, wheel ground positions
         self._stalled_windows = 0  # in a row, during a manoeuvre
-        self._cruise_steps = 0  # steps the current plan still holds for (cruising far from the end)
+        self._cruise_steps = 0  # steps the current plan still holds for (cruising, or braking far from the end)
         self._planned_at: tuple | None = None  # the odometer reading the last plan was made at
         self._held_steps = 0  # what the last plan set _cruise_steps to
         self.stuck = False  # the last manoeuvre ended stalled: VWStalled keeps saying so until the next command
