@@ -23,6 +23,8 @@ class Clock:
             raise ValueError("speed must be positive")
         self.mode = mode
         self.speed = speed
+        # Asked by every round of the simulation loop: an attribute, kept with the speed.
+        self.as_fast_as_possible = mode == DETERMINISTIC or speed == MAX_SPEED
         self.paused = paused
         self._anchor_wall = time.perf_counter()
         self._anchor_sim_us = 0
@@ -30,10 +32,6 @@ class Clock:
     @property
     def deterministic(self) -> bool:
         return self.mode == DETERMINISTIC
-
-    @property
-    def as_fast_as_possible(self) -> bool:
-        return self.deterministic or self.speed == MAX_SPEED
 
     def anchor(self, sim_time_us: int) -> None:
         """Restart wall-clock pacing from the current simulation time (after pause/speed change)."""
@@ -44,6 +42,7 @@ class Clock:
         if not speed > 0:
             raise ValueError("speed must be positive")
         self.speed = speed
+        self.as_fast_as_possible = self.deterministic or speed == MAX_SPEED
         self.anchor(sim_time_us)
 
     def set_paused(self, paused: bool, sim_time_us: int) -> None:

@@ -39,6 +39,7 @@ from eyesim.world.builder import build_world
 log = logging.getLogger("eyesim")
 
 DEFAULT_STEP_US = 2000  # physics step: 2 ms
+TICK_US = 10000  # components' periodic work (Component.tick) runs every 10 ms, RoBIOS's timer rate
 SNAPSHOT_PERIOD = 1 / 30  # wall seconds between published snapshots
 MAX_CATCH_UP_STEPS = 50  # realtime: steps taken in one go before looking at the queue again
 IDLE_WAIT = 0.05  # s the loop sleeps when nothing can happen (paused, waiting for programs)
@@ -90,6 +91,8 @@ class Simulation:
         components = [c for robot in self.robots for c in robot.components]
         self._before_step = [c.before_step for c in components if type(c).before_step is not Component.before_step]
         self._after_step = [c.after_step for c in components if type(c).after_step is not Component.after_step]
+        self._tick = [c.tick for c in components if type(c).tick is not Component.tick]
+        self._tick_steps = max(1, round(TICK_US / self.step_us))
         self._publishers = [(robot.id, c) for robot in self.robots for c in robot.components
                             if type(c).publish is not Component.publish]
         for robot in self.robots:
@@ -166,13 +169,12 @@ class Simulation:
         until_us = None if until is None else round(until * 1e6)
         self.clock.anchor(self.time_us)
         self._running = True
+        one_round = self._deterministic_round if self.clock.deterministic else self._realtime_round
         try:
             while not self._stopping and (until_us is None or self.time_us < until_us):
-                if self.clock.deterministic:
-                    self._deterministic_round()
-                else:
-                    self._realtime_round()
-                self._publish()
+                one_round()
+                if self.events.listeners:
+                    self._publish()
         finally:
             self._running = False
             self._drain_inbox()  # actions queued while the loop was ending, e.g. a listener to remove
@@ -191,11 +193,13 @@ class Simulation:
         if self.clock.as_fast_as_possible:  # one step per round, each program served once in between
             if self.sessions or self.steps % IDLE_POLL_STEPS == 0:
                 self._wait(0)
-            else:  # no program connected: only a new connection could come, and it can wait a little
+            elif not self.inbox.empty():  # no program connected: a new connection can wait a little
                 self._drain_inbox()
-            self._serve(rounds=1)
+            if self._ready:
+                self._serve(rounds=1)
             self.step()
-            self._release_held()
+            if self._held:
+                self._release_held()
             return
         self._release_held()
         wait = self.clock.seconds_until(self.time_us + self.step_us)
@@ -338,7 +342,12 @@ class Simulation:
         self.steps += 1
         for after_step in self._after_step:
             after_step(dt)
-        self._wake_pending()
+        if self.steps % self._tick_steps == 0:
+            tick_dt = self._tick_steps * self.step_us / 1e6
+            for tick in self._tick:
+                tick(tick_dt)
+        if self.sessions:
+            self._wake_pending()
         for observer in self.step_observers:
             observer(self)
 

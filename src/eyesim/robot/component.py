@@ -14,8 +14,9 @@ class Component:
 
     Life cycle: created while the MuJoCo model is built (adding their bodies/actuators to the
     spec), `bind` once the model is compiled, `reset` to their initial state, then
-    `before_step`/`after_step` around every physics step, and `publish` at each publish tick
-    while someone shows LCD and camera images."""
+    `before_step`/`after_step` around every physics step, `tick` after every step that ends a
+    tick (10 ms of simulation time), and `publish` at each publish tick while someone shows LCD
+    and camera images."""
 
     def bind(self, world: PhysicsWorld) -> None:
         self.world = world
@@ -28,6 +29,10 @@ class Component:
 
     def after_step(self, dt: float) -> None:
         pass
+
+    def tick(self, dt: float) -> None:
+        """Periodic work at 100 Hz (RoBIOS's timer rate: odometry, battery), so that it does not
+        cost a call at every physics step; `dt` is the tick's length."""
 
     def publish(self, robot_id: int, events, again: bool) -> None:
         """Emit what changed since the last tick on `events` (eyesim.core.events); `again`: also what

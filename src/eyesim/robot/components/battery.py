@@ -10,7 +10,6 @@ FULL_VOLTS, EMPTY_VOLTS = 8.4, 6.8  # a 2-cell lithium battery, charged and flat
 CAPACITY_J = 2.2 * 7.4 * 3600  # 2.2 Ah at 7.4 V nominal
 CONTROLLER_WATTS = 4.0  # the computer and its LCD: a full battery lasts about 4 hours idle
 MOTOR_EFFICIENCY = 0.6  # electrical power = mechanical power / efficiency
-SAMPLE_STEPS = 5  # motor power is sampled every 5 physics steps (10 ms): the voltage changes slowly
 
 
 class Battery(Component):
@@ -20,7 +19,6 @@ class Battery(Component):
     def __init__(self, context):
         self.prefix = context.prefix + "/"
         self.energy_j = CAPACITY_J
-        self.steps = 0
 
     def bind(self, world) -> None:
         super().bind(world)
@@ -32,20 +30,15 @@ class Battery(Component):
 
     def reset(self) -> None:
         self.energy_j = CAPACITY_J
-        self.steps = 0
 
-    def after_step(self, dt: float) -> None:
-        # Sampled, with plain floats: this runs for every robot at every step, and numpy
-        # temporaries for two actuators would cost more than the physics of the robot.
-        self.steps += 1
-        if self.steps < SAMPLE_STEPS:
-            return
-        self.steps = 0
+    def tick(self, dt: float) -> None:
+        # Motor power sampled at the components' tick (100 Hz: the voltage changes slowly), with
+        # plain floats: numpy temporaries for two actuators would cost more than the robot's physics.
         force, velocity = self._force, self._velocity
         motors = 0.0
         for i in self.actuators:
             motors += abs(force.item(i) * velocity.item(i))
-        used = (CONTROLLER_WATTS + motors / MOTOR_EFFICIENCY) * dt * SAMPLE_STEPS
+        used = (CONTROLLER_WATTS + motors / MOTOR_EFFICIENCY) * dt
         self.energy_j = max(0.0, self.energy_j - used)
 
     @property

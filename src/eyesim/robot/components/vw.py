@@ -25,10 +25,14 @@ STALL_WINDOW = 0.1  # s over which a wheel's progress is judged
 STALL_FRACTION = 0.25  # a wheel turning less than this share of its set speed is stalled
 STALL_MIN_TICKS = 4  # a window in which a wheel should turn fewer ticks says nothing
 STALL_END_WINDOWS = 3  # a manoeuvre stalled for this many windows in a row ends (VWWait returns)
-# Far from its end a manoeuvre cruises at its top speed and only the heading correction changes:
-# it is re-planned at the controller's rate (RoBIOS's VW timer: 100 Hz), not at every physics
-# step; within reach of its end it is planned at every step, so it stops as precisely as before.
-PLAN_PERIOD = 0.01  # s between plans while cruising
+# The controller's rate (RoBIOS's VW timer: 100 Hz). A manoeuvre is re-planned at this rate, not
+# at every physics step, while it cruises at its top speed far from its end (only the heading
+# correction changes) and while it brakes with a period's travel a small share of what is left
+# before the crawl; within reach of its end it is planned at every step, so it stops precisely.
+# The odometry and the stall watch are kept at the components' tick (Component.tick: the same
+# 100 Hz); the odometry reads up to the last step whenever it is asked for.
+PLAN_PERIOD = 0.01  # s
+HOLD_SHARE = 0.25  # braking, a plan holds for a period if that covers at most this share of the way to the crawl
 
 
 class DriveLimitError(ValueError):
@@ -88,21 +92,23 @@ class VwController(Component):
         self._owed: tuple[str, float] | None = None  # ("turn" | "straight", what the last one left over)
         self.engaged = False  # the wheels' speeds still need setting every step (ramp, manoeuvre)
         self.driving = False  # the controller has the wheels turning: watch for stalls
-        self.odometry = [0.0, 0.0, 0.0]  # x, y (m), phi (rad) since start or VWSetPosition
-        self._reading: tuple | None = None  # the drive's odometer after the last step
+        self._odometry = [0.0, 0.0, 0.0]  # x, y (m), phi (rad) since start or VWSetPosition, at _reading
+        # The drive's odometer when the books were last kept (before the model is bound there is
+        # nothing to read yet: the engine resets every component again once it is).
+        self._reading: tuple | None = self.drive.odometer() if hasattr(self, "world") else None
         self.stalled = 0  # bit 0 left, bit 1 right
-        self._window_time = 0.0  # s into the current stall window
+        self._window_ticks = 0  # ticks into the current stall window
         self._window_start: tuple | None = None  # ticks, wheel speed set points, wheel ground positions
         self._stalled_windows = 0  # in a row, during a manoeuvre
-        self._cruise_steps = 0  # steps the current plan still holds for (cruising far from the end)
+        self._cruise_steps = 0  # steps the current plan still holds for (cruising, or braking far from the end)
+        self._planned_at: tuple | None = None  # the odometer reading the last plan was made at
+        self._held_steps = 0  # what the last plan set _cruise_steps to
         self.stuck = False  # the last manoeuvre ended stalled: VWStalled keeps saying so until the next command
 
     # -- geometry ----------------------------------------------------------------------------
     def _progress(self) -> tuple[float, float]:
-        """Distance (m) and rotation (rad) since the manoeuvre started, from the encoders (as read
-        after the last step: the wheels have not moved since)."""
-        reading = self._reading if self._reading is not None else self.drive.odometer()
-        distance, _, rotation = self.drive.motion(self.manoeuvre.start, reading)
+        """Distance (m) and rotation (rad) since the manoeuvre started, from the encoders."""
+        distance, _, rotation = self.drive.motion(self.manoeuvre.start, self.drive.odometer())
         return distance, rotation
 
     def _refuse_spot_turn(self) -> None:
@@ -170,6 +176,7 @@ class VwController(Component):
         self._stalled_windows = 0
         self._window_start = None
         self._cruise_steps = 0
+        self._planned_at = None
 
     def _start(self, distance: float, rotation: float, speed: float) -> None:
         self._new_command()
@@ -209,8 +216,19 @@ class VwController(Component):
         """Speeds from the wheels' rotation: m/s and rad/s."""
         return self.drive.measured_speed()
 
+    @property
+    def odometry(self) -> list[float]:
+        """x, y (m), phi (rad) since start or VWSetPosition, up to the last step: as kept at the
+        controller's rate, with what the wheels did since added (not kept: asking changes nothing)."""
+        reading, last = self.drive.odometer(), self._reading
+        if last is None or reading == last:
+            return list(self._odometry)
+        return _moved(self._odometry, *self.drive.motion(last, reading))
+
     def set_odometry(self, x: float, y: float, phi: float) -> None:
-        self.odometry = [x, y, phi]
+        self._odometry = [x, y, phi]
+        if self._reading is not None:  # counted from here (before the first step: from there)
+            self._reading = self.drive.odometer()
 
     # -- control loop ------------------------------------------------------------------------
     # These run for every driving robot at every step: locals instead of repeated attribute
@@ -218,14 +236,19 @@ class VwController(Component):
     def before_step(self, dt: float) -> None:
         if not self.engaged:
             return
-        v, w, target_v, target_w = self.v, self.w, self.target_v, self.target_w
         if self._cruise_steps > 0:
             self._cruise_steps -= 1
-            if v == target_v and w == target_w:
+            if self.v == self.target_v and self.w == self.target_w:
                 return  # the wheels hold the speeds set last step, and the plan still holds
         elif self.manoeuvre is not None:
-            self._plan(dt)
-            v, w, target_v, target_w = self.v, self.w, self.target_v, self.target_w
+            reading = self.drive.odometer()
+            if reading == self._planned_at and self.v == self.target_v and self.w == self.target_w:
+                # The encoders have not moved since the last plan (crawling, they count a tick every
+                # few dozen steps): planning again would come out the same, and the wheels hold its speeds.
+                self._cruise_steps = self._held_steps
+                return
+            self._plan(dt, reading)
+        v, w, target_v, target_w = self.v, self.w, self.target_v, self.target_w
         v = _ramp(v, target_v, LINEAR_ACCEL * dt)
         if self.steered:  # the arc's curvature holds while the speed ramps
             w = target_w if v == target_v else v * target_w / target_v if target_v else 0.0
@@ -238,9 +261,11 @@ class VwController(Component):
             self.engaged = False
             self.driving = v != 0.0 or w != 0.0
 
-    def _plan(self, dt: float) -> None:
+    def _plan(self, dt: float, reading: tuple) -> None:
         m = self.manoeuvre
-        distance, rotation = self._progress()
+        distance, _, rotation = self.drive.motion(m.start, reading)
+        self._planned_at = reading
+        self._held_steps = 0
         remaining = m.length - m.sign * (rotation if m.on_the_spot else distance)
         if remaining <= m.tolerance:
             if m.on_the_spot or m.rotation == 0:
@@ -250,9 +275,13 @@ class VwController(Component):
             return
         # As fast as allowed, but slow enough to brake in what remains, never slower than a crawl.
         speed = max(min(m.top_speed, math.sqrt(m.braking * max(0.0, remaining - m.crawl))), m.floor)
-        braking = speed < m.top_speed
         if remaining > m.cruise_beyond:
-            self._cruise_steps = max(round(PLAN_PERIOD / dt) - 1, 0)
+            self._cruise_steps = self._held_steps = max(round(PLAN_PERIOD / dt) - 1, 0)
+        elif speed < m.top_speed and speed * PLAN_PERIOD <= HOLD_SHARE * (remaining - m.crawl):
+            # Held for a period: the speed for its middle, so that the steps straddle the braking curve.
+            speed = math.sqrt(m.braking * (remaining - m.crawl - speed * PLAN_PERIOD / 2))
+            self._cruise_steps = self._held_steps = max(round(PLAN_PERIOD / dt) - 1, 0)
+        braking = speed < m.top_speed
         if m.on_the_spot:
             self.target_v, self.target_w = 0.0, m.sign * speed
             if braking:  # braking must not wait for the ramp: the approach follows the plan directly
@@ -265,30 +294,23 @@ class VwController(Component):
             self.v = m.sign * min(abs(self.v), speed)
             self.w = self.v * m.curvature - HEADING_GAIN * heading_error
 
-    def after_step(self, dt: float) -> None:
+    def tick(self, dt: float) -> None:
+        """The books (odometry, stall watch), kept at the components' tick, not every step."""
         reading, last = self.drive.odometer(), self._reading
         if reading != last:
             self._reading = reading
             if last is not None:
-                self._integrate(*self.drive.motion(last, reading))
+                self._odometry = _moved(self._odometry, *self.drive.motion(last, reading))
         if self.driving:
-            self._window_time += dt
-            if self._window_start is None or self._window_time >= STALL_WINDOW:
-                self._watch_stall()
+            self._window_ticks += 1
+            if self._window_start is None or self._window_ticks >= round(STALL_WINDOW / dt):
+                self._watch_stall(dt)
         elif (self.stalled and not self.stuck) or self._window_start is not None:
             self.stalled = self.stalled if self.stuck else 0
             self._window_start = None
             self._stalled_windows = 0
 
-    def _integrate(self, dx: float, dy: float, rotation: float) -> None:
-        """Odometry: the robot moved dx ahead, dy to the left (m) and turned by `rotation` since the
-        last step; the move is taken along the step's mean heading."""
-        x, y, phi = self.odometry
-        mid = phi + rotation / 2
-        cos, sin = math.cos(mid), math.sin(mid)
-        self.odometry = [x + dx * cos - dy * sin, y + dx * sin + dy * cos, phi + rotation]
-
-    def _watch_stall(self) -> None:
+    def _watch_stall(self, dt: float) -> None:
         """At the end of each short window, compares each wheel's progress with what its speed set
         point asked for (the smaller of the set points at the window's start and end, so that
         speeding up or slowing down is never taken for a stall). Progress is both what its encoder
@@ -301,18 +323,19 @@ class VwController(Component):
         ground = self.drive.wheel_ground_positions()
         start = self._window_start
         if start is not None:
+            window_time = self._window_ticks * dt
             stalled = 0
             start_ticks, start_targets, start_ground = start
             for index, (bit, motor, wheel, roll) in enumerate(watched):
                 target, earlier = targets[index], start_targets[index]
                 speed = min(abs(target), abs(earlier)) if target * earlier > 0 else 0.0
-                expected = speed * self._window_time * motor.ticks_per_radian
+                expected = speed * window_time * motor.ticks_per_radian
                 if expected < STALL_MIN_TICKS:
                     continue
                 x, y, forward_x, forward_y = ground[wheel]
                 x0, y0 = start_ground[wheel][:2]
                 over_floor = ((x - x0) * forward_x + (y - y0) * forward_y) * math.copysign(1.0, target)
-                expected_m = speed * self._window_time * roll
+                expected_m = speed * window_time * roll
                 if abs(ticks[index] - start_ticks[index]) < STALL_FRACTION * expected \
                         or over_floor < STALL_FRACTION * expected_m:
                     stalled |= bit
@@ -322,7 +345,16 @@ class VwController(Component):
                 self._finish()
                 self.stuck = True
         self._window_start = (ticks, targets, ground)
-        self._window_time = 0.0
+        self._window_ticks = 0
+
+
+def _moved(odometry: list[float], dx: float, dy: float, rotation: float) -> list[float]:
+    """The odometry after the robot moved dx ahead, dy to the left (m) and turned by `rotation`
+    (what the encoders counted since it was kept); the move is taken along the mean heading."""
+    x, y, phi = odometry
+    mid = phi + rotation / 2
+    cos, sin = math.cos(mid), math.sin(mid)
+    return [x + dx * cos - dy * sin, y + dx * sin + dy * cos, phi + rotation]
 
 
 def _ramp(current: float, target: float, step: float) -> float:

@@ -134,6 +134,9 @@ class AckermannDrive(Component, Kinematics):
         ctrl[self.steer_actuators[1]] = right
 
     def before_step(self, dt: float) -> None:
+        # The odometer adds up its turn tick by tick with the steering of the moment, so it reads
+        # the last step's ticks before the steering moves on (the VW controller asks less often).
+        self.odometer()
         if self.servo.moving:
             self._steer(self.servo.advance(dt))
         if self.motor.needs_update:
