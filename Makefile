@@ -67,6 +67,7 @@ schemas: $(INSTALLED)
 
 bench: $(INSTALLED)
 	$(BIN)/python bench/bench_roundtrip.py
+	$(BIN)/python bench/bench_call_path.py
 	$(BIN)/python bench/bench_stalled_client.py
 	$(BIN)/python bench/bench_sensors.py
 	$(BIN)/python bench/bench_realtime_factor.py
