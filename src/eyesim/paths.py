@@ -1,4 +1,5 @@
-"""Where the installed parts of EyeSim live: the C library, its headers, data and viewer assets."""
+"""Where the installed parts of EyeSim live (the C library, its headers, data and viewer assets), and
+where it keeps what it remembers between runs."""
 
 from __future__ import annotations
 
@@ -19,3 +20,19 @@ def robios_dir() -> Path:
 
 def robios_lib_dir() -> Path:
     return robios_dir() / "lib"
+
+
+def state_dir() -> Path:
+    """Where EyeSim keeps what it remembers from one run to the next (the scene browser's recent
+    files): `EYESIM_STATE_DIR`, else the platform's place for an application's state."""
+    override = os.environ.get("EYESIM_STATE_DIR")
+    if override:
+        return Path(override)
+    home = Path.home()
+    if os.name == "nt":
+        base = Path(os.environ.get("LOCALAPPDATA") or home / "AppData" / "Local")
+    elif os.uname().sysname == "Darwin":
+        base = home / "Library" / "Application Support"
+    else:
+        base = Path(os.environ.get("XDG_STATE_HOME") or home / ".local" / "state")
+    return base / "eyesim"

@@ -316,3 +316,31 @@ def test_more_scene_roots_with_the_scenes_option(workspace, tmp_path_factory):
     missing = subprocess.run(eyesim_command("run", "--scenes", str(extra / "nowhere"), "--port", "0",
                                             "--viewer-port", "0"), capture_output=True, text=True, cwd=workspace)
     assert missing.returncode == 2 and "--scenes" in missing.stderr and "no such folder" in missing.stderr
+
+
+def test_the_next_run_remembers_the_recent_scenes(browser_context, workspace, tmp_path_factory, monkeypatch):
+    """A scene opened in one run is the first of the recent scenes when the simulator starts again,
+    and opens from there; the bundled arena a run falls back on is not listed."""
+    monkeypatch.setenv("EYESIM_STATE_DIR", str(tmp_path_factory.mktemp("own-state")))
+    with simulator_with_viewer(cwd=workspace) as (process, url):
+        page = open_viewer(browser_context, url).page
+        page.wait_for_selector("#scene-browser[open]")
+        page.wait_for_function("() => window.eyesimEditor.browser.listings >= 1")
+        assert page.locator("#scene-recent button").count() == 0  # the first run: nothing yet
+        search_one(page, "obstacles4k sim", "obstacles4k.sim")
+        page.click("#scene-files button")
+        page.wait_for_selector("#scene-browser", state="hidden", timeout=60_000)
+        page.close()
+
+    with simulator_with_viewer(cwd=workspace) as (process, url):
+        viewer = open_viewer(browser_context, url)
+        page = viewer.page
+        page.wait_for_selector("#scene-browser[open]")
+        page.wait_for_function("() => window.eyesimEditor.browser.listings >= 1")
+        assert page.locator("#scene-recent button").all_inner_texts() == ["current folder / labs/obstacles4k.sim"]
+        shot(page, "5-recent-after-restart")
+        page.click("#scene-recent button")
+        page.wait_for_selector("#scene-browser", state="hidden", timeout=60_000)
+        page.wait_for_function("() => window.eyesimViewer.scene().markers === 2")
+        assert viewer.errors == []
+        page.close()

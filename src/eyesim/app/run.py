@@ -250,6 +250,8 @@ def scene_workspace(sim, launcher, args):
         folders.append((folder, Path(folder), True))
     workspace = SceneWorkspace(sim, launcher, SceneRoots(folders))
     workspace.browse_at_start = args.scene is None and not args.program
+    if args.scene is not None:  # the file this run started with, not the bundled arena it falls back on
+        workspace.recent.note(Path(sim.scene.source))
     return workspace
 
 

@@ -30,13 +30,13 @@ from pathlib import Path
 from aiohttp import web
 
 from eyesim.scene import SceneError, World, builtins, load_scene
+from eyesim.web.recent_files import RecentFiles
 from eyesim.web.route_bodies import BadBody, checked_body
 from eyesim.web.scene_editing import Draft, EditError, apply, saved_files, set_floor
 from eyesim.web.scene_files import FileAccessError, SceneRoots
 from eyesim.web.simulation_calls import on_simulation
 
 log = logging.getLogger("eyesim.web")
-MAX_RECENT = 10
 MAX_UNDO = 200
 MAX_BODY = 64 * 1024
 NEW_FLOOR = 2000  # mm, each side of a new scene's floor
@@ -44,19 +44,18 @@ SWAP_TIMEOUT = 30.0  # s to wait for the simulation thread to build a new world
 
 
 class SceneWorkspace:
-    def __init__(self, sim, launcher, roots: SceneRoots):
+    def __init__(self, sim, launcher, roots: SceneRoots, recent: RecentFiles | None = None):
         self.sim = sim
         self.launcher = launcher
         self.roots = roots
         self.draft = Draft.of_scene(sim.scene)
         self.undo_stack: list[Draft] = []
         self.redo_stack: list[Draft] = []
-        self.recent: list[str] = []  # absolute paths, newest first
+        self.recent = recent if recent is not None else RecentFiles()  # kept from run to run
         self.editing = False
         self.browse_at_start = False  # started with no scene: the page opens the scene browser
         self._paused_before = False
         self._lock = asyncio.Lock()  # one open/edit/save at a time
-        self._note_recent(Path(sim.scene.source))
 
     def add_routes(self, app: web.Application) -> None:
         app.router.add_get("/scenes/files", self._files)
@@ -80,7 +79,7 @@ class SceneWorkspace:
     async def _files(self, request: web.Request) -> web.Response:
         query = request.query.get("q", "")[:200]
         files = await _in_thread(self.roots.scene_files, query)
-        recent = [dict(zip(("root", "path"), place)) for place in map(self.roots.place_of, self.recent) if place]
+        recent = [dict(zip(("root", "path"), place)) for place in map(self.roots.place_of, self.recent.paths) if place]
         return web.json_response({"roots": self.roots.describe(), "files": files, "recent": recent})
 
     async def _catalog(self, request: web.Request) -> web.Response:
@@ -112,7 +111,7 @@ class SceneWorkspace:
                 paused = self._paused_before
                 await self._on_sim(lambda sim: sim.clock.set_paused(paused, sim.time_us))
             self.browse_at_start = False
-            self._note_recent(path)
+            self.recent.note(path)
             return web.json_response(dict(self.state(), warnings=[_diagnostic(d) for d in scene.warnings]))
 
     async def _new(self, request: web.Request) -> web.Response:
@@ -188,7 +187,7 @@ class SceneWorkspace:
                 self.draft = Draft.of_scene(await _in_thread(load_scene, target))  # now named as saved
             except SceneError as error:  # written, but not readable as written: say so, keep editing
                 return _refused(f"{target.name} was written but does not load back", error.diagnostics)
-            self._note_recent(target)
+            self.recent.note(target)
             return web.json_response(dict(self.state(), saved=[self._shown(p) for p in files]))
 
     # -- doing it -----------------------------------------------------------------------------
@@ -265,10 +264,6 @@ class SceneWorkspace:
     def _shown(self, path: Path) -> dict:
         root, relative = self.roots.place_of(path)
         return {"root": root, "path": relative}
-
-    def _note_recent(self, path: Path) -> None:
-        text = str(Path(path).resolve())
-        self.recent = [text] + [p for p in self.recent if p != text][:MAX_RECENT - 1]
 
 
 async def _in_thread(function, *args):
