@@ -21,17 +21,14 @@ class Clock:
             raise ValueError(f"unknown clock mode {mode!r}")
         if not speed > 0:
             raise ValueError("speed must be positive")
-        self.mode = mode
+        self.mode = mode  # for the life of the clock
+        self.deterministic = mode == DETERMINISTIC  # asked several times a call: an attribute
         self.speed = speed
         # Asked by every round of the simulation loop: an attribute, kept with the speed.
         self.as_fast_as_possible = mode == DETERMINISTIC or speed == MAX_SPEED
         self.paused = paused
         self._anchor_wall = time.perf_counter()
         self._anchor_sim_us = 0
-
-    @property
-    def deterministic(self) -> bool:
-        return self.mode == DETERMINISTIC
 
     def anchor(self, sim_time_us: int) -> None:
         """Restart wall-clock pacing from the current simulation time (after pause/speed change)."""

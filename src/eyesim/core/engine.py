@@ -363,7 +363,7 @@ class Simulation:
             elif session.robot is None:
                 raise commands.CommandError("the first request must be the HELLO handshake", g.ERR_NO_HANDSHAKE)
             else:
-                problem = op.out_of_range(request.args)  # protocol.json's ranges, before any work
+                problem = op.ranges and op.out_of_range(request.args)  # protocol.json's ranges, before any work
                 if problem:
                     raise commands.CommandError(problem, g.ERR_BAD_ARGUMENT)
                 result = commands.HANDLERS[op.code](self, session.robot, request)

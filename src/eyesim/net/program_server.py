@@ -143,10 +143,9 @@ class ProgramConnection:
         """Read while the program's queue and unread replies are small; write while replies wait."""
         if self.closed:
             return
-        events = 0
-        if self._has_room():
-            events |= selectors.EVENT_READ
-        if self.backlog:
+        waiting = len(self.backlog)
+        events = selectors.EVENT_READ if len(self.session.queued) < MAX_QUEUED and waiting < READ_PAUSE_BACKLOG else 0
+        if waiting:
             events |= selectors.EVENT_WRITE
         if events == self._events:
             return
