@@ -143,9 +143,8 @@ class ProgramConnection:
         """Read while the program's queue and unread replies are small; write while replies wait."""
         if self.closed:
             return
-        waiting = len(self.backlog)
-        events = selectors.EVENT_READ if len(self.session.queued) < MAX_QUEUED and waiting < READ_PAUSE_BACKLOG else 0
-        if waiting:
+        events = selectors.EVENT_READ if self._has_room() else 0
+        if self.backlog:
             events |= selectors.EVENT_WRITE
         if events == self._events:
             return

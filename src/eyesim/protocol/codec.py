@@ -80,9 +80,20 @@ def _encode_field(out: list[bytes], typ: str, value) -> None:
         raise ValueError(f"unknown field type {typ!r}")
 
 
-def encode_payload(layout: Sequence[tuple[str, str]], values: Sequence) -> bytes:
+def _check_count(layout: Sequence, values: Sequence) -> None:
     if len(values) != len(layout):
         raise ValueError(f"expected {len(layout)} values, got {len(values)}")
+
+
+def _payload_size_error(end: int, used: int) -> ProtocolError:
+    """A payload of `end` bytes whose fields took `used` (or ran past its end: `used` > `end`)."""
+    if used > end:
+        return ProtocolError(g.ERR_BAD_PAYLOAD, f"payload too short ({end} bytes) for its fields")
+    return ProtocolError(g.ERR_BAD_PAYLOAD, f"{end - used} unexpected bytes after the last field")
+
+
+def encode_payload(layout: Sequence[tuple[str, str]], values: Sequence) -> bytes:
+    _check_count(layout, values)
     out: list[bytes] = []
     for (_, typ), value in zip(layout, values):
         _encode_field(out, typ, value)
@@ -99,10 +110,8 @@ def decode_payload(layout: Sequence[tuple[str, str]], payload: bytes | memoryvie
     end = len(payload)
     scalars, _ = _scalar_structs(layout)
     if scalars is not None:
-        if end < scalars.size:
-            raise ProtocolError(g.ERR_BAD_PAYLOAD, f"payload too short ({end} bytes) for its fields")
-        if end > scalars.size:
-            raise ProtocolError(g.ERR_BAD_PAYLOAD, f"{end - scalars.size} unexpected bytes after the last field")
+        if end != scalars.size:
+            raise _payload_size_error(end, scalars.size)
         return scalars.unpack_from(payload)
     most = dict(lengths)
     values = []
@@ -135,11 +144,11 @@ def decode_payload(layout: Sequence[tuple[str, str]], payload: bytes | memoryvie
                 else:
                     values.append(list(struct.unpack(f"<{n}i", raw)))
     except struct.error:
-        raise ProtocolError(g.ERR_BAD_PAYLOAD, f"payload too short ({end} bytes) for its fields") from None
+        raise _payload_size_error(end, end + 1) from None
     except UnicodeDecodeError:
         raise ProtocolError(g.ERR_BAD_PAYLOAD, "a text field is not valid UTF-8") from None
     if pos != end:
-        raise ProtocolError(g.ERR_BAD_PAYLOAD, f"{end - pos} unexpected bytes after the last field")
+        raise _payload_size_error(end, pos)
     return tuple(values)
 
 
@@ -155,8 +164,7 @@ def encode_message(op: int, kind: int, request_id: int, values: Sequence) -> byt
     _, frame = _scalar_structs(layout)
     if frame is None:
         return encode_frame(op, kind, request_id, encode_payload(layout, values))
-    if len(values) != len(layout):
-        raise ValueError(f"expected {len(layout)} values, got {len(values)}")
+    _check_count(layout, values)
     return frame.pack(frame.size - _LEN.size, op, kind, request_id, *values)
 
 

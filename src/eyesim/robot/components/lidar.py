@@ -101,7 +101,7 @@ class LidarScanner(Component):
         geom = np.zeros(1, dtype=np.int32)
         for i in own:
             travelled, part, segment = 0.0, geoms[i], dists[i]
-            while part >= 0 and model.body_rootid[model.geom_bodyid[part]] == self.robot.body:
+            while self._own_parts[part]:  # (-1, nothing hit, is the table's last entry: False)
                 travelled += segment + 1e-6
                 segment = mujoco.mj_ray(model, data, origin + directions[i] * travelled, directions[i], RAY_GROUPS, 1,
                                         model.geom_bodyid[part], geom)

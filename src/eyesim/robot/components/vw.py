@@ -275,11 +275,12 @@ class VwController(Component):
             return
         # As fast as allowed, but slow enough to brake in what remains, never slower than a crawl.
         speed = max(min(m.top_speed, math.sqrt(m.braking * max(0.0, remaining - m.crawl))), m.floor)
-        if remaining > m.cruise_beyond:
-            self._cruise_steps = self._held_steps = max(round(PLAN_PERIOD / dt) - 1, 0)
-        elif speed < m.top_speed and speed * PLAN_PERIOD <= HOLD_SHARE * (remaining - m.crawl):
+        holds = remaining > m.cruise_beyond
+        if not holds and speed < m.top_speed and speed * PLAN_PERIOD <= HOLD_SHARE * (remaining - m.crawl):
             # Held for a period: the speed for its middle, so that the steps straddle the braking curve.
             speed = math.sqrt(m.braking * (remaining - m.crawl - speed * PLAN_PERIOD / 2))
+            holds = True
+        if holds:
             self._cruise_steps = self._held_steps = max(round(PLAN_PERIOD / dt) - 1, 0)
         braking = speed < m.top_speed
         if m.on_the_spot:
