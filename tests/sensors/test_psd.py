@@ -5,8 +5,10 @@ import math
 import statistics
 
 from support.rooms import square_room, write_scene
+from support.scenes import arena
 
-from eyesim.robot.components.psd import RAW_OFFSET, RAW_SCALE
+from eyesim.core.engine import Simulation
+from eyesim.robot.components.psd import RAW_OFFSET, RAW_SCALE, PsdSensor, raw_value
 from eyesim.scene.description import Settings
 from eyesim.scene.diagnostics import Diagnostics
 from eyesim.scene.json_format import dumps, parse_json, to_json
@@ -96,3 +98,33 @@ def test_the_noise_settings_are_read_written_and_checked():
     assert messages == ["c.sim:1:10: error: settings: PSDNOISE expects a standard deviation in mm >= 0, found '-1'",
                         "c.sim:1:22: error: settings: SEED expects a whole number, found 'x'",
                         "c.sim:1:29: error: settings: PSDNOISE needs a value: PSDNOISE=<a standard deviation in mm >= 0>"]
+
+
+def test_a_reading_is_cast_once_per_state_and_the_noise_drawn_for_every_reading(monkeypatch):
+    """Polled faster than the physics steps, a PSD casts its beam once for the state of the world
+    and reads that hit again (it would come out the same); a teleport (no step) or a step casts
+    anew; the noise is still drawn for every reading."""
+    casts = []
+    real_beam = PsdSensor.beam
+
+    def counted_beam(sensor):
+        casts.append(sensor.id)
+        return real_beam(sensor)
+
+    monkeypatch.setattr(PsdSensor, "beam", counted_beam)
+    sim = Simulation(arena(robots=((1000, 1000, 0),)))
+    robot = sim.robots[0]
+    front = next(s for s in robot.components_of(PsdSensor) if s.id == 1)
+    first = front.distance_mm()
+    assert [front.distance_mm() for _ in range(5)] == [first] * 5 and front.raw() == raw_value(first)
+    assert casts == [1]
+
+    sim.world.set_free_pose(robot.body, 1.5, 1.0, sim.world.pose(robot.body)[2], 0.0)  # 500 mm on
+    assert abs(first - front.distance_mm() - 500) <= 2 and casts == [1, 1]
+    sim.step()
+    front.distance_mm()
+    assert casts == [1, 1, 1]
+
+    front.set_noise(20, seed=7)
+    noisy = [front.distance_mm() for _ in range(50)]
+    assert len(set(noisy)) > 10 and casts == [1, 1, 1, 1]  # one cast after the reset, fresh noise each time

@@ -40,12 +40,16 @@ class PsdSensor(Component):
         # noise a sensor sees does not depend on what other sensors or robots read.
         self._seed = (context.settings.seed, context.robot.id, spec.id)
         self._hit = np.zeros(1, dtype=np.int32)
+        # (world.state_version, exact hit in m or None) of the last cast: a program polling faster
+        # than the physics step reads the same state, and the cast would come out the same.
+        self._cached: tuple[int, float | None] | None = None
 
     def bind(self, world) -> None:
         super().bind(world)
         self.site = mujoco.mj_name2id(world.model, mujoco.mjtObj.mjOBJ_SITE, self.site_name)
 
     def reset(self) -> None:
+        self._cached = None
         self.random = np.random.default_rng(self._seed) if self.noise_mm > 0 else None
 
     def set_noise(self, noise_mm: float, seed: int) -> None:
@@ -69,14 +73,22 @@ class PsdSensor(Component):
 
     def distance_mm(self) -> int:
         """What PSDGet reports: the distance rounded to mm, with the scene's noise if it has any;
-        MAX_RANGE_MM when nothing is in range."""
-        _, _, hit = self.beam()
+        MAX_RANGE_MM when nothing is in range. The noise is drawn anew for every reading."""
+        hit = self._exact_hit()
         if hit is None:
             return MAX_RANGE_MM
         distance = to_mm(hit)
         if self.random is not None:
             distance += self.random.normal(0.0, self.noise_mm)
         return max(0, min(MAX_RANGE_MM, int(round(distance))))
+
+    def _exact_hit(self) -> float | None:
+        """The beam's hit distance in the world's state of the moment, cast once per state."""
+        version = self.world.state_version
+        cached = self._cached
+        if cached is None or cached[0] != version:
+            cached = self._cached = (version, self.beam()[2])
+        return cached[1]
 
     def raw(self) -> int:
         """What PSDGetRaw reports: the reading's distance through the sensor curve."""
