@@ -249,7 +249,8 @@ class Simulation:
         session = request.session
         if session.closed:
             return
-        session.note_request(time.perf_counter())
+        if self.clock.deterministic:  # what Session.blocked goes by
+            session.note_request(time.perf_counter())
         if request.op.code == g.OP_HELLO or session.robot is None:
             request.time_us = max(self.time_us, session.local_time_us)
             self._execute(request)

@@ -14,10 +14,10 @@ class Backlog:
 
     def __init__(self):
         self._chunks: deque = deque()  # bytearray (gathered small replies) or memoryview (one large reply)
-        self._size = 0
+        self.size = 0  # bytes waiting: an attribute, as the connection asks for it several times a call
 
     def __len__(self) -> int:
-        return self._size
+        return self.size
 
     def __iadd__(self, data) -> "Backlog":
         if len(data) >= LARGE:
@@ -26,7 +26,7 @@ class Backlog:
             if not self._chunks or not isinstance(self._chunks[-1], bytearray):
                 self._chunks.append(bytearray())
             self._chunks[-1] += data
-        self._size += len(data)
+        self.size += len(data)
         return self
 
     def first(self):
@@ -38,7 +38,7 @@ class Backlog:
 
     def consume(self, count: int) -> None:
         """`count` bytes from the front were sent."""
-        self._size -= count
+        self.size -= count
         while count:
             chunk = self._chunks[0]
             if count >= len(chunk):

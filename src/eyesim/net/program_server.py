@@ -32,6 +32,7 @@ READ_SIZE = 256 * 1024
 MAX_QUEUED = 64  # requests of one program waiting for the simulation before its socket rests
 READ_PAUSE_BACKLOG = 1 << 20  # bytes of unread replies before a program's requests are not read
 MAX_BACKLOG = 32 << 20  # bytes of unread replies that close the connection (two largest frames)
+READ, WRITE = selectors.EVENT_READ, selectors.EVENT_WRITE
 STALL_TIMEOUT = 30.0  # s a program may leave its replies unread (a debugger's breakpoint) before it is dropped
 
 
@@ -45,14 +46,14 @@ class ProgramConnection:
         self.backlog = Backlog()  # reply bytes the kernel has not taken yet
         self.closed = False
         self.session = Session(connection=self, peer=peer)
-        self._events = selectors.EVENT_READ
+        self._events = READ
         self.backlog_progress = 0.0  # wall time (monotonic) the backlog last began or shrank
 
     # -- replies -------------------------------------------------------------------------------
     def send(self, data: bytes) -> None:
         if self.closed:
             return
-        if not self.backlog:
+        if not self.backlog.size:
             try:
                 sent = self.sock.send(data)
             except BlockingIOError:
@@ -62,12 +63,12 @@ class ProgramConnection:
             if sent == len(data):
                 return
             data = memoryview(data)[sent:]
-        if len(self.backlog) + len(data) > MAX_BACKLOG:
+        if self.backlog.size + len(data) > MAX_BACKLOG:
             log.warning("%s: %d bytes of replies unread; closing the connection (the program stopped "
-                        "reading its replies)", self.session.name, len(self.backlog) + len(data))
+                        "reading its replies)", self.session.name, self.backlog.size + len(data))
             self.close()
             return
-        if not self.backlog:
+        if not self.backlog.size:
             self.backlog_progress = time.monotonic()
         self.backlog += data
         self.update_interest()
@@ -82,7 +83,7 @@ class ProgramConnection:
         if sent:
             self.backlog_progress = time.monotonic()
         self.backlog.consume(sent)
-        self.resume()  # requests held back while the replies piled up
+        self._refill()  # requests held back while the replies piled up; no more writing once all went
 
     # -- requests ------------------------------------------------------------------------------
     def read(self) -> None:
@@ -131,21 +132,27 @@ class ProgramConnection:
 
     # -- selector interest -----------------------------------------------------------------------
     def resume(self) -> None:
-        """The simulation took a request: decode what is buffered, and read again when there is room."""
+        """The simulation took a request: decode what is buffered, and read again when there is room.
+        As a rule the socket is being read and nothing waits in the decoder: nothing changes then."""
+        if self._events & READ and not self.decoder.pending_bytes:
+            return
+        self._refill()
+
+    def _refill(self) -> None:
         if not self.closed and self.decoder.pending_bytes and self._has_room():
             self._take(b"")
         self.update_interest()
 
     def _has_room(self) -> bool:
-        return len(self.session.queued) < MAX_QUEUED and len(self.backlog) < READ_PAUSE_BACKLOG
+        return len(self.session.queued) < MAX_QUEUED and self.backlog.size < READ_PAUSE_BACKLOG
 
     def update_interest(self) -> None:
         """Read while the program's queue and unread replies are small; write while replies wait."""
         if self.closed:
             return
-        events = selectors.EVENT_READ if self._has_room() else 0
-        if self.backlog:
-            events |= selectors.EVENT_WRITE
+        events = READ if self._has_room() else 0
+        if self.backlog.size:
+            events |= WRITE
         if events == self._events:
             return
         selector = self.sockets.selector
@@ -190,7 +197,7 @@ class ProgramSockets:
         self._wake_read, self._wake_write = socket.socketpair()
         self._wake_read.setblocking(False)
         self._wake_write.setblocking(False)
-        self.selector.register(self._wake_read, selectors.EVENT_READ, None)
+        self.selector.register(self._wake_read, READ, None)
         self.connections: set[ProgramConnection] = set()
         self._last_stall_check = time.monotonic()
 
@@ -202,7 +209,7 @@ class ProgramSockets:
             pass  # already woken (the pair's buffer is full) or shut down
 
     def add_listener(self, listener: socket.socket) -> None:
-        self.selector.register(listener, selectors.EVENT_READ, listener)
+        self.selector.register(listener, READ, listener)
 
     def remove_listener(self, listener: socket.socket) -> None:
         self.selector.unregister(listener)
@@ -210,7 +217,7 @@ class ProgramSockets:
 
     def watch(self, file, on_readable) -> None:
         """Call `on_readable()` on this thread whenever `file` has data (a program's output pipe)."""
-        self.selector.register(file, selectors.EVENT_READ, on_readable)
+        self.selector.register(file, READ, on_readable)
 
     def unwatch(self, file) -> None:
         try:
@@ -229,9 +236,9 @@ class ProgramSockets:
             elif not isinstance(target, ProgramConnection):
                 target()  # a watched file
             else:
-                if events & selectors.EVENT_WRITE and not target.closed:
+                if events & WRITE and not target.closed:
                     target.flush()
-                if events & selectors.EVENT_READ and not target.closed:
+                if events & READ and not target.closed:
                     target.read()
         now = time.monotonic()
         if now - self._last_stall_check >= 1.0:
@@ -261,7 +268,7 @@ class ProgramSockets:
         sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
         connection = ProgramConnection(self, sock, f"{address[0]}:{address[1]}")
         self.connections.add(connection)
-        self.selector.register(sock, selectors.EVENT_READ, connection)
+        self.selector.register(sock, READ, connection)
         self._connected(connection.session)
 
     def closed(self, connection: ProgramConnection) -> None:

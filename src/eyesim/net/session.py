@@ -24,7 +24,7 @@ class Connection(Protocol):
         """A queued request was taken: there may be room to read more."""
 
 
-@dataclass
+@dataclass(slots=True)
 class Request:
     """A decoded request waiting for, or being handled by, the simulation thread."""
 
