@@ -7,8 +7,9 @@ from support.client import ProgramClient
 from support.scenes import arena, with_call_time
 from support.simulator import running_simulation
 
-from eyesim.core import robot_input
+from eyesim.core import engine, robot_input
 from eyesim.core.engine import DEFAULT_CALL_TIME_US
+from eyesim.net.program_server import ProgramSockets
 from eyesim.protocol import generated as g
 from eyesim.robot.components.keys import KEY2
 
@@ -180,6 +181,28 @@ def test_two_deterministic_runs_give_bit_identical_trajectories():
     second = run_scripted_program("deterministic")
     assert len(first) > 500
     assert first == second
+
+
+def test_quiet_stretches_of_steps_change_nothing_but_how_often_the_sockets_are_looked_at(monkeypatch):
+    """While every program waits (OSWait, VWWait), deterministic mode takes up to QUIET_STEPS steps
+    in one go instead of looking at the sockets after each: the same trajectory, step for step, as
+    one step a round, with far fewer looks."""
+    looks = []
+    poll = ProgramSockets.poll
+
+    def counted_poll(sockets, timeout):
+        looks[-1] += 1
+        return poll(sockets, timeout)
+
+    monkeypatch.setattr(ProgramSockets, "poll", counted_poll)
+    runs = []
+    for quiet_steps in (1, engine.QUIET_STEPS):
+        monkeypatch.setattr(engine, "QUIET_STEPS", quiet_steps)
+        looks.append(0)
+        runs.append(run_scripted_program("deterministic"))
+    one_by_one, in_stretches = runs
+    assert len(one_by_one) > 500 and in_stretches == one_by_one
+    assert looks[1] < looks[0] / 3, looks
 
 
 def test_the_simulator_survives_a_handler_crash(monkeypatch):

@@ -44,6 +44,7 @@ SNAPSHOT_PERIOD = 1 / 30  # wall seconds between published snapshots
 MAX_CATCH_UP_STEPS = 50  # realtime: steps taken in one go before looking at the queue again
 IDLE_WAIT = 0.05  # s the loop sleeps when nothing can happen (paused, waiting for programs)
 IDLE_POLL_STEPS = 50  # at --speed max with no program connected: look for new connections this often
+QUIET_STEPS = 50  # deterministic: steps taken in one go while every program waits (then look at the sockets)
 # Simulation time an ordinary call takes (docs/running.md#call-time): EyeSim answered in a few ms,
 # and lab programs that count loop iterations instead of time were written against that.
 DEFAULT_CALL_TIME_US = 4000
@@ -68,6 +69,8 @@ class Simulation:
         self._scheduled: list = []  # heap of (time_us, seq, action) run at step boundaries
         self._sequence = itertools.count()
         self._stopping = False
+        self._until_us: int | None = None  # where the run under way ends (run's `until`)
+        self._answered_later = 0  # pending calls answered so far (a step that answers one ends a quiet stretch)
         self._last_snapshot = 0.0
         self._publish_again = False  # every component publishes its state at the next tick
         self.step_observers: list = []  # called as observer(sim) after every physics step
@@ -166,7 +169,7 @@ class Simulation:
     # -- the loop --------------------------------------------------------------------------------
     def run(self, until: float | None = None) -> None:
         """Run until `stop()` or until simulation time reaches `until` seconds."""
-        until_us = None if until is None else round(until * 1e6)
+        until_us = self._until_us = None if until is None else round(until * 1e6)
         self.clock.anchor(self.time_us)
         self._running = True
         one_round = self._deterministic_round if self.clock.deterministic else self._realtime_round
@@ -317,16 +320,32 @@ class Simulation:
                 if wake is None:
                     continue
                 key = (max(wake, self.time_us), session.robot.id)
-            if key[0] < boundary and (best is None or key < best[0]):
+            if best is None or key < best[0]:
                 best = (key, session)
-        if best is None:
-            self.step()
+        if best is None or best[0][0] >= boundary:
+            self._step_while_quiet(None if best is None else best[0][0])
             return
         (at_us, _), session = best
         if session.queued:
             self._take_request(session, at_us)
         elif not self._wake_session(session, at_us):
             self._wait(IDLE_WAIT)  # its reply is still being made (a camera image): wait for it, not time
+
+    def _step_while_quiet(self, due_us: int | None) -> None:
+        """Deterministic: every program waits, for a reply or with a request at `due_us` or later
+        (None: no request or timed wait is due). Step until the step that would pass `due_us`, a
+        step that answers a waiting call (VWWait done: that program goes on), the run's end or
+        QUIET_STEPS steps. Meanwhile no program can send anything (each waits for a reply), so
+        looking at the sockets between these steps, as every round does, would find nothing."""
+        answered = self._answered_later
+        for _ in range(QUIET_STEPS):
+            self.step()
+            if self._answered_later != answered or self._stopping:
+                return
+            if due_us is not None and due_us < self.time_us + self.step_us:
+                return
+            if self._until_us is not None and self.time_us >= self._until_us:
+                return
 
     def step(self) -> None:
         """One physics step with its three phases."""
@@ -541,6 +560,8 @@ class Simulation:
                     observer(session.robot, request, values)
         answered = len(still) < len(session.pending)
         session.pending = still
+        if answered:
+            self._answered_later += 1
         return answered
 
     def _send(self, session: Session, frame: bytes) -> None:
