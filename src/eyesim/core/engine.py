@@ -334,13 +334,14 @@ class Simulation:
     def _step_while_quiet(self, due_us: int | None) -> None:
         """Deterministic: every program waits, for a reply or with a request at `due_us` or later
         (None: no request or timed wait is due). Step until the step that would pass `due_us`, a
-        step that answers a waiting call (VWWait done: that program goes on), the run's end or
+        step that answers a waiting call (VWWait done: that program goes on), an action from another
+        thread (a viewer command is carried out at the next step boundary), the run's end or
         QUIET_STEPS steps. Meanwhile no program can send anything (each waits for a reply), so
         looking at the sockets between these steps, as every round does, would find nothing."""
         answered = self._answered_later
         for _ in range(QUIET_STEPS):
             self.step()
-            if self._answered_later != answered or self._stopping:
+            if self._answered_later != answered or self._stopping or not self.inbox.empty():
                 return
             if due_us is not None and due_us < self.time_us + self.step_us:
                 return
