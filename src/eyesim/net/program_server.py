@@ -79,7 +79,7 @@ class ProgramConnection:
         except BlockingIOError:
             return
         except OSError:
-            sent = len(self.backlog)
+            sent = self.backlog.size
         if sent:
             self.backlog_progress = time.monotonic()
         self.backlog.consume(sent)
@@ -168,7 +168,7 @@ class ProgramConnection:
         if self.closed:
             return
         self.closed = True
-        if flush and self.backlog:
+        if flush and self.backlog.size:
             try:
                 self.sock.setblocking(True)
                 self.sock.settimeout(1.0)
@@ -247,9 +247,9 @@ class ProgramSockets:
 
     def _drop_stalled(self, now: float) -> None:
         for connection in list(self.connections):
-            if connection.backlog and now - connection.backlog_progress > STALL_TIMEOUT:
+            if connection.backlog.size and now - connection.backlog_progress > STALL_TIMEOUT:
                 log.warning("%s: has not read its replies for %.0f s (%d bytes waiting); closing the connection",
-                            connection.session.name, now - connection.backlog_progress, len(connection.backlog))
+                            connection.session.name, now - connection.backlog_progress, connection.backlog.size)
                 connection.close()
 
     def _drain_wake(self) -> None:
