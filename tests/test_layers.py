@@ -14,7 +14,7 @@ PACKAGE = Path(__file__).resolve().parents[1] / "src" / "eyesim"  # the source, 
 
 # Lowest first. A part may import the parts of lower layers, and those before it on its own layer.
 LAYERS = [
-    ["paths", "protocol"],
+    ["paths", "platform", "protocol"],
     ["scene"],
     ["physics"],
     ["robot"],

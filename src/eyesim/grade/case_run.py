@@ -106,15 +106,15 @@ def _not_run(case, reason: str) -> list[dict]:
 
 def _status(end, runs) -> str:
     """ok; timeout (the wall-clock watchdog ended it); cpu_limit or crashed (a program was
-    killed by its CPU limit or by a signal of its own making)."""
-    import signal
+    killed by its CPU limit or by a crash of its own making)."""
+    from eyesim import platform
 
     if end.reason == "watchdog":
         return "timeout"
-    signals = [-run.exit_code for run in runs if run.exit_code is not None and run.exit_code < 0 and not run.stopped_by_us]
-    if any(number in (signal.SIGXCPU, signal.SIGKILL) for number in signals):
+    ended = [run.exit_code for run in runs if run.crash is not None]
+    if any(platform.over_limit(code) for code in ended):
         return "cpu_limit"
-    return "crashed" if signals else "ok"
+    return "crashed" if ended else "ok"
 
 
 def score_of(checks: list[dict]) -> float:
@@ -171,7 +171,7 @@ def run_case(task: dict, directory: Path) -> dict:
                 result["programs"][str(robot.id)] = {
                     "name": next(e["program"] for e in case.robots if e["robot"] == robot.id),
                     "status": describe_exit(run), "exit_code": robot.exit_code, "stopped": run.stopped_by_us,
-                    "crashed": bool(run.exit_code is not None and run.exit_code < 0 and not run.stopped_by_us),
+                    "crashed": run.crash is not None,
                     "stdout": _tail(robot.stdout), "stderr": _tail(robot.stderr)}
             pose = robot.pose
             step = max(1, round(PATH_PERIOD / 0.01))

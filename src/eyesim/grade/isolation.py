@@ -1,19 +1,19 @@
 """Running one case in a process of its own, wherever this function is called: in a thread of
 the local pool or in a Dask worker. The case process has its own port, its own temporary
-directory and its own process group; when it overruns its case's wall-clock limit by
+directory and its own process group (a job on Windows); when it overruns its case's wall-clock limit by
 HARD_MARGIN it is killed with everything in its group, and the case is reported, not lost."""
 
 from __future__ import annotations
 
-import os
 import pickle
-import signal
 import subprocess
 import sys
 import tempfile
 import threading
 import time
 from pathlib import Path
+
+from eyesim import platform
 
 HARD_MARGIN = 60.0  # s beyond the case's own watchdog (which stops programs gently) before killing
 
@@ -26,10 +26,7 @@ def kill_running() -> None:
     with _running_lock:
         processes = list(_running)
     for process in processes:
-        try:
-            os.killpg(process.pid, signal.SIGKILL)
-        except (ProcessLookupError, PermissionError):
-            pass
+        platform.kill_tree(process, own_group=True)
 
 
 def failed_result(task: dict, status: str, message: str) -> dict:
@@ -45,10 +42,9 @@ def run_case_isolated(task: dict) -> dict:
     started = time.perf_counter()
     with tempfile.TemporaryDirectory(prefix="eyesim-grade-") as tmp:
         result_path = Path(tmp) / "result.pickle"
-        process = subprocess.Popen([sys.executable, "-m", "eyesim.grade.case_run", str(result_path),
-                                    str(Path(tmp) / "case")],
-                                   stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
-                                   cwd=tmp, start_new_session=True)
+        process = platform.start([sys.executable, "-m", "eyesim.grade.case_run", str(result_path),
+                                  str(Path(tmp) / "case")], own_group=True,
+                                 stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, cwd=tmp)
         with _running_lock:
             _running.add(process)
         try:
@@ -71,8 +67,5 @@ def run_case_isolated(task: dict) -> dict:
 
 
 def _kill_group(process: subprocess.Popen) -> None:
-    try:
-        os.killpg(process.pid, signal.SIGKILL)
-    except (ProcessLookupError, PermissionError):
-        pass
+    platform.kill_tree(process, own_group=True)
     process.wait()

@@ -3,15 +3,13 @@
 from __future__ import annotations
 
 import os
-import resource
-import signal
 import subprocess
 import sys
 import threading
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from eyesim import paths
+from eyesim import paths, platform
 from eyesim.programs.program_output import ProgramOutput
 
 OUTPUT_LIMIT = 1 << 20  # characters of a program's output kept per stream (a runaway printf loop)
@@ -24,9 +22,10 @@ class ProgramOptions:
     `stdin` (text or bytes) is written to the program's standard input, which is then closed;
     None gives it no input. `cwd` defaults to the program's directory; `env` adds to (and
     overrides) the environment. `cpu_seconds` and `memory_bytes` are resource limits of the
-    program's process (RLIMIT_CPU, RLIMIT_AS). With `own_group` the program gets a process group
-    of its own, so that stopping it also stops the processes it started; without, it stays in
-    ours (the grader kills a case's whole group at once)."""
+    program's process (RLIMIT_CPU, RLIMIT_AS; a Job Object's limits on Windows). With `own_group`
+    the program gets a process group (Windows: a job) of its own, so that stopping it also stops
+    the processes it started; without, it stays in ours (the grader kills a case's whole group at
+    once)."""
 
     args: tuple[str, ...] = ()
     stdin: str | bytes | None = None
@@ -37,17 +36,8 @@ class ProgramOptions:
     own_group: bool = False
 
     @property
-    def limited(self) -> bool:
-        return self.cpu_seconds is not None or self.memory_bytes is not None
-
-
-def _apply_limits(cpu_seconds: float | None, memory_bytes: int | None) -> None:
-    """Runs in the child between fork and exec: only async-signal-safe work (setrlimit)."""
-    if cpu_seconds is not None:
-        soft = max(1, int(cpu_seconds + 0.999))
-        resource.setrlimit(resource.RLIMIT_CPU, (soft, soft + 1))  # SIGXCPU, then SIGKILL a second later
-    if memory_bytes is not None:
-        resource.setrlimit(resource.RLIMIT_AS, (memory_bytes, memory_bytes))
+    def limits(self) -> platform.Limits:
+        return platform.Limits(self.cpu_seconds, self.memory_bytes)
 
 
 @dataclass
@@ -67,8 +57,14 @@ class ProgramRun:
 
     @property
     def signal(self) -> int | None:
-        """The signal that ended the program (a crash, a limit), if one did."""
+        """The POSIX signal that ended the program (a crash, a limit), if one did."""
         return -self.exit_code if self.exit_code is not None and self.exit_code < 0 else None
+
+    @property
+    def crash(self) -> str | None:
+        """Why the program ended, in words, when a crash, a signal or a limit ended it and we did
+        not stop it: 'crashed: segmentation fault (SIGSEGV)', 'crashed: access violation (0xC0000005)'."""
+        return None if self.stopped_by_us else platform.exit_reason(self.exit_code)
 
     @property
     def name(self) -> str:
@@ -89,14 +85,11 @@ def command_for(path: Path) -> list[str]:
 
 
 def program_environment(host: str, port: int, robot_id: int) -> dict[str, str]:
-    """Ours plus where the simulator is, and libeyesim's directory first on LD_LIBRARY_PATH: an
-    EyeSim-era eye.py beside a Python program loads the library by name (CDLL("libeyesim.so")),
-    and so do C programs linked without `eyesim cc`'s rpath."""
+    """Ours plus where the simulator is, and where libeyesim is for programs that load it by name
+    (platform.library_environment)."""
     env = dict(os.environ, EYESIM_HOST=host, EYESIM_PORT=str(port), EYESIM_ROBOT=str(robot_id))
     env.setdefault("PYTHONUNBUFFERED", "1")
-    env["LD_LIBRARY_PATH"] = os.pathsep.join(
-        part for part in (str(paths.robios_lib_dir()), os.environ.get("LD_LIBRARY_PATH")) if part)
-    return env
+    return platform.library_environment(env, paths.robios_lib_dir())
 
 
 class Launcher:
@@ -129,15 +122,12 @@ class Launcher:
         robot_id_ = robot_id
         self.sim.call(lambda sim: sim.expected_programs.add(robot_id_))
         run.path = run.path.resolve()
-        limits = None
-        if options.limited:
-            limits = lambda: _apply_limits(options.cpu_seconds, options.memory_bytes)  # noqa: E731
         try:
-            run.process = subprocess.Popen(
-                [*command_for(run.path), *options.args], cwd=options.cwd or run.path.parent, env=env,
+            run.process = platform.start(
+                [*command_for(run.path), *options.args], own_group=options.own_group, limits=options.limits,
+                cwd=options.cwd or run.path.parent, env=env,
                 stdin=subprocess.DEVNULL if options.stdin is None else subprocess.PIPE,
-                stdout=subprocess.PIPE, stderr=subprocess.PIPE, preexec_fn=limits,
-                start_new_session=options.own_group)
+                stdout=subprocess.PIPE, stderr=subprocess.PIPE)
         except OSError as error:
             run.error = f"cannot start {run.path}: {error.strerror}"
             self._print(run, "stderr", f"eyesim: {run.error}\n")
@@ -194,8 +184,8 @@ class Launcher:
         if output is not None:
             output.finish()  # its last words first, then why it ended
             self.sim.program_outputs.pop(run.process.pid, None)
-            if run.signal is not None and not run.stopped_by_us:
-                self._show(run, "stderr", f"eyesim: {run.name} {crash_reason(run.signal)}\n")
+            if run.crash is not None:
+                self._show(run, "stderr", f"eyesim: {run.name} {run.crash}\n")
 
     def _show(self, run: ProgramRun, stream: str, text: str) -> None:
         """Output read on the simulation thread (or while no loop runs): shown at this simulation time."""
@@ -224,6 +214,8 @@ class Launcher:
 
     def _wait(self, run: ProgramRun) -> None:
         run.exit_code = run.process.wait()
+        if not run.options.own_group:
+            platform.release(run.process)  # a group of its own is ended (and released) by _end
         robot_id = run.robot_id
 
         def exited(sim):
@@ -237,10 +229,7 @@ class Launcher:
         """Stop a program at once (a watchdog's last resort), with its process group if it has one."""
         if run.process is not None and run.process.poll() is None:
             run.stopped_by_us = True
-            if run.options.own_group:
-                _kill_group(run.process.pid)
-            else:
-                run.process.kill()
+            platform.kill_tree(run.process, run.options.own_group)
 
     def stop(self, run: ProgramRun, grace: float = 2.0) -> None:
         """Stop one program (the viewer's Stop button): asked to end, then killed after `grace` s.
@@ -248,7 +237,7 @@ class Launcher:
         if run.process is None or run.process.poll() is not None:
             return
         run.stopped_by_us = True
-        run.process.terminate()
+        platform.ask_to_end(run.process)
         self._end(run, grace)
         self._waiters[id(run)].join(timeout=grace)
 
@@ -258,10 +247,10 @@ class Launcher:
         try:
             run.process.wait(timeout=grace)
         except subprocess.TimeoutExpired:
-            run.process.kill()
+            platform.kill_tree(run.process, run.options.own_group)
             run.process.wait()
         if run.options.own_group:
-            _kill_group(run.process.pid)
+            platform.kill_tree(run.process, own_group=True)  # what it started and left running
 
     def latest(self, robot_id: int) -> ProgramRun | None:
         """The robot's most recent program run, if it had one."""
@@ -281,7 +270,7 @@ class Launcher:
         for run in self.runs:
             if run.process is not None and run.process.poll() is None:
                 run.stopped_by_us = True
-                run.process.terminate()
+                platform.ask_to_end(run.process)
         for run in self.runs:
             if run.process is not None:
                 self._end(run, grace)
@@ -291,20 +280,3 @@ class Launcher:
             if run.process is not None:
                 self._take_output(run)
 
-
-def crash_reason(number: int) -> str:
-    """Why a program that a signal ended stopped, in words: 'crashed: segmentation fault (SIGSEGV)'."""
-    try:
-        name = signal.Signals(number).name
-    except ValueError:
-        return f"was ended by signal {number}"
-    words = (signal.strsignal(number) or name).lower()
-    verb = "was ended" if number in (signal.SIGTERM, signal.SIGKILL, signal.SIGINT, signal.SIGHUP) else "crashed"
-    return f"{verb}: {words} ({name})"
-
-
-def _kill_group(pgid: int) -> None:
-    try:
-        os.killpg(pgid, signal.SIGKILL)
-    except (ProcessLookupError, PermissionError):
-        pass

@@ -1,8 +1,9 @@
 """A launched program's stdout and stderr, read on the simulation thread.
 
 The pipes are non-blocking and watched by the simulation thread's selector, so output shows as
-soon as it is written, with no reader threads, and is stamped with the simulation time at which
-it is read. That time repeats exactly in deterministic runs: what a program writes before a call
+soon as it is written, with no reader threads (but on Windows, whose selector takes only sockets:
+a thread copies each pipe into a socket, platform.readable), and is stamped with the simulation
+time at which it is read. On POSIX that time repeats exactly in deterministic runs: what a program writes before a call
 is in the pipe before the call's request is on its socket, so the selector reports both in the
 same wait, before the call is taken; and simulation time cannot move while the program computes
 between two calls. Text is passed on a whole line at a time; a line still unfinished when the
@@ -11,8 +12,9 @@ when the pipe was read."""
 
 from __future__ import annotations
 
-import os
 from typing import Callable
+
+from eyesim import platform
 
 STREAMS = ("stdout", "stderr")
 READ_SIZE = 64 * 1024
@@ -21,9 +23,7 @@ READ_SIZE = 64 * 1024
 class ProgramOutput:
     def __init__(self, pipes: dict, show: Callable[[str, str], None]):
         """`pipes`: stream name -> the process's pipe; `show(stream, text)`: called with each line."""
-        self.pipes = {stream: pipe for stream, pipe in pipes.items() if pipe is not None}
-        for pipe in self.pipes.values():
-            os.set_blocking(pipe.fileno(), False)
+        self.pipes = {stream: platform.readable(pipe) for stream, pipe in pipes.items() if pipe is not None}
         self.show = show
         self.partial = {stream: b"" for stream in self.pipes}
         self.network = None  # the selector that watches the pipes, once watched
@@ -43,12 +43,9 @@ class ProgramOutput:
         data = self.partial[stream]
         ended = False
         while True:
-            try:
-                chunk = os.read(pipe.fileno(), READ_SIZE)
-            except BlockingIOError:
+            chunk = platform.read_available(pipe, READ_SIZE)
+            if chunk is None:
                 break
-            except OSError:
-                chunk = b""
             if not chunk:
                 ended = True
                 break

@@ -14,6 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
+from eyesim import platform
 from eyesim.testing.contacts import Thing
 
 
@@ -131,6 +132,8 @@ def describe_exit(run) -> str:
         return "was still running at the end (stopped)"
     if run.exit_code is None:
         return "is still running"
+    if platform.WINDOWS and run.crash is not None:
+        return run.crash
     if run.exit_code < 0:
         try:
             name = signals.Signals(-run.exit_code).name

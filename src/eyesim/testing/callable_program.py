@@ -99,6 +99,10 @@ class CallableRun:
         return None
 
     @property
+    def crash(self) -> None:
+        return None  # a callable's failure is its `error`
+
+    @property
     def failed(self) -> bool:
         return self.error is not None
 

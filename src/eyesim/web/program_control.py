@@ -22,7 +22,6 @@ from pathlib import Path
 from aiohttp import web
 
 from eyesim.programs import toolchain
-from eyesim.programs.launcher import crash_reason
 from eyesim.robot.components.psd import PsdSensor
 from eyesim.viewer import messages
 from eyesim.web import program_files
@@ -205,8 +204,8 @@ class ProgramControl:
             state.update(state="running")
         else:
             state.update(state="stopped" if run.stopped_by_us else "exited", exit_code=run.exit_code)
-            if run.signal is not None and not run.stopped_by_us:
-                state["reason"] = crash_reason(run.signal)
+            if run.crash is not None:
+                state["reason"] = run.crash
         return state
 
     def _json(self, handler):

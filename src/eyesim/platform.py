@@ -1,0 +1,326 @@
+"""What differs between Windows, macOS and Linux, behind one interface: starting a program with
+limits, ending it with everything it started, reading its output as it comes, where it finds
+libeyesim, and why it ended in words.
+
+POSIX: a process group per program (killpg ends the tree), rlimits set between fork and exec.
+Windows: a Job Object per program (the process starts suspended, joins the job, then runs, so
+nothing it starts escapes; closing or terminating the job ends the tree), with the job's per-process
+CPU-time and memory limits. Nothing POSIX-only is imported at module level anywhere else."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import threading
+from dataclasses import dataclass
+from pathlib import Path
+
+WINDOWS = os.name == "nt"
+MACOS = sys.platform == "darwin"
+
+if WINDOWS:
+    import ctypes
+    import socket
+    from ctypes import wintypes
+else:
+    import resource
+    import signal
+
+
+@dataclass(frozen=True)
+class Limits:
+    """A program's resource limits; None is no limit."""
+
+    cpu_seconds: float | None = None
+    memory_bytes: int | None = None
+
+    def __bool__(self) -> bool:
+        return self.cpu_seconds is not None or self.memory_bytes is not None
+
+
+# ---- Starting and ending programs ---------------------------------------------------------------
+
+def start(command: list[str], *, own_group: bool = False, limits: Limits = Limits(), **popen) -> subprocess.Popen:
+    """subprocess.Popen with the program in a group of its own (`own_group`: ending it ends what it
+    started) and under `limits`. On Windows a limited program always gets its own job."""
+    if WINDOWS:
+        return _start_in_job(command, own_group or bool(limits), limits, popen)
+    preexec = (lambda: _apply_rlimits(limits)) if limits else None
+    return subprocess.Popen(command, preexec_fn=preexec, start_new_session=own_group, **popen)
+
+
+def kill_tree(process: subprocess.Popen, own_group: bool) -> None:
+    """End at once the program and, when it has a group (or job) of its own, all it started, even
+    after the program itself has exited."""
+    if WINDOWS:
+        job = _jobs.pop(process.pid, None)
+        if job is not None:
+            _kernel32.TerminateJobObject(job, _KILLED_EXIT_CODE)
+            _kernel32.CloseHandle(job)
+            return
+    elif own_group:
+        try:
+            os.killpg(process.pid, signal.SIGKILL)
+        except (ProcessLookupError, PermissionError):
+            pass
+        return
+    try:
+        process.kill()
+    except OSError:
+        pass
+
+
+def ask_to_end(process: subprocess.Popen) -> None:
+    """Ask a program to end (SIGTERM). Windows has no such request for a console program that we
+    can rely on, so there it ends at once (TerminateProcess), as `kill_tree` would."""
+    if WINDOWS:
+        kill_tree(process, own_group=True)
+    else:
+        try:
+            process.terminate()
+        except OSError:
+            pass
+
+
+def release(process: subprocess.Popen) -> None:
+    """The program has been waited for: free what `start` holds for it (its Windows job, whose
+    closing also ends anything it left running)."""
+    if WINDOWS:
+        job = _jobs.pop(process.pid, None)
+        if job is not None:
+            _kernel32.CloseHandle(job)
+
+
+def _apply_rlimits(limits: Limits) -> None:
+    """Runs in the child between fork and exec: only async-signal-safe work (setrlimit)."""
+    if limits.cpu_seconds is not None:
+        soft = max(1, int(limits.cpu_seconds + 0.999))
+        resource.setrlimit(resource.RLIMIT_CPU, (soft, soft + 1))  # SIGXCPU, then SIGKILL a second later
+    if limits.memory_bytes is not None:
+        resource.setrlimit(resource.RLIMIT_AS, (limits.memory_bytes, limits.memory_bytes))
+
+
+# ---- Windows jobs ---------------------------------------------------------------------------------
+
+_KILLED_EXIT_CODE = 1  # what TerminateJobObject leaves as the exit code of the processes it ends
+_NOT_ENOUGH_QUOTA = 1816  # ERROR_NOT_ENOUGH_QUOTA: the exit code of a process over its job's CPU time
+_jobs: dict[int, int] = {}  # pid -> its job's handle
+
+if WINDOWS:
+    class _IoCounters(ctypes.Structure):
+        _fields_ = [(name, ctypes.c_ulonglong) for name in
+                    ("reads", "writes", "others", "read_bytes", "write_bytes", "other_bytes")]
+
+    class _BasicLimits(ctypes.Structure):
+        _fields_ = [("per_process_user_time", ctypes.c_int64), ("per_job_user_time", ctypes.c_int64),
+                    ("flags", wintypes.DWORD), ("min_working_set", ctypes.c_size_t),
+                    ("max_working_set", ctypes.c_size_t), ("active_processes", wintypes.DWORD),
+                    ("affinity", ctypes.c_size_t), ("priority_class", wintypes.DWORD),
+                    ("scheduling_class", wintypes.DWORD)]
+
+    class _ExtendedLimits(ctypes.Structure):
+        _fields_ = [("basic", _BasicLimits), ("io", _IoCounters), ("process_memory", ctypes.c_size_t),
+                    ("job_memory", ctypes.c_size_t), ("peak_process_memory", ctypes.c_size_t),
+                    ("peak_job_memory", ctypes.c_size_t)]
+
+    _kernel32 = ctypes.WinDLL("kernel32", use_last_error=True)
+    _kernel32.CreateJobObjectW.restype = wintypes.HANDLE
+    _kernel32.CreateJobObjectW.argtypes = (ctypes.c_void_p, wintypes.LPCWSTR)
+    _kernel32.SetInformationJobObject.argtypes = (wintypes.HANDLE, ctypes.c_int, ctypes.c_void_p, wintypes.DWORD)
+    _kernel32.AssignProcessToJobObject.argtypes = (wintypes.HANDLE, wintypes.HANDLE)
+    _kernel32.TerminateJobObject.argtypes = (wintypes.HANDLE, wintypes.UINT)
+    _kernel32.CloseHandle.argtypes = (wintypes.HANDLE,)
+    _ntdll = ctypes.WinDLL("ntdll")
+    _ntdll.NtResumeProcess.argtypes = (wintypes.HANDLE,)
+
+    _EXTENDED_LIMIT_INFORMATION = 9  # JobObjectExtendedLimitInformation
+    _LIMIT_PROCESS_TIME = 0x2
+    _LIMIT_PROCESS_MEMORY = 0x100
+    _LIMIT_KILL_ON_JOB_CLOSE = 0x2000
+    _CREATE_SUSPENDED = 0x4
+    _CREATE_NEW_PROCESS_GROUP = 0x200
+
+
+def _new_job(limits: Limits) -> int:
+    job = _kernel32.CreateJobObjectW(None, None)
+    if not job:
+        raise OSError(ctypes.get_last_error(), "cannot create a job object for the program")
+    info = _ExtendedLimits()
+    info.basic.flags = _LIMIT_KILL_ON_JOB_CLOSE
+    if limits.cpu_seconds is not None:
+        info.basic.flags |= _LIMIT_PROCESS_TIME
+        info.basic.per_process_user_time = int(limits.cpu_seconds * 10_000_000)  # 100 ns ticks
+    if limits.memory_bytes is not None:
+        info.basic.flags |= _LIMIT_PROCESS_MEMORY
+        info.process_memory = limits.memory_bytes
+    if not _kernel32.SetInformationJobObject(job, _EXTENDED_LIMIT_INFORMATION, ctypes.byref(info),
+                                             ctypes.sizeof(info)):
+        error = ctypes.get_last_error()
+        _kernel32.CloseHandle(job)
+        raise OSError(error, "cannot set the program's job limits")
+    return job
+
+
+def _start_in_job(command: list[str], own_job: bool, limits: Limits, popen: dict) -> subprocess.Popen:
+    if not own_job:
+        return subprocess.Popen(command, **popen)
+    job = _new_job(limits)
+    flags = popen.pop("creationflags", 0) | _CREATE_SUSPENDED | _CREATE_NEW_PROCESS_GROUP
+    try:
+        process = subprocess.Popen(command, creationflags=flags, **popen)
+    except OSError:
+        _kernel32.CloseHandle(job)
+        raise
+    handle = int(process._handle)  # the process handle Popen holds (there is no public name for it)
+    assigned = _kernel32.AssignProcessToJobObject(job, handle)
+    _ntdll.NtResumeProcess(handle)
+    if not assigned:
+        error = ctypes.get_last_error()
+        process.kill()
+        process.wait()
+        _kernel32.CloseHandle(job)
+        raise OSError(error, "cannot put the program in its job object")
+    _jobs[process.pid] = job
+    return process
+
+
+# ---- Reading a program's output -----------------------------------------------------------------
+
+def readable(pipe):
+    """Something the simulation thread's selector can watch for a child's output pipe, with a
+    non-blocking `read_available`. POSIX selectors take pipes; Windows' take only sockets, so there a
+    thread copies the pipe into a local socket pair."""
+    if WINDOWS:
+        return _PipeRelay(pipe)
+    os.set_blocking(pipe.fileno(), False)
+    return pipe
+
+
+def read_available(source, size: int) -> bytes | None:
+    """What `source` (from `readable`) holds now: bytes, b"" at its end, None when nothing is there yet."""
+    if WINDOWS:
+        return source.read_available(size)
+    try:
+        return os.read(source.fileno(), size)
+    except BlockingIOError:
+        return None
+    except OSError:
+        return b""
+
+
+class _PipeRelay:
+    """A Windows pipe seen through a socket: a thread reads the pipe and writes into one end of a
+    socket pair; the selector watches the other."""
+
+    def __init__(self, pipe):
+        self.pipe = pipe
+        self.inside, self.outside = socket.socketpair()
+        self.outside.setblocking(False)
+        threading.Thread(target=self._copy, daemon=True).start()
+
+    def _copy(self) -> None:
+        try:
+            while chunk := self.pipe.read1(65536):
+                self.inside.sendall(chunk)
+        except (OSError, ValueError):
+            pass
+        finally:
+            try:
+                self.inside.shutdown(socket.SHUT_WR)
+            except OSError:
+                pass
+            self.inside.close()
+
+    def fileno(self) -> int:
+        return self.outside.fileno()
+
+    def read_available(self, size: int) -> bytes | None:
+        try:
+            return self.outside.recv(size)
+        except BlockingIOError:
+            return None
+        except OSError:
+            return b""
+
+    def close(self) -> None:
+        self.outside.close()
+        self.pipe.close()
+
+
+# ---- Finding libeyesim ----------------------------------------------------------------------------
+
+def library_environment(env: dict[str, str], lib_dir: Path) -> dict[str, str]:
+    """`env` for a program that loads libeyesim from `lib_dir`. C programs built by `eyesim cc` find
+    it by their rpath (Linux, macOS) or beside the .exe (Windows); this is for the rest. Windows
+    looks for DLLs on PATH. On Linux, EyeSim-era eye.py files beside a Python program load it by
+    name (CDLL("libeyesim.so")), which only LD_LIBRARY_PATH serves."""
+    variable = "PATH" if WINDOWS else "LD_LIBRARY_PATH" if sys.platform.startswith("linux") else None
+    if variable is None:  # macOS: rpath and eye's full path are enough; DYLD_* is stripped by SIP anyway
+        return env
+    env[variable] = os.pathsep.join(part for part in (str(lib_dir), env.get(variable)) if part)
+    return env
+
+
+# ---- Why a program ended ----------------------------------------------------------------------------
+
+# Windows exception codes (NTSTATUS) a crashed program exits with, in words.
+WINDOWS_CRASHES = {
+    0xC0000005: "access violation",
+    0xC000001D: "illegal instruction",
+    0xC0000094: "integer division by zero",
+    0xC000008E: "floating-point division by zero",
+    0xC00000FD: "stack overflow",
+    0xC0000409: "stack buffer overrun or fast fail (abort)",
+    0xC0000374: "heap corruption",
+    0xC0000096: "privileged instruction",
+    0x80000003: "breakpoint",
+}
+WINDOWS_ENDED = {0xC000013A: "Ctrl-C", _NOT_ENOUGH_QUOTA: "its CPU time limit"}
+
+
+def exit_reason(code: int | None) -> str | None:
+    """Why a program with this exit status ended, in words, when it did not simply exit:
+    'crashed: segmentation fault (SIGSEGV)', 'crashed: access violation (0xC0000005)',
+    'was ended: its CPU time limit (SIGXCPU)'. None for an ordinary exit (or still running)."""
+    if code is None:
+        return None
+    if WINDOWS:
+        unsigned = code & 0xFFFFFFFF
+        if unsigned in WINDOWS_CRASHES:
+            return f"crashed: {WINDOWS_CRASHES[unsigned]} (0x{unsigned:08X})"
+        if unsigned in WINDOWS_ENDED:
+            return f"was ended: {WINDOWS_ENDED[unsigned]} (0x{unsigned:08X})" if unsigned > 0xFFFF \
+                else f"was ended: {WINDOWS_ENDED[unsigned]}"
+        return None
+    return signal_reason(-code) if code < 0 else None
+
+
+def signal_reason(number: int) -> str:
+    """'crashed: segmentation fault (SIGSEGV)'; the signals that stop a program on request or at
+    a limit say 'was ended'."""
+    try:
+        name = signal.Signals(number).name
+    except ValueError:
+        return f"was ended by signal {number}"
+    words = (signal.strsignal(number) or name).lower()
+    ended = {signal.SIGTERM, signal.SIGKILL, signal.SIGINT, signal.SIGHUP, signal.SIGXCPU}
+    if name == "SIGXCPU":
+        words = "its CPU time limit"
+    return f"{'was ended' if number in ended else 'crashed'}: {words} ({name})"
+
+
+def crashed(code: int | None) -> bool:
+    """Whether a program with this exit status crashed or was killed (not an ordinary exit)."""
+    reason = exit_reason(code)
+    return reason is not None
+
+
+def over_limit(code: int | None) -> bool:
+    """Whether a program with this exit status was ended for its CPU time (SIGXCPU, or SIGKILL
+    which follows it a second later; a job's quota on Windows)."""
+    if code is None:
+        return False
+    if WINDOWS:
+        return code & 0xFFFFFFFF == _NOT_ENOUGH_QUOTA
+    return code < 0 and -code in (signal.SIGXCPU, signal.SIGKILL)
