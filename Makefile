@@ -9,7 +9,7 @@ BIN := $(VENV)/bin
 SOURCES := $(shell find src robios protocol -type f -not -path '*/__pycache__/*' 2>/dev/null) pyproject.toml
 INSTALLED := $(VENV)/.installed
 
-.PHONY: demo test install viewer protocol schemas bench clean
+.PHONY: demo test install wheels viewer protocol schemas bench clean
 
 demo: $(INSTALLED) build/demo
 	$(BIN)/eyesim run --program 1=build/demo --open
@@ -50,6 +50,16 @@ system-packages:
 		fi; \
 	fi
 
+# Binary wheels for Linux x86_64, Windows amd64 and macOS arm64/x86_64 in dist/, the C library
+# cross-compiled for each with Zig (tools/build_wheels.py; intermediate files in build/wheels/).
+# Needs only .venv's Python with pip and ziglang, not EyeSim installed.
+wheels: $(VENV)/.ziglang
+	$(BIN)/python tools/build_wheels.py --out-dir dist
+
+$(VENV)/.ziglang: $(BIN)/python
+	$(BIN)/pip install --quiet "ziglang>=0.13"
+	touch $@
+
 # Rebuild the browser bundle committed in src/eyesim/web/static (needs Node.js and npm).
 viewer:
 	cd web && npm ci --no-audit --no-fund && npm run build
@@ -75,4 +85,4 @@ bench: $(INSTALLED)
 	$(BIN)/python bench/bench_grading.py
 
 clean:
-	rm -rf $(VENV) build
+	rm -rf $(VENV) build dist
