@@ -255,7 +255,7 @@ def library_environment(env: dict[str, str], lib_dir: Path) -> dict[str, str]:
     it by their rpath (Linux, macOS) or beside the .exe (Windows); this is for the rest. Windows
     looks for DLLs on PATH. On Linux, EyeSim-era eye.py files beside a Python program load it by
     name (CDLL("libeyesim.so")), which only LD_LIBRARY_PATH serves."""
-    variable = "PATH" if WINDOWS else "LD_LIBRARY_PATH" if sys.platform.startswith("linux") else None
+    variable = "PATH" if WINDOWS else None if MACOS else "LD_LIBRARY_PATH"
     if variable is None:  # macOS: rpath and eye's full path are enough; DYLD_* is stripped by SIP anyway
         return env
     env[variable] = os.pathsep.join(part for part in (str(lib_dir), env.get(variable)) if part)

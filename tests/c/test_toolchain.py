@@ -120,3 +120,69 @@ def test_python_m_eyesim_cc(robios_prefix, tmp_path):
                           capture_output=True, text=True, env=env, cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     assert subprocess.run([str(tmp_path / "m")]).returncode == 0
+
+
+# ---- Choosing the compiler --------------------------------------------------------------------
+
+def no_system_compiler(monkeypatch):
+    monkeypatch.delenv("CC", raising=False)
+    monkeypatch.delenv("CXX", raising=False)
+    monkeypatch.setattr(toolchain.shutil, "which", lambda name: None)
+
+
+def test_without_a_system_compiler_zig_from_the_ziglang_package_is_used(robios_prefix, monkeypatch):
+    no_system_compiler(monkeypatch)
+    assert toolchain.compiler_command("cc", ["-c", "a.c"], robios_prefix)[:4] == [sys.executable, "-m", "ziglang", "cc"]
+    assert toolchain.compiler_command("c++", ["-c", "a.cpp"], robios_prefix)[:4] == [sys.executable, "-m", "ziglang",
+                                                                                       "c++"]
+
+
+def test_with_no_compiler_at_all_the_error_says_what_to_install(robios_prefix, monkeypatch, capsys):
+    no_system_compiler(monkeypatch)
+    monkeypatch.setattr(toolchain.importlib.util, "find_spec", lambda name: None)
+    assert toolchain.run_compiler("cc", ["prog.c"], robios_prefix) == 1
+    err = capsys.readouterr().err
+    assert "no C compiler found" in err and "pip install ziglang" in err and "xcode-select --install" in err
+
+
+def test_a_program_built_with_zig_drives_a_robot(robios_prefix, tmp_path, monkeypatch):
+    """A student with nothing but Python: `eyesim cc` falls back to Zig's clang, and the program runs."""
+    from support.programs import read_trajectory, run_headless
+
+    no_system_compiler(monkeypatch)
+    monkeypatch.setenv("EYESIM_ROBIOS", str(robios_prefix))
+    source = tmp_path / "forward.c"
+    source.write_text('#include "eyebot.h"\nint main(void) { VWStraight(300, 200); VWWait(); return 0; }\n')
+    exe = tmp_path / "forward"
+    assert toolchain.run_compiler("cc", [str(source), "-o", str(exe)], robios_prefix) == 0
+    result = run_headless("--program", f"1={exe}", "--record", "path.csv", cwd=tmp_path)
+    assert result.returncode == 0, result.stdout + result.stderr
+    path = read_trajectory(tmp_path / "path.csv")[1]
+    moved = ((path[-1]["x"] - path[0]["x"]) ** 2 + (path[-1]["y"] - path[0]["y"]) ** 2) ** 0.5
+    assert moved == pytest.approx(0.300, abs=0.010)
+
+
+def test_verbose_shows_the_command_and_is_not_passed_on(robios_prefix, tmp_path, monkeypatch, capsys):
+    monkeypatch.setenv("EYESIM_ROBIOS", str(robios_prefix))
+    source = tmp_path / "v.c"
+    source.write_text('#include "eyebot.h"\nint main(void) { return 0; }\n')
+    args = parser_with_toolchain().parse_args(["cc", "--verbose", str(source), "-o", str(tmp_path / "v")])
+    assert args.func(args) == 0
+    shown = capsys.readouterr().err.strip().splitlines()[0]
+    assert "--verbose" not in shown and str(source) in shown and "-leyesim" in shown
+
+
+def test_on_windows_the_dll_is_put_beside_the_program(robios_prefix, tmp_path, monkeypatch):
+    from eyesim import platform
+
+    monkeypatch.setattr(platform, "WINDOWS", True)
+    lib = tmp_path / "robios" / "lib"
+    lib.mkdir(parents=True)
+    (lib / "eyesim.dll").write_bytes(b"MZ fake dll")
+    out = tmp_path / "out"
+    out.mkdir()
+    toolchain.place_library(["prog.c", "-o", "out/prog.exe"], cwd=tmp_path, prefix=tmp_path / "robios")
+    assert (out / "eyesim.dll").read_bytes() == b"MZ fake dll"
+    assert toolchain.executable_name(Path("build/prog")) == Path("build/prog.exe")
+    command = toolchain.compiler_command("cc", ["prog.c", "-o", "prog.exe"], robios_prefix)
+    assert "-lws2_32" in command and not any(arg.startswith("-Wl,-rpath") for arg in command)

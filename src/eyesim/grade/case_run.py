@@ -30,7 +30,7 @@ def _tail(text: str) -> str:
 def build(program, submission_files: dict[str, bytes], directory: Path) -> tuple[Path | None, dict]:
     """Build one of the spec's programs from the submission's files in `directory`;
     returns (executable or None, build record)."""
-    from eyesim.programs.toolchain import LibraryMissing, compiler_command
+    from eyesim.programs import toolchain
 
     sources: list[str] = []
     missing = []
@@ -45,15 +45,16 @@ def build(program, submission_files: dict[str, bytes], directory: Path) -> tuple
                       "output": f"no file matching {', '.join(map(repr, missing))} in the submission (its files: {listed})"}
     if program.language == "python":
         return directory / sources[0], {"ok": True, "status": "ok", "output": ""}
-    output = directory.parent / "build" / program.name
+    output = toolchain.executable_name(directory.parent / "build" / program.name)
     output.parent.mkdir(exist_ok=True)
     language = "c++" if program.language == "c++" else "cc"
     try:
         # Relative paths, run in the submission's copy: messages name the student's files, not
         # a temporary directory, so they are the same wherever the case runs.
-        command = compiler_command(language, [*program.flags, *sources, "-o", str(output)])
+        args = [*program.flags, *sources, "-o", str(output)]
+        command = toolchain.compiler_command(language, args)
         result = subprocess.run(command, cwd=directory, capture_output=True, text=True, timeout=COMPILE_TIMEOUT)
-    except LibraryMissing as error:
+    except (toolchain.LibraryMissing, toolchain.CompilerMissing) as error:
         return None, {"ok": False, "status": "grader_error", "output": str(error)}
     except FileNotFoundError:
         return None, {"ok": False, "status": "grader_error", "output": "the C compiler is not installed on this worker"}
@@ -62,6 +63,7 @@ def build(program, submission_files: dict[str, bytes], directory: Path) -> tuple
     text = _tail((result.stdout + result.stderr).replace(str(output.parent), "build"))
     if result.returncode != 0:
         return None, {"ok": False, "status": "compile_error", "output": text}
+    toolchain.place_library(args, cwd=directory)
     return output, {"ok": True, "status": "ok", "output": text}
 
 

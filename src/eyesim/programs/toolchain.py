@@ -1,18 +1,24 @@
-"""`eyesim cc` / `eyesim c++`: the system C/C++ compiler with the RoBIOS headers and libeyesim added."""
+"""`eyesim cc` / `eyesim c++`: a C/C++ compiler with the RoBIOS headers and libeyesim added.
+
+The compiler is $CC / $CXX when set, else the system's (cc, gcc, clang), else Zig's clang from
+the `ziglang` package (a dependency on Windows and macOS, the `zig` extra on Linux), so that a
+laptop with nothing but Python still compiles RoBIOS programs."""
 
 from __future__ import annotations
 
 import argparse
+import importlib.util
 import os
 import shlex
+import shutil
 import subprocess
 import sys
 from pathlib import Path
 
-from eyesim import paths
+from eyesim import paths, platform
 
-# language -> (environment variable naming the compiler, default compiler)
-COMPILERS = {"cc": ("CC", "cc"), "c++": ("CXX", "c++")}
+# language -> (environment variable naming the compiler, system compilers in order of preference)
+COMPILERS = {"cc": ("CC", ("cc", "gcc", "clang")), "c++": ("CXX", ("c++", "g++", "clang++"))}
 
 # Arguments after which the compiler does not link (or does nothing but report).
 NO_LINK_ARGS = frozenset({
@@ -25,6 +31,28 @@ LIBRARY_FILES = ("libeyesim.so", "libeyesim.a", "libeyesim.dylib", "eyesim.lib",
 
 class LibraryMissing(Exception):
     """The RoBIOS headers or libeyesim are not where eyesim.paths says."""
+
+
+class CompilerMissing(Exception):
+    """No C/C++ compiler: none named by $CC/$CXX, none on PATH, and no ziglang package."""
+
+
+def find_compiler(language: str) -> list[str]:
+    """The command that runs the compiler for `language` ("cc" or "c++")."""
+    variable, system = COMPILERS[language]
+    if os.environ.get(variable):
+        return shlex.split(os.environ[variable])  # $CC may carry flags: "ccache gcc"
+    for name in system:
+        if shutil.which(name):
+            return [name]
+    if importlib.util.find_spec("ziglang") is not None:
+        return [sys.executable, "-m", "ziglang", language]
+    raise CompilerMissing(
+        f"no {'C' if language == 'cc' else 'C++'} compiler found (looked for ${variable}, "
+        f"{', '.join(system)} and the ziglang package). Install one:\n"
+        f"  pip install ziglang            (any system: Zig's clang, which eyesim {language} then uses)\n"
+        f"  or the system's compiler: Debian/Ubuntu `sudo apt install build-essential`, "
+        f"Fedora `sudo dnf install gcc gcc-c++`, macOS `xcode-select --install`")
 
 
 # glibc's feature-test macros: a program that sets one has chosen which names it wants.
@@ -66,9 +94,7 @@ def compiler_command(language: str, args: list[str], prefix: Path | None = None)
     """The full compiler command line for `eyesim <language> args...`."""
     prefix = paths.robios_dir() if prefix is None else Path(prefix)
     check_library(prefix)
-    variable, default = COMPILERS[language]
-    compiler = shlex.split(os.environ.get(variable) or default)  # $CC may carry flags: "ccache gcc"
-    command = [*compiler, f"-I{prefix / 'include'}"]
+    command = [*find_compiler(language), f"-I{prefix / 'include'}"]
     if language == "cc" and not chooses_features(args):
         # EyeSim programs call usleep and use M_PI, which strict -std=c99/c11 hides; this asks for
         # them whatever the program includes first (C++ compilers define _GNU_SOURCE anyway).
@@ -76,19 +102,56 @@ def compiler_command(language: str, args: list[str], prefix: Path | None = None)
     command += args
     if links(args):
         lib_dir = prefix / "lib"
-        # Libraries after the sources (static linking needs that order); the rpath lets the
-        # program find libeyesim.so without LD_LIBRARY_PATH.
-        command += [f"-L{lib_dir}", f"-Wl,-rpath,{lib_dir}", "-leyesim", "-lpthread", "-lm"]
+        # Libraries after the sources (static linking needs that order). The rpath lets the
+        # program find libeyesim without LD_LIBRARY_PATH; Windows has none: the DLL is put beside
+        # the program instead (place_library).
+        if platform.WINDOWS:
+            command += [f"-L{lib_dir}", "-leyesim", "-lws2_32"]
+        else:
+            command += [f"-L{lib_dir}", f"-Wl,-rpath,{lib_dir}", "-leyesim", "-lpthread", "-lm"]
     return command
 
 
-def run_compiler(language: str, args: list[str], prefix: Path | None = None) -> int:
+def executable_name(path: Path) -> Path:
+    """A program's file name on this system: `prog.exe` on Windows, `prog` elsewhere."""
+    return path.with_name(path.name + ".exe") if platform.WINDOWS and path.suffix.lower() != ".exe" else path
+
+
+def output_of(args: list[str], cwd: Path | None = None) -> Path:
+    """The program a linking run writes (`-o NAME`, else the compiler's default)."""
+    for previous, arg in zip(["", *args], args):
+        if previous == "-o":
+            name = arg
+            break
+        if arg.startswith("-o") and len(arg) > 2:
+            name = arg[2:]
+            break
+    else:
+        name = "a.exe" if platform.WINDOWS else "a.out"
+    return Path(cwd or ".") / name
+
+
+def place_library(args: list[str], cwd: Path | None = None, prefix: Path | None = None) -> None:
+    """Windows finds a program's DLLs beside it (or on PATH): after linking, copy eyesim.dll next
+    to the program, so it runs from a terminal or Explorer too. Elsewhere the rpath does this."""
+    if not platform.WINDOWS or not links(args):
+        return
+    lib_dir = (paths.robios_dir() if prefix is None else Path(prefix)) / "lib"
+    dll = lib_dir / "eyesim.dll"
+    target = output_of(args, cwd).resolve().parent / dll.name
+    if dll.is_file() and target != dll.resolve():
+        shutil.copy2(dll, target)
+
+
+def run_compiler(language: str, args: list[str], prefix: Path | None = None, verbose: bool = False) -> int:
     """Runs the compiler; returns its exit status (1 when the library or compiler is missing)."""
     try:
         command = compiler_command(language, args, prefix)
-    except LibraryMissing as error:
+    except (LibraryMissing, CompilerMissing) as error:
         print(f"eyesim {language}: {error}", file=sys.stderr)
         return 1
+    if verbose:
+        print(shlex.join(command), file=sys.stderr)
     try:
         status = subprocess.call(command)
     except FileNotFoundError:
@@ -96,19 +159,28 @@ def run_compiler(language: str, args: list[str], prefix: Path | None = None) -> 
         print(f"eyesim {language}: compiler {command[0]!r} not found; install one or set {variable}",
               file=sys.stderr)
         return 1
+    if status == 0:
+        place_library(args, prefix=prefix)
     return 128 - status if status < 0 else status  # killed by a signal: the shell's convention
+
+
+def _compile(language: str, args: list[str]) -> int:
+    """`eyesim cc [--verbose] ARGS...`: --verbose is ours (it shows the command); the rest is the compiler's."""
+    verbose = "--verbose" in args
+    return run_compiler(language, [arg for arg in args if arg != "--verbose"], verbose=verbose)
 
 
 def register(subparsers) -> None:
     for language, what in (("cc", "C"), ("c++", "C++")):
-        variable, default = COMPILERS[language]
+        variable, system = COMPILERS[language]
         parser = subparsers.add_parser(
             language,
             help=f"compile a {what} RoBIOS program",
-            description=(f"Runs ${variable} (default {default}) with the RoBIOS headers and libeyesim, "
-                         f"e.g. `eyesim {language} prog.c -o prog`. Every argument goes to the compiler."),
+            description=(f"Runs ${variable} (else {', '.join(system)}, else Zig's clang from the ziglang "
+                         f"package) with the RoBIOS headers and libeyesim, e.g. `eyesim {language} prog.c -o prog`. "
+                         f"--verbose shows the command; every other argument goes to the compiler."),
             add_help=False,  # -h/--help belong to the compiler too
             prefix_chars="\0",  # no argument looks like an option: all of them pass through
         )
         parser.add_argument("args", nargs=argparse.REMAINDER, metavar="COMPILER_ARG")
-        parser.set_defaults(func=lambda ns, language=language: run_compiler(language, ns.args))
+        parser.set_defaults(func=lambda ns, language=language: _compile(language, ns.args))

@@ -341,11 +341,13 @@ class Simulation:
 
 def compile_program(source: Path, output: Path, flags=("-O2",), language: str = "cc") -> Path:
     """`eyesim cc` (or `eyesim c++`) a source file; raises CompileError with the compiler's output."""
-    from eyesim.programs.toolchain import LibraryMissing, compiler_command
+    from eyesim.programs import toolchain
 
+    output = toolchain.executable_name(Path(output))
+    args = [*flags, str(source), "-o", str(output)]
     try:
-        command = compiler_command(language, [*flags, str(source), "-o", str(output)])
-    except LibraryMissing as error:
+        command = toolchain.compiler_command(language, args)
+    except (toolchain.LibraryMissing, toolchain.CompilerMissing) as error:
         raise SimulationError(str(error)) from None
     try:
         result = subprocess.run(command, capture_output=True, text=True)
@@ -353,6 +355,7 @@ def compile_program(source: Path, output: Path, flags=("-O2",), language: str = 
         raise SimulationError(f"compiler {command[0]!r} not found") from None
     if result.returncode != 0:
         raise CompileError(str(source), result.stdout + result.stderr)
+    toolchain.place_library(args)
     return output
 
 

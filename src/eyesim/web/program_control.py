@@ -95,11 +95,13 @@ class ProgramControl:
         roots = self.roots()
         source = self._file(body, kinds=("c", "c++"))
         language = "cc" if program_files.kind_of(source) == "c" else "c++"
-        output = source.with_suffix("")
+        output = toolchain.executable_name(source.with_suffix(""))
         root = roots[body["root"]].path
-        command = toolchain.compiler_command(language, [source.relative_to(root).as_posix(), "-o",
-                                                        output.relative_to(root).as_posix()])
+        args = [source.relative_to(root).as_posix(), "-o", output.relative_to(root).as_posix()]
+        command = toolchain.compiler_command(language, args)
         result = await asyncio.get_running_loop().run_in_executor(None, _run_compiler, command, root)
+        if result.returncode == 0:
+            toolchain.place_library(args, cwd=root)
         text = result.stdout + result.stderr
         return {"ok": result.returncode == 0, "output": text,
                 "diagnostics": [_diagnostic(match) for match in DIAGNOSTIC.finditer(text)],
@@ -217,7 +219,7 @@ class ProgramControl:
                 return _error(str(error), error.status)
             except BadRequest as error:
                 return _error(str(error))
-            except toolchain.LibraryMissing as error:
+            except (toolchain.LibraryMissing, toolchain.CompilerMissing) as error:
                 return _error(str(error), 500)
             except Exception:  # a bug: this request fails, the simulator goes on
                 log.exception("viewer request %s failed", request.path)
