@@ -262,6 +262,14 @@ def library_environment(env: dict[str, str], lib_dir: Path) -> dict[str, str]:
     return env
 
 
+def is_executable(path: Path) -> bool:
+    """Whether a file is a program to run: an .exe on Windows (where every file passes os.access's
+    X_OK), a file with an execute bit elsewhere."""
+    if WINDOWS:
+        return path.suffix.lower() == ".exe" and path.is_file()
+    return path.is_file() and os.access(path, os.X_OK)
+
+
 # ---- Why a program ended ----------------------------------------------------------------------------
 
 # Windows exception codes (NTSTATUS) a crashed program exits with, in words.

@@ -9,6 +9,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+from eyesim import platform
 from eyesim.web.scene_files import FileAccessError, Root, SceneRoots, confined
 
 SKIPPED_FOLDERS = {"__pycache__", "node_modules", ".git", ".venv"}
@@ -34,7 +35,7 @@ def kind_of(path: Path) -> str | None:
         return "python"
     if suffix in SOURCE_KINDS:
         return SOURCE_KINDS[suffix]
-    if suffix not in NOT_PROGRAMS and os.access(path, os.X_OK):
+    if suffix not in NOT_PROGRAMS and platform.is_executable(path):
         return "executable"
     return None
 
