@@ -477,6 +477,34 @@ static inline int XInitThreads(void)
 }
 #endif
 
+/* ---- Windows: sleeping in simulation time ------------------------------------------------------
+ * On Linux and macOS libeyesim's own sleep, usleep, nanosleep (and clock_nanosleep) take the
+ * program's calls. Windows cannot reroute a function so: there these macros send the calls in code
+ * that includes eyebot.h to libeyesim, which waits in simulation time once the program is connected
+ * and in wall time (the system's function) before. Sleep (milliseconds) too when <windows.h> came
+ * before eyebot.h. See docs/c-library.md, "Sleeping". */
+#if defined(_WIN32)
+unsigned es_sleep(unsigned seconds);
+int es_usleep(useconds_t microseconds);
+int es_nanosleep(const struct timespec *request, struct timespec *remaining);
+int es_clock_nanosleep(clockid_t clock, int flags, const struct timespec *request, struct timespec *remaining);
+void __stdcall es_Sleep(unsigned long milliseconds);
+#ifndef EYESIM_BUILDING_LIBRARY
+#undef sleep
+#undef usleep
+#undef nanosleep
+#undef clock_nanosleep
+#define sleep(seconds) es_sleep(seconds)
+#define usleep(microseconds) es_usleep(microseconds)
+#define nanosleep(request, remaining) es_nanosleep(request, remaining)
+#define clock_nanosleep(clock, flags, request, remaining) es_clock_nanosleep(clock, flags, request, remaining)
+#if defined(_SYNCHAPI_H_)
+#undef Sleep
+#define Sleep(milliseconds) es_Sleep(milliseconds)
+#endif
+#endif
+#endif
+
 #ifdef __cplusplus
 }
 #endif

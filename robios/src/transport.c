@@ -2,26 +2,15 @@
 #include "transport.h"
 
 #include <errno.h>
-#include <fcntl.h>
 #include <math.h>
-#include <netdb.h>
-#include <netinet/in.h>
-#include <netinet/tcp.h>
-#include <poll.h>
 #include <pthread.h>
-#include <signal.h>
 #include <stdarg.h>
 #include <stdatomic.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <sys/socket.h>
-#include <time.h>
-#include <unistd.h>
-#if defined(__linux__)
-#include <dirent.h>
-#include <sys/syscall.h>
-#endif
+
+#include "platform.h" /* sockets, clocks, threads and the process: everything that differs by system */
 
 #define DEFAULT_CONNECT_TIMEOUT_S 10.0
 #define MIN_HANDSHAKE_TIMEOUT_S 5.0 /* a busy simulator may take a moment to answer HELLO */
@@ -29,10 +18,6 @@
 #define REPORTED_ERRORS_MAX 64
 #define WATCH_INTERVAL_MS 20 /* how often the watcher looks whether the program's own threads are gone */
 #define LIBRARY_THREADS_MAX 4
-
-#ifndef MSG_NOSIGNAL
-#define MSG_NOSIGNAL 0 /* macOS: SO_NOSIGPIPE is set on the socket instead */
-#endif
 
 /* A caller waiting for the reply to its request; lives on the caller's stack. */
 typedef struct waiter {
@@ -43,11 +28,11 @@ typedef struct waiter {
     struct waiter *next;
 } waiter;
 
-/* Results of reading from the socket besides 0 (ok) and a positive errno. */
+/* Results of reading from the socket besides 0 (ok) and a positive socket error code. */
 enum { READ_EOF = -1, READ_TIMEOUT = -2, READ_BAD_LENGTH = -3, READ_NO_MEMORY = -4 };
 
 static pthread_once_t connect_once = PTHREAD_ONCE_INIT;
-static int sock = -1;
+static es_socket sock = ES_NO_SOCKET;
 static char address[300]; /* "host:port", for messages */
 
 static pthread_mutex_t send_lock = PTHREAD_MUTEX_INITIALIZER; /* whole frames, one at a time */
@@ -70,15 +55,9 @@ static unsigned reported_count;
 static _Thread_local uint8_t *kept_reply; /* backs text/array results until the thread's next call */
 static atomic_bool connected;             /* the handshake is done */
 
-static atomic_long library_tids[LIBRARY_THREADS_MAX]; /* kernel ids of the library's threads (0 = free) */
+static atomic_long library_tids[LIBRARY_THREADS_MAX]; /* system ids of the library's threads (0 = free) */
 
 /* ---- Ending the program ------------------------------------------------------------------------ */
-
-static _Noreturn void wait_for_exit(void)
-{
-    for (;;)
-        pause();
-}
 
 _Noreturn void es_fatal(int status, const char *format, ...)
 {
@@ -102,8 +81,8 @@ _Noreturn void es_fatal(int status, const char *format, ...)
         exit(status); /* exit, not _exit: the program's buffered stdout still gets written */
     }
     if (again)
-        _exit(status); /* failed again inside exit() (an atexit handler): do not re-enter exit */
-    wait_for_exit(); /* another thread is ending the program */
+        _Exit(status); /* failed again inside exit() (an atexit handler): do not re-enter exit */
+    es_wait_forever(); /* another thread is ending the program */
 }
 
 /* True for the thread that is ending the program (its atexit handlers may still call the API: they
@@ -115,7 +94,7 @@ static bool program_ending(void)
     bool other = ending && !mine;
     pthread_mutex_unlock(&ending_lock);
     if (other)
-        wait_for_exit();
+        es_wait_forever();
     return mine;
 }
 
@@ -142,12 +121,10 @@ static void connection_lost(const char *reason)
 
 static double now_s(void)
 {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec / 1e9;
+    return es_monotonic_s();
 }
 
-/* Milliseconds left until `deadline` (a now_s time), for poll; a negative deadline means never. */
+/* Milliseconds left until `deadline` (a now_s time); a negative deadline means never. */
 static int ms_until(double deadline)
 {
     if (deadline < 0)
@@ -156,52 +133,30 @@ static int ms_until(double deadline)
     return left <= 0 ? 0 : left > 1e9 ? 1000000000 : (int)ceil(left);
 }
 
-/* A pause in wall time. poll, not nanosleep: libeyesim reroutes nanosleep into simulation time. */
-static void sleep_ms(int ms)
-{
-    double deadline = now_s() + ms / 1000.0;
-    while (poll(NULL, 0, ms_until(deadline)) < 0 && errno == EINTR) {
-    }
-}
-
 /* ---- Socket I/O -------------------------------------------------------------------------------- */
 
+/* Socket errors are the system's codes (es_socket_error_text), besides the READ_* results. */
 static int send_all(const uint8_t *data, size_t len)
 {
-    while (len > 0) {
-        ssize_t n = send(sock, data, len, MSG_NOSIGNAL);
-        if (n < 0) {
-            if (errno == EINTR)
-                continue;
-            return errno;
-        }
-        data += n;
-        len -= (size_t)n;
-    }
-    return 0;
+    return es_socket_send_all(sock, data, len);
 }
 
 static int recv_exact(uint8_t *data, size_t len, double deadline)
 {
+    int error = 0;
     while (len > 0) {
         if (deadline >= 0) {
-            struct pollfd p = {.fd = sock, .events = POLLIN};
-            int ready = poll(&p, 1, ms_until(deadline));
-            if (ready < 0 && errno == EINTR)
-                continue;
+            int ready = es_socket_wait_readable(sock, ms_until(deadline), &error);
             if (ready < 0)
-                return errno;
+                return error;
             if (ready == 0)
                 return READ_TIMEOUT;
         }
-        ssize_t n = recv(sock, data, len, 0);
+        long n = es_socket_receive(sock, data, len, &error);
         if (n == 0)
             return READ_EOF;
-        if (n < 0) {
-            if (errno == EINTR)
-                continue;
-            return errno;
-        }
+        if (n < 0)
+            return error;
         data += n;
         len -= (size_t)n;
     }
@@ -234,7 +189,7 @@ static const char *read_error(int rc)
     case READ_TIMEOUT: return "timed out";
     case READ_BAD_LENGTH: return "frame length outside the protocol's limits";
     case READ_NO_MEMORY: return "out of memory";
-    default: return strerror(rc);
+    default: return es_socket_error_text(rc);
     }
 }
 
@@ -333,25 +288,16 @@ static void pass_on_reading(void)
 
 /* ---- The library's threads ---------------------------------------------------------------------- */
 
-static long thread_id(void)
-{
-#if defined(__linux__)
-    return (long)syscall(SYS_gettid);
-#else
-    return 0;
-#endif
-}
-
 typedef struct {
     void *(*run)(void *);
 } library_start;
 
-/* Every library thread notes its kernel id first, so the watcher does not count it as the program's. */
+/* Every library thread notes its system id first, so the watcher does not count it as the program's. */
 static void *run_library_thread(void *arg)
 {
     library_start start = *(library_start *)arg;
     free(arg);
-    long id = thread_id();
+    long id = es_thread_id();
     for (int k = 0; k < LIBRARY_THREADS_MAX; k++) {
         long free_slot = 0;
         if (atomic_compare_exchange_strong(&library_tids[k], &free_slot, id))
@@ -366,23 +312,12 @@ int es_start_library_thread(void *(*run)(void *))
     if (!start)
         return ENOMEM;
     start->run = run;
-    /* The library's threads must never run the program's signal handlers: block everything. */
-    sigset_t all, old;
-    sigfillset(&all);
-    pthread_sigmask(SIG_SETMASK, &all, &old);
-    pthread_attr_t attr;
-    pthread_attr_init(&attr);
-    pthread_attr_setdetachstate(&attr, PTHREAD_CREATE_DETACHED);
-    pthread_t thread;
-    int rc = pthread_create(&thread, &attr, run_library_thread, start);
-    pthread_attr_destroy(&attr);
-    pthread_sigmask(SIG_SETMASK, &old, NULL);
+    int rc = es_start_detached_thread(run_library_thread, start);
     if (rc)
         free(start);
     return rc;
 }
 
-#if defined(__linux__)
 static bool is_library_thread(long id)
 {
     for (int k = 0; k < LIBRARY_THREADS_MAX; k++)
@@ -391,46 +326,15 @@ static bool is_library_thread(long id)
     return false;
 }
 
-/* A thread that has ended but is still listed: the main thread after pthread_exit stays a zombie
- * until the whole process ends. Unreadable means it is gone. */
-static bool thread_ended(const char *id)
-{
-    char path[64], stat[512];
-    snprintf(path, sizeof path, "/proc/self/task/%s/stat", id);
-    FILE *file = fopen(path, "re");
-    if (!file)
-        return true;
-    size_t n = fread(stat, 1, sizeof stat - 1, file);
-    fclose(file);
-    stat[n] = '\0';
-    const char *name_end = strrchr(stat, ')'); /* "tid (name) S ...": the name may hold anything */
-    return !name_end || name_end[1] != ' ' || name_end[2] == 'Z' || name_end[2] == 'X';
-}
-
-/* True while a thread of the program's own (not one of the library's) is alive. */
-static bool program_threads_alive(void)
-{
-    DIR *tasks = opendir("/proc/self/task");
-    if (!tasks)
-        return true; /* cannot tell: keep the program as it is */
-    bool alive = false;
-    struct dirent *entry;
-    while (!alive && (entry = readdir(tasks)))
-        if (entry->d_name[0] != '.' && !is_library_thread(atol(entry->d_name)))
-            alive = !thread_ended(entry->d_name);
-    closedir(tasks);
-    return alive;
-}
-
 /* The simulator closed the connection while no call reads it (the program computes): the program
  * ends now, as it would at its next call. A caller that reads sees the end itself. */
 static bool simulator_hung_up(void)
 {
+    /* Asked under wait_lock, so no caller starts reading (and takes bytes away) meanwhile. */
     pthread_mutex_lock(&wait_lock);
-    bool idle = !reading;
+    bool closed = !reading && es_socket_peer_closed(sock);
     pthread_mutex_unlock(&wait_lock);
-    struct pollfd p = {.fd = sock, .events = POLLRDHUP};
-    return idle && poll(&p, 1, 0) == 1 && (p.revents & (POLLRDHUP | POLLHUP)) && !atomic_load(&exiting);
+    return closed && !atomic_load(&exiting);
 }
 
 /* A process ends when its last thread ends; the library's threads would keep it alive for ever
@@ -442,23 +346,20 @@ static void *watch_program(void *unused)
 {
     (void)unused;
     for (;;) {
-        sleep_ms(WATCH_INTERVAL_MS);
-        if (!program_threads_alive())
+        es_pause_ms(WATCH_INTERVAL_MS);
+        if (!es_program_threads_alive(is_library_thread))
             exit(0);
         if (simulator_hung_up())
             connection_lost("connection closed");
     }
 }
-#endif
 
 static void start_library_threads(void)
 {
-#if defined(__linux__)
     int rc = es_start_library_thread(watch_program);
     if (rc)
         fprintf(stderr, "eyesim: cannot start the thread that ends the program with its own threads (%s)\n",
                 strerror(rc));
-#endif
 }
 
 /* ---- Connecting -------------------------------------------------------------------------------- */
@@ -470,18 +371,6 @@ static uint32_t new_request_id(void)
         id = atomic_fetch_add(&last_request_id, 1u) + 1u;
     while (id == 0);
     return id;
-}
-
-static const char *program_name(void)
-{
-#if defined(__linux__)
-    extern char *program_invocation_short_name;
-    return program_invocation_short_name;
-#elif defined(__APPLE__) || defined(__FreeBSD__)
-    return getprogname();
-#else
-    return "";
-#endif
 }
 
 static double connect_timeout(void)
@@ -499,54 +388,31 @@ static double connect_timeout(void)
     return seconds;
 }
 
-/* One connection attempt to one address, giving up after timeout_ms. Returns the socket or -1. */
-static int try_connect(const struct addrinfo *ai, int timeout_ms, int *error)
+/* One connection attempt to one address, giving up after timeout_ms. Returns the socket or
+ * ES_NO_SOCKET with *error set. */
+static es_socket try_connect(const struct addrinfo *ai, int timeout_ms, int *error)
 {
-    /* Close-on-exec: programs the robot program starts must not hold the connection open. */
-#ifdef SOCK_CLOEXEC
-    int fd = socket(ai->ai_family, ai->ai_socktype | SOCK_CLOEXEC, ai->ai_protocol);
-#else
-    int fd = socket(ai->ai_family, ai->ai_socktype, ai->ai_protocol);
-    if (fd >= 0)
-        fcntl(fd, F_SETFD, FD_CLOEXEC);
-#endif
-    if (fd < 0) {
-        *error = errno;
-        return -1;
+    es_socket fd = es_socket_open(ai->ai_family, ai->ai_socktype, ai->ai_protocol, error);
+    if (fd == ES_NO_SOCKET)
+        return fd;
+    if ((*error = es_socket_connect(fd, ai->ai_addr, ai->ai_addrlen, timeout_ms))) {
+        es_socket_close(fd);
+        return ES_NO_SOCKET;
     }
-    int flags = fcntl(fd, F_GETFL);
-    fcntl(fd, F_SETFL, flags | O_NONBLOCK); /* so an unreachable host cannot outlast the timeout */
-    int rc = connect(fd, ai->ai_addr, ai->ai_addrlen);
-    if (rc < 0 && (errno == EINPROGRESS || errno == EINTR)) {
-        struct pollfd p = {.fd = fd, .events = POLLOUT};
-        rc = poll(&p, 1, timeout_ms);
-        if (rc == 0) {
-            errno = ETIMEDOUT;
-            rc = -1;
-        } else if (rc > 0) {
-            socklen_t size = sizeof *error;
-            getsockopt(fd, SOL_SOCKET, SO_ERROR, error, &size);
-            rc = *error ? -1 : 0;
-            errno = *error;
-        }
-    }
-    if (rc < 0) {
-        *error = errno;
-        close(fd);
-        return -1;
-    }
-    fcntl(fd, F_SETFL, flags);
     return fd;
 }
 
 /* Connects to host:port, retrying until `timeout` seconds have passed. */
-static int open_connection(const char *host, const char *port, double timeout)
+static es_socket open_connection(const char *host, const char *port, double timeout)
 {
+    int rc = es_net_start();
+    if (rc)
+        es_fatal(ES_EXIT_NO_SIMULATOR, "cannot start the network library (%s)", es_socket_error_text(rc));
     struct addrinfo hints = {0}, *found;
     hints.ai_family = AF_UNSPEC;
     hints.ai_socktype = SOCK_STREAM;
     hints.ai_flags = AI_NUMERICSERV;
-    int rc = getaddrinfo(host, port, &hints, &found);
+    rc = getaddrinfo(host, port, &hints, &found);
     if (rc)
         es_fatal(ES_EXIT_NO_SIMULATOR, "cannot find the simulator's host %s (%s); check EYESIM_HOST", host,
                  gai_strerror(rc));
@@ -557,8 +423,8 @@ static int open_connection(const char *host, const char *port, double timeout)
     for (;;) {
         for (struct addrinfo *ai = found; ai; ai = ai->ai_next) {
             int wait_ms = ms_until(deadline);
-            int fd = try_connect(ai, wait_ms < 50 ? 50 : wait_ms > 1000 ? 1000 : wait_ms, &error);
-            if (fd >= 0) {
+            es_socket fd = try_connect(ai, wait_ms < 50 ? 50 : wait_ms > 1000 ? 1000 : wait_ms, &error);
+            if (fd != ES_NO_SOCKET) {
                 freeaddrinfo(found);
                 return fd;
             }
@@ -568,12 +434,12 @@ static int open_connection(const char *host, const char *port, double timeout)
             es_fatal(ES_EXIT_NO_SIMULATOR,
                      "no simulator answered at %s within %g s (%s); start the simulator first, or set "
                      "EYESIM_HOST/EYESIM_PORT",
-                     address, timeout, strerror(error));
+                     address, timeout, es_socket_error_text(error));
         if (!announced) {
             fprintf(stderr, "eyesim: waiting for the simulator at %s (set EYESIM_HOST/EYESIM_PORT) ...\n", address);
             announced = true;
         }
-        sleep_ms(left_ms < RETRY_INTERVAL_MS ? left_ms : RETRY_INTERVAL_MS);
+        es_pause_ms(left_ms < RETRY_INTERVAL_MS ? left_ms : RETRY_INTERVAL_MS);
     }
 }
 
@@ -581,7 +447,8 @@ static int open_connection(const char *host, const char *port, double timeout)
 static void handshake(double timeout)
 {
     const char *robot = getenv("EYESIM_ROBOT");
-    es_value hello[4] = {es_int(ES_PROTOCOL_VERSION), es_text(robot), es_text(program_name()), es_int(getpid())};
+    es_value hello[4] = {es_int(ES_PROTOCOL_VERSION), es_text(robot), es_text(es_program_name()),
+                          es_int(es_process_id())};
     uint32_t id = new_request_id();
     es_buf frame = {0};
     if (es_encode_message(&frame, ES_OP_HELLO, ES_KIND_REQUEST, id, hello) != ES_CODEC_OK)
@@ -590,7 +457,7 @@ static void handshake(double timeout)
     es_buf_free(&frame);
     if (rc)
         es_fatal(ES_EXIT_CONNECTION_LOST, "the simulator at %s closed the connection during the handshake (%s)",
-                 address, strerror(rc));
+                 address, es_socket_error_text(rc));
 
     uint8_t *body;
     uint32_t len;
@@ -639,11 +506,7 @@ static void connect_to_simulator(void)
 
     double timeout = connect_timeout();
     sock = open_connection(host, port, timeout);
-    int on = 1;
-    setsockopt(sock, IPPROTO_TCP, TCP_NODELAY, &on, sizeof on); /* calls are small and latency-bound */
-#ifdef SO_NOSIGPIPE
-    setsockopt(sock, SOL_SOCKET, SO_NOSIGPIPE, &on, sizeof on);
-#endif
+    es_socket_configure(sock);
     handshake(timeout);
     atexit(note_exit);
     start_library_threads();
@@ -696,10 +559,9 @@ static int take_reply(const char *function, uint16_t op, uint8_t *body, uint32_t
  * caller is the program's own thread; the library's threads (timer callbacks) do not count. */
 static void note_calling_thread(void)
 {
-#if defined(__linux__)
     static atomic_long first_caller;
     static atomic_bool told;
-    long id = thread_id();
+    long id = es_thread_id();
     long none = 0;
     if (!id || atomic_compare_exchange_strong(&first_caller, &none, id) || none == id || is_library_thread(id))
         return;
@@ -707,7 +569,6 @@ static void note_calling_thread(void)
         es_value reply[1];
         es_call("THREADS", ES_OP_THREADS, NULL, reply);
     }
-#endif
 }
 
 int es_call(const char *function, uint16_t op, const es_value *args, es_value *results)
@@ -753,7 +614,7 @@ int es_call(const char *function, uint16_t op, const es_value *args, es_value *r
         rc = send_all(frame.data, frame.len);
         pthread_mutex_unlock(&send_lock);
         if (rc)
-            connection_lost(strerror(rc)); /* returns only while the program is exiting anyway */
+            connection_lost(es_socket_error_text(rc)); /* returns only while the program is exiting anyway */
     }
     es_buf_free(&frame);
 
