@@ -160,3 +160,17 @@ def test_applied_settings_are_the_scenes_and_the_psds():
     assert len(set(noisy)) > 5
     apply_settings(sim, psd_noise=30.0, seed=3)
     assert [psd.distance_mm() for _ in range(20)] == noisy  # the same seed, the same noise
+
+
+INJECTED_OPTIONS = "-wrapper /bin/sh,-c,touch${IFS}INJECTED\n"
+
+
+def test_a_file_named_like_a_response_file_is_compiled_as_a_file(simulator):
+    """`@opts.c` would make gcc read options from opts.c (`-wrapper` runs any command): the viewer
+    passes it as ./@opts.c, a source file that does not compile, and nothing runs."""
+    url, folder = simulator
+    (folder / "opts.c").write_text(INJECTED_OPTIONS)
+    (folder / "@opts.c").write_text(INJECTED_OPTIONS)
+    status, result = call(url, "/api/programs/compile", {"root": 0, "path": "@opts.c"})
+    assert status == 200 and result["ok"] is False and "error" in result["output"]
+    assert not (folder / "INJECTED").exists()

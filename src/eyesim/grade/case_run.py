@@ -51,7 +51,7 @@ def build(program, submission_files: dict[str, bytes], directory: Path) -> tuple
     try:
         # Relative paths, run in the submission's copy: messages name the student's files, not
         # a temporary directory, so they are the same wherever the case runs.
-        args = [*program.flags, *sources, "-o", str(output)]
+        args = [*program.flags, *map(toolchain.source_argument, sources), "-o", str(output)]
         command = toolchain.compiler_command(language, args)
         result = subprocess.run(command, cwd=directory, capture_output=True, text=True, timeout=COMPILE_TIMEOUT)
     except (toolchain.LibraryMissing, toolchain.CompilerMissing) as error:

@@ -112,6 +112,14 @@ def compiler_command(language: str, args: list[str], prefix: Path | None = None)
     return command
 
 
+def source_argument(name: str) -> str:
+    """A source file's name as a compiler argument that can only be a file: `./-x.c` and
+    `./@opts.c`, never an option (`-wrapper ...`) or a response file (`@opts.c`, whose contents gcc
+    and clang read as more options). For the grader and the viewer, which pass file names that a
+    student chose."""
+    return f"./{name}" if name.startswith(("-", "@")) else name
+
+
 def executable_name(path: Path) -> Path:
     """A program's file name on this system: `prog.exe` on Windows, `prog` elsewhere."""
     return path.with_name(path.name + ".exe") if platform.WINDOWS and path.suffix.lower() != ".exe" else path

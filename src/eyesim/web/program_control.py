@@ -97,7 +97,8 @@ class ProgramControl:
         language = "cc" if program_files.kind_of(source) == "c" else "c++"
         output = toolchain.executable_name(source.with_suffix(""))
         root = roots[body["root"]].path
-        args = [source.relative_to(root).as_posix(), "-o", output.relative_to(root).as_posix()]
+        args = [toolchain.source_argument(source.relative_to(root).as_posix()), "-o",
+                toolchain.source_argument(output.relative_to(root).as_posix())]
         command = toolchain.compiler_command(language, args)
         result = await asyncio.get_running_loop().run_in_executor(None, _run_compiler, command, root)
         if result.returncode == 0:
