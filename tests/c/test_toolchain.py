@@ -19,7 +19,7 @@ def test_linking_adds_the_library_after_the_arguments(robios_prefix, monkeypatch
     monkeypatch.delenv("CC", raising=False)
     command = toolchain.compiler_command("cc", ["prog.c", "-o", "prog"], robios_prefix)
     lib = robios_prefix / "lib"
-    assert command == ["cc", f"-I{robios_prefix / 'include'}", "-D_DEFAULT_SOURCE", "prog.c", "-o", "prog",
+    assert command == ["cc", "-Wall", f"-I{robios_prefix / 'include'}", "-D_DEFAULT_SOURCE", "prog.c", "-o", "prog",
                        f"-L{lib}", f"-Wl,-rpath,{lib}", "-leyesim", "-lpthread", "-lm"]
 
 
@@ -186,3 +186,19 @@ def test_on_windows_the_dll_is_put_beside_the_program(robios_prefix, tmp_path, m
     assert toolchain.executable_name(Path("build/prog")) == Path("build/prog.exe")
     command = toolchain.compiler_command("cc", ["prog.c", "-o", "prog.exe"], robios_prefix)
     assert "-lws2_32" in command and not any(arg.startswith("-Wl,-rpath") for arg in command)
+
+
+def test_warnings_are_on_by_default_and_shown(robios_prefix, tmp_path, monkeypatch, capfd):
+    """A missing LCDPrintf argument and an uninitialised variable compile, with a word about each;
+    --no-warnings leaves -Wall out."""
+    monkeypatch.setenv("EYESIM_ROBIOS", str(robios_prefix))
+    source = tmp_path / "sloppy.c"
+    source.write_text('#include "eyebot.h"\nint main(void) { int n; LCDPrintf("%d %d\\n", 1); return n; }\n')
+    parser = parser_with_toolchain()
+    args = parser.parse_args(["cc", str(source), "-o", str(tmp_path / "sloppy")])
+    assert args.func(args) == 0
+    err = capfd.readouterr().err
+    assert "-Wformat" in err and "-Wuninitialized" in err
+    args = parser.parse_args(["cc", "--no-warnings", str(source), "-o", str(tmp_path / "sloppy")])
+    assert args.func(args) == 0
+    assert "warning" not in capfd.readouterr().err

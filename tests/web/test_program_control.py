@@ -174,3 +174,13 @@ def test_a_file_named_like_a_response_file_is_compiled_as_a_file(simulator):
     status, result = call(url, "/api/programs/compile", {"root": 0, "path": "@opts.c"})
     assert status == 200 and result["ok"] is False and "error" in result["output"]
     assert not (folder / "INJECTED").exists()
+
+
+def test_compiler_warnings_come_back_with_a_built_program(simulator):
+    url, folder = simulator
+    (folder / "sloppy.c").write_text('#include "eyebot.h"\nint main(void) { int n; LCDPrintf("%d\\n"); return n; }\n')
+    status, result = call(url, "/api/programs/compile", {"root": 0, "path": "sloppy.c"})
+    assert status == 200 and result["ok"] is True and result["program"] is not None
+    warnings = [d for d in result["diagnostics"] if d["kind"] == "warning"]
+    assert {d["line"] for d in warnings} == {2} and any("-Wformat" in d["message"] for d in warnings)
+    assert "warning:" in result["output"]

@@ -90,11 +90,19 @@ def check_library(prefix: Path) -> None:
         f"and set EYESIM_ROBIOS=<checkout>/build/robios")
 
 
-def compiler_command(language: str, args: list[str], prefix: Path | None = None) -> list[str]:
-    """The full compiler command line for `eyesim <language> args...`."""
+# On by default: a missing LCDPrintf argument or an uninitialised variable is worth a word. Not
+# -Wextra: EyeSim-era programs' `int main(int argc, char *argv[])` and int/unsigned comparisons
+# would each earn a warning that teaches nothing.
+WARNINGS = ("-Wall",)
+
+
+def compiler_command(language: str, args: list[str], prefix: Path | None = None,
+                     warnings: bool = True) -> list[str]:
+    """The full compiler command line for `eyesim <language> args...`; `warnings`: add -Wall
+    before the arguments (so that their -Wno-... still win)."""
     prefix = paths.robios_dir() if prefix is None else Path(prefix)
     check_library(prefix)
-    command = [*find_compiler(language), f"-I{prefix / 'include'}"]
+    command = [*find_compiler(language), *(WARNINGS if warnings else ()), f"-I{prefix / 'include'}"]
     if language == "cc" and not chooses_features(args):
         # EyeSim programs call usleep and use M_PI, which strict -std=c99/c11 hides; this asks for
         # them whatever the program includes first (C++ compilers define _GNU_SOURCE anyway).
@@ -151,10 +159,11 @@ def place_library(args: list[str], cwd: Path | None = None, prefix: Path | None 
         shutil.copy2(dll, target)
 
 
-def run_compiler(language: str, args: list[str], prefix: Path | None = None, verbose: bool = False) -> int:
+def run_compiler(language: str, args: list[str], prefix: Path | None = None, verbose: bool = False,
+                 warnings: bool = True) -> int:
     """Runs the compiler; returns its exit status (1 when the library or compiler is missing)."""
     try:
-        command = compiler_command(language, args, prefix)
+        command = compiler_command(language, args, prefix, warnings)
     except (LibraryMissing, CompilerMissing) as error:
         print(f"eyesim {language}: {error}", file=sys.stderr)
         return 1
@@ -172,10 +181,14 @@ def run_compiler(language: str, args: list[str], prefix: Path | None = None, ver
     return 128 - status if status < 0 else status  # killed by a signal: the shell's convention
 
 
+OUR_OPTIONS = ("--verbose", "--no-warnings")
+
+
 def _compile(language: str, args: list[str]) -> int:
-    """`eyesim cc [--verbose] ARGS...`: --verbose is ours (it shows the command); the rest is the compiler's."""
-    verbose = "--verbose" in args
-    return run_compiler(language, [arg for arg in args if arg != "--verbose"], verbose=verbose)
+    """`eyesim cc [--verbose] [--no-warnings] ARGS...`: those two are ours (show the command; leave
+    out -Wall); the rest is the compiler's."""
+    return run_compiler(language, [arg for arg in args if arg not in OUR_OPTIONS], verbose="--verbose" in args,
+                        warnings="--no-warnings" not in args)
 
 
 def register(subparsers) -> None:
@@ -186,7 +199,8 @@ def register(subparsers) -> None:
             help=f"compile a {what} RoBIOS program",
             description=(f"Runs ${variable} (else {', '.join(system)}, else Zig's clang from the ziglang "
                          f"package) with the RoBIOS headers and libeyesim, e.g. `eyesim {language} prog.c -o prog`. "
-                         f"--verbose shows the command; every other argument goes to the compiler."),
+                         f"It adds -Wall (--no-warnings leaves it out); --verbose shows the command; every other "
+                         f"argument goes to the compiler."),
             add_help=False,  # -h/--help belong to the compiler too
             prefix_chars="\0",  # no argument looks like an option: all of them pass through
         )
