@@ -11,8 +11,12 @@ INSTALLED := $(VENV)/.installed
 
 .PHONY: demo test install wheels viewer protocol schemas bench clean
 
+# `make demo PORT=9800 VIEWER_PORT=8081` when the default ports are taken (0: any free port).
+PORT ?= 9797
+VIEWER_PORT ?= 8080
+
 demo: $(INSTALLED) build/demo
-	$(BIN)/eyesim run --program 1=build/demo --open
+	$(BIN)/eyesim run --program 1=build/demo --port $(PORT) --viewer-port $(VIEWER_PORT) --open
 
 test: $(INSTALLED) system-packages
 	$(BIN)/pytest -q

@@ -17,7 +17,10 @@ SUBCOMMAND_MODULES = (
 
 
 def build_parser() -> argparse.ArgumentParser:
+    from eyesim import __version__
+
     parser = argparse.ArgumentParser(prog="eyesim", description="EyeSim robot simulator")
+    parser.add_argument("--version", action="version", version=f"eyesim {__version__}")
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
     for name in SUBCOMMAND_MODULES:
         importlib.import_module(name).register(subparsers)
@@ -31,7 +34,14 @@ def main(argv: list[str] | None = None) -> int:
     if not getattr(args, "func", None):
         parser.print_help()
         return 2
-    return int(args.func(args) or 0)
+    try:
+        return int(args.func(args) or 0)
+    except KeyboardInterrupt:  # Ctrl-C: the shell's status for SIGINT, as other tools give
+        print("\neyesim: interrupted", file=sys.stderr)
+        return INTERRUPTED
+
+
+INTERRUPTED = 130
 
 
 if __name__ == "__main__":

@@ -137,6 +137,8 @@ def status_line(robot, run) -> str:
         return line + f", program {run.name}: {run.error}"
     if run.stopped_by_us:
         return line + f", program {run.name}: still running at the end (stopped)"
+    if run.crash is not None:
+        return line + f", program {run.name}: {run.crash}"
     return line + f", program {run.name}: exit code {run.exit_code}"
 
 
@@ -205,10 +207,12 @@ def simulate(args) -> int:
     # Headless with programs and no time limit: the run ends when the last program is done.
     sim.stop_when_programs_done = bool(args.headless and programs and args.until is None)
     sim.call(lambda s: s.check_programs_done())  # e.g. no program could start
+    interrupted = False
     try:
         sim.run(until=args.until)
     except KeyboardInterrupt:
         print("\neyesim: interrupted", file=sys.stderr)
+        interrupted = True
     finally:
         launcher.stop_all(let_finish=5.0 if sim.stop_when_programs_done else 0.0)
         sim.shutdown_sessions()
@@ -231,6 +235,8 @@ def simulate(args) -> int:
         print(f"EyeSim: stopped at t={sim.time:.3f} s")
         for robot in sim.robots:
             print(status_line(robot, runs.get(robot.id)))
+    if interrupted:
+        return 130  # Ctrl-C: the shell's status for SIGINT
     return 1 if any(run.failed for run in launcher.runs) else 0
 
 
