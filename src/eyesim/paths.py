@@ -12,6 +12,10 @@ DATA_DIR = PACKAGE_DIR / "data"
 STATIC_DIR = PACKAGE_DIR / "web" / "static"
 
 
+# What a program named without an extension may be (EyeSim's scene files name `drive` for drive.c).
+PROGRAM_SOURCE_SUFFIXES = (".c", ".cpp", ".cc", ".cxx", ".py")
+
+
 def robios_dir() -> Path:
     """The C library's install prefix (include/, lib/): inside the package when installed with
     pip; `EYESIM_ROBIOS` points elsewhere (a development build)."""
@@ -21,6 +25,20 @@ def robios_dir() -> Path:
 
 def robios_lib_dir() -> Path:
     return robios_dir() / "lib"
+
+
+def cache_dir() -> Path:
+    """Where EyeSim keeps what it can make again (programs compiled from source): `EYESIM_CACHE_DIR`,
+    else the platform's cache folder."""
+    override = os.environ.get("EYESIM_CACHE_DIR")
+    if override:
+        return Path(override)
+    home = Path.home()
+    if os.name == "nt":
+        return Path(os.environ.get("LOCALAPPDATA") or home / "AppData" / "Local") / "eyesim" / "cache"
+    if sys.platform == "darwin":
+        return home / "Library" / "Caches" / "eyesim"
+    return Path(os.environ.get("XDG_CACHE_HOME") or home / ".cache") / "eyesim"
 
 
 def state_dir() -> Path:

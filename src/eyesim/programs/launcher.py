@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from eyesim import paths, platform
+from eyesim.programs import sources
 from eyesim.programs.program_output import ProgramOutput
 
 OUTPUT_LIMIT = 1 << 20  # characters of a program's output kept per stream (a runaway printf loop)
@@ -51,6 +52,7 @@ class ProgramRun:
     options: ProgramOptions = ProgramOptions()
     output: dict = field(default_factory=lambda: {"stdout": [], "stderr": []})  # text as it came
     truncated: bool = False  # output beyond OUTPUT_LIMIT was dropped
+    source: Path | None = None  # the C/C++ source `path` was compiled from, if it was given as one
 
     def text(self, stream: str = "stdout") -> str:
         return "".join(self.output[stream])
@@ -68,7 +70,7 @@ class ProgramRun:
 
     @property
     def name(self) -> str:
-        return self.path.name
+        return (self.source or self.path).name
 
     @property
     def failed(self) -> bool:
@@ -107,7 +109,7 @@ class Launcher:
         self._outputs: dict[int, ProgramOutput] = {}  # id(run) -> its output pipes, until it exited
 
     def start(self, robot_id: int, path: str | Path, options: ProgramOptions = ProgramOptions()) -> ProgramRun:
-        run = ProgramRun(robot_id, Path(path), options=options)
+        run = ProgramRun(robot_id, sources.locate(Path(path)), options=options)
         self.runs.append(run)
         try:
             found = run.path.is_file()
@@ -118,14 +120,16 @@ class Launcher:
             run.error = f"program not found: {path}"
             self._print(run, "stderr", f"eyesim: {run.error}\n")
             return run
+        run.path = run.path.resolve()
+        if sources.is_source(run.path) and not self._build(run):
+            return run
         env = dict(program_environment(self.host, self.port, robot_id), **options.env)
         robot_id_ = robot_id
         self.sim.call(lambda sim: sim.expected_programs.add(robot_id_))
-        run.path = run.path.resolve()
         try:
             run.process = platform.start(
                 [*command_for(run.path), *options.args], own_group=options.own_group, limits=options.limits,
-                cwd=options.cwd or run.path.parent, env=env,
+                cwd=options.cwd or (run.source or run.path).parent, env=env,
                 stdin=subprocess.DEVNULL if options.stdin is None else subprocess.PIPE,
                 stdout=subprocess.PIPE, stderr=subprocess.PIPE)
         except OSError as error:
@@ -153,6 +157,21 @@ class Launcher:
         self._waiters[id(run)] = waiter
         waiter.start()
         return run
+
+    def _build(self, run: ProgramRun) -> bool:
+        """A C/C++ source: compile it (or take it from the cache) and run the executable; its
+        warnings go to the console. False, with the compiler's errors as the run's error, when it
+        does not compile."""
+        try:
+            executable, said = sources.executable_for(run.path)
+        except sources.BuildError as error:
+            run.error = f"{run.path.name} does not compile:\n{error}"
+            self._print(run, "stderr", f"eyesim: {run.error}\n")
+            return False
+        if said.strip():
+            self._print(run, "stderr", said if said.endswith("\n") else said + "\n")
+        run.source, run.path = run.path, executable
+        return True
 
     def settle(self, wait: float = 0.0) -> None:
         """Let programs that are ending finish (up to `wait` s each), then take in everything

@@ -11,6 +11,7 @@ import dataclasses
 import difflib
 from pathlib import Path
 
+from eyesim.paths import PROGRAM_SOURCE_SUFFIXES
 from eyesim.scene import builtins, limits, paths
 from eyesim.scene.description import (Collider, Diagnostic, Location, ObjectPlacement, ObjectType, Pose,
                                       RobotPlacement, RobotType, Scene, World)
@@ -325,6 +326,9 @@ class _SceneLoader:
         if not program:
             return None
         found = self.resolve(program, scene_file, where)
+        if found is None and not Path(program).suffix:  # `drive` for drive.c, compiled when it starts
+            found = next((hit for suffix in PROGRAM_SOURCE_SUFFIXES
+                          if (hit := self.resolve(program + suffix, scene_file, where)) is not None), None)
         if found is None:
             self.missing(where, "program", program, scene_file, "the robot starts without it")
             return program
