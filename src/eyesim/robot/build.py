@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import mujoco
@@ -14,10 +15,13 @@ from eyesim.robot.component import Component
 from eyesim.robot.robot import Robot
 from eyesim.scene.description import RobotPlacement, RobotType, Settings
 from eyesim.scene.drives import drive_of
-from eyesim.scene.parts.body import hull_colliders
+from eyesim.scene.parts.body import glides, hull_colliders
 
 MIN_HULL_MASS_FRACTION = 0.2  # the parts may not weigh more than 80 % of the robot
 HULL_FRICTION = [0.4, 0.005, 0.0001]
+# A hull collider standing in for a skid or caster glides as the drives' casters do: its priority
+# makes its frictionless contact win over the floor's grip.
+GLIDER = {"condim": 1, "priority": 2, "friction": [0.0, 0.0, 0.0]}
 
 
 @dataclass
@@ -64,7 +68,8 @@ def add_chassis(spec: mujoco.MjSpec, name: str, robot_type: RobotType, placement
     if not mounted(robot_type):
         body.add_freejoint(name=f"{name}/free")
     for index, collider in enumerate(hull_colliders(robot_type)):
-        add_collider(body, f"{name}/hull{index}", collider, rgba=rgba(robot_type.color), friction=HULL_FRICTION)
+        contact = GLIDER if glides(robot_type, collider) and not mounted(robot_type) else {"friction": HULL_FRICTION}
+        add_collider(body, f"{name}/hull{index}", collider, rgba=rgba(robot_type.color), **contact)
     mesh = model_mesh(robot_type.model)
     if mesh is not None:
         add_model(spec, body, name, mesh, offset_mm=robot_type.model_offset, rotation_deg=robot_type.model_rotation)
@@ -73,12 +78,15 @@ def add_chassis(spec: mujoco.MjSpec, name: str, robot_type: RobotType, placement
 
 def _finish_mass(spec: mujoco.MjSpec, body: mujoco.MjsBody, robot_type: RobotType, parts_mass: float) -> None:
     """Give the hull the mass the parts leave over, so the robot weighs what its type says; a
-    declared centre of mass is where the hull's mass sits."""
+    declared centre of mass is where the hull's mass sits, else the colliders share it by their
+    volumes (a thin skid weighs a thin skid's share, and does not pull the centre of mass to it)."""
     hull_mass = max(robot_type.mass - parts_mass, robot_type.mass * MIN_HULL_MASS_FRACTION)
     geoms = [g for g in body.geoms if g.name.startswith(f"{body.name}/hull")]
     if robot_type.center_of_mass is None:
-        for geom in geoms:
-            geom.mass = hull_mass / len(geoms)
+        volumes = [_volume(g) for g in geoms]
+        total = sum(volumes)
+        for geom, volume in zip(geoms, volumes):
+            geom.mass = hull_mass * volume / total if total > 0 else hull_mass / len(geoms)
         return
     for geom in body.geoms:
         geom.mass = 0.0
@@ -88,6 +96,18 @@ def _finish_mass(spec: mujoco.MjSpec, body: mujoco.MjsBody, robot_type: RobotTyp
     body.ipos = [mm(v) for v in robot_type.center_of_mass]
     body.inertia = [hull_mass * (width ** 2 + height ** 2) / 12, hull_mass * (length ** 2 + height ** 2) / 12,
                     hull_mass * (length ** 2 + width ** 2) / 12]
+
+
+def _volume(geom: mujoco.MjsGeom) -> float:
+    """m^3 of a box, sphere, capsule or cylinder geom (MuJoCo's half sizes)."""
+    a, b, c = geom.size
+    if geom.type == mujoco.mjtGeom.mjGEOM_BOX:
+        return 8 * a * b * c
+    ball = 4 / 3 * math.pi * a ** 3
+    if geom.type == mujoco.mjtGeom.mjGEOM_SPHERE:
+        return ball
+    tube = math.pi * a * a * 2 * b
+    return tube + ball if geom.type == mujoco.mjtGeom.mjGEOM_CAPSULE else tube
 
 
 def add_robot(spec: mujoco.MjSpec, robot_id: int, robot_type: RobotType, placement: RobotPlacement,

@@ -16,6 +16,7 @@ if TYPE_CHECKING:
 
 DEFAULT_HEIGHT = 80.0  # mm of a robot whose file gives only a diameter
 CHASSIS_CLEARANCE = 0.012  # m between the floor and the chassis bottom of a wheeled robot
+GLIDER_LIFT = 1.0  # mm a gliding hull collider stays above the floor at least (as the drives' casters)
 MAX_DENSITY = 8.0  # g/cm3: a robot heavier than solid steel of its size is a typo
 ESTIMATED_DENSITY = 0.5  # g/cm3 of a typical small robot (S4: 0.8 kg in 2.4 litres)
 COLLIDER_FORMS = {"box": ("<sx> <sy> <sz> <cx> <cy> <cz>", 6), "sphere": ("<r> <cx> <cy> <cz>", 4),
@@ -163,6 +164,11 @@ def _dimensions(collected: dict) -> tuple[float, float, float]:
     return (DEFAULTS["length"], DEFAULTS["width"], DEFAULTS["height"])
 
 
+def collider_bottom(collider: Collider) -> float:
+    """mm the collider's lowest point lies above the robot's origin (its floor)."""
+    return collider.center[2] - _half_extent(collider)[2]
+
+
 def _half_extent(collider: Collider) -> tuple[float, float, float]:
     if collider.kind == "box":
         return tuple(v / 2 for v in collider.size)
@@ -269,12 +275,29 @@ PART = Part(
 )
 
 
+def glides(robot_type: RobotType, collider: Collider) -> bool:
+    """Whether a hull collider of a wheeled robot stands in for a skid or caster: it reaches below
+    the chassis clearance, where the wheels alone are meant to touch the floor. Such a collider
+    glides without friction, like the drives' own casters, so it never brakes the robot."""
+    return robot_type.wheels is not None and collider_bottom(collider) < CHASSIS_CLEARANCE * 1000
+
+
 def hull_colliders(robot_type: RobotType) -> tuple[Collider, ...]:
     """The chassis shape: the type's colliders, else a box of its size (above the wheels' clearance
-    when it has wheels)."""
+    when it has wheels). A gliding collider (`glides`) that reaches lower than GLIDER_LIFT above the
+    floor is raised to it: the wheels stand on the floor and carry the robot, as the drives' casters
+    leave them to (EyeSim VR files measure from a floor a few mm below the wheels' own)."""
     if robot_type.colliders:
-        return robot_type.colliders
+        return tuple(_lifted(c) if glides(robot_type, c) else c for c in robot_type.colliders)
     clearance = CHASSIS_CLEARANCE * 1000 if robot_type.wheels is not None else 0.0
     height = max(robot_type.height - clearance, 10.0)
     # The hull sits slightly behind the axle so a two-wheeler leans on its rear caster, not its nose.
     return (Collider("box", (robot_type.length, robot_type.width, height), (-10.0, 0.0, clearance + height / 2)),)
+
+
+def _lifted(collider: Collider) -> Collider:
+    rise = GLIDER_LIFT - collider_bottom(collider)
+    if rise <= 0:
+        return collider
+    x, y, z = collider.center
+    return Collider(collider.kind, collider.size, (x, y, z + rise), collider.axis)
