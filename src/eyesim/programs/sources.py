@@ -24,11 +24,18 @@ class BuildError(Exception):
 def locate(path: Path) -> Path:
     """`path` itself when it is a file, else the one source beside it with its name plus a known
     extension (`drive` -> `drive.c`); `path` again when there is none (the caller reports it)."""
-    if path.suffix or path.is_file():
+    if path.suffix or _is_file(path):
         return path
     found = [path.with_name(path.name + suffix) for suffix in paths.PROGRAM_SOURCE_SUFFIXES
-             if path.with_name(path.name + suffix).is_file()]
+             if _is_file(path.with_name(path.name + suffix))]
     return found[0] if len(found) == 1 else path
+
+
+def _is_file(path: Path) -> bool:
+    try:
+        return path.is_file()
+    except OSError:  # a name the file system refuses (too long): not a file; the launcher says why
+        return False
 
 
 def is_source(path: Path) -> bool:
