@@ -97,7 +97,7 @@ def test_a_car_with_a_skid_collider_speeds_up_and_reverses_as_fast_as_the_built_
 
 def test_a_two_wheeler_on_a_caster_collider_reaches_its_speed_both_ways(tmp_path):
     robot_type = robot_file(tmp_path, VR_TWO_WHEELER)
-    sim, profile = speed_profile(robot_type)
+    _, profile = speed_profile(robot_type)
     ahead, back = times(profile)
     ramp = SPEED / 1.0  # the VW controller ramps at 1 m/s^2
     assert ahead <= ramp + 0.15 and back <= 2 * ramp + 0.15, (ahead, back)

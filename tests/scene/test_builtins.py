@@ -86,3 +86,50 @@ def test_a_bundled_scene_is_named_on_the_command_line_by_its_name(tmp_path, monk
     (tmp_path / "mako_pool.sim").write_text("")
     assert builtins.scene_argument("mako_pool.sim") == Path("mako_pool.sim")  # a file of that name wins
     assert builtins.scene_argument("elsewhere/mako_pool") == Path("elsewhere/mako_pool")  # a path is a path
+
+
+def test_every_stock_robot_name_stands_for_a_built_in_robot():
+    for stock, builtin in builtins.STOCK_ROBOTS.items():
+        assert builtins.robot_path(builtin) is not None, stock
+        assert builtins.robot_path(stock) is None, f"{stock} is a built-in itself"
+
+
+@pytest.mark.parametrize("reference, builtin, drive", [
+    ("%sim%/robots/ModelCar/ModelCar.robi", "Car", "ackermann"),  # EyeSim 6 drivemodes/Ackermann.sim
+    ("%sim%/robots/Omni/Omni2.robi", "Omni", "omni"),  # drivemodes/Omni.sim
+    ("%sim%/robots/Eve/Eve.robi", "S4", "differential"),  # maze/MazeSearch.sim
+    ("/robots/Ackermann/Ackermann.robi", "Car", "ackermann"),  # EyeSim VR's test assets
+    ("robots/Omni/Omni3.robi", "Omni", "omni"),  # a file of EyeSim's Omni folder: named by its folder
+    ("..\\robots\\ModelCar\\ModelCar2.robi", "Car", "ackermann"),
+])
+def test_a_missing_stock_robot_file_gets_the_built_in_of_its_drive_and_says_which(tmp_path, reference, builtin,
+                                                                                  drive):
+    (tmp_path / "w.wld").write_text("floor 3000 3000\n")
+    (tmp_path / "a.sim").write_text(f"world w.wld\nrobi {reference} drive.dll 600 500 0\n")
+    scene = load_scene(tmp_path / "a.sim")
+    (placement,) = scene.robots
+    robot = scene.robot_types[placement.type_name]
+    stand_in = load_robot_type(builtin)
+    assert placement.type_name == Path(reference.replace("\\", "/")).stem
+    assert robot.drive == drive
+    assert (robot.psds, robot.camera, robot.wheels) == (stand_in.psds, stand_in.camera, stand_in.wheels)
+    (warning,) = [w for w in scene.warnings if reference in w.message]
+    assert warning.code == "missing-file" and f"using the built-in {builtin} " in warning.message
+
+
+def test_a_missing_robot_file_of_no_stock_name_falls_back_to_the_s4_and_says_so(tmp_path):
+    (tmp_path / "a.sim").write_text("robi bots/Rover.robi\nRover 600 500 0\n")
+    scene = load_scene(tmp_path / "a.sim")
+    assert scene.robot_types["Rover"].drive == "differential"
+    (warning,) = [w for w in scene.warnings if "Rover.robi" in w.message]
+    assert "using the built-in S4 (a two-wheeled differential drive robot) as robot type 'Rover'" in warning.message
+
+
+def test_omni_is_numbered_as_eyesims_omni_robot_files():
+    omni = load_robot_type("Omni")
+    assert omni.drive == "omni" and omni.wheels == WheelSpec(100, 360, 7300, 220)
+    assert [(p.id, p.name) for p in omni.psds] == [
+        (1, "PSD_FRONT"), (2, "PSD_LEFT"), (3, "PSD_RIGHT"), (4, "PSD_BACK"), (5, "PSD_FRONT2"),
+        (6, "PSD_LEFTDIAG"), (7, "PSD_RIGHTDIAG")]
+    assert omni.camera is not None and omni.camera.x > 0
+    assert omni.drive_motors[::2] == ("MOTOR_FL", "MOTOR_FR", "MOTOR_BL", "MOTOR_BR")

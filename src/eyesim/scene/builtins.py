@@ -12,6 +12,16 @@ OBJECTS_DIR = DATA_DIR / "objects"
 SCENES_DIR = DATA_DIR / "scenes"
 DEFAULT_SCENE = SCENES_DIR / "default.sim"
 FALLBACK_ROBOT = "S4"  # stands in for a robot whose definition file is missing
+# EyeSim's stock robots that scenes name by file (`%sim%/robots/ModelCar/ModelCar.robi`) or by
+# name, and the built-in robot of the same drive and sensors that stands in for each when its file
+# is missing (case-folded name -> built-in name). The EyeSim 6 examples and EyeSim VR test assets
+# name these (../shared/corpus); the built-in names stand in for themselves.
+STOCK_ROBOTS = {
+    "modelcar": "Car", "ackermann": "Car", "ackermann2": "Car",  # Ackermann cars (motor 1, servo 1)
+    "omni1": "Omni", "omni2": "Omni", "odw": "Omni",  # mecanum robots (motors 1-4 FL FR BL BR, PSDs 1-7)
+    "eve": "S4", "socbot": "S4", "s4bot": "S4", "s4y": "S4", "s4blue": "S4",  # two-wheeled EyeBots
+    "labbot2": "LabBot",
+}
 
 
 @lru_cache(maxsize=None)  # the package's data files do not change while we run
@@ -22,6 +32,25 @@ def _by_name(directory: Path, suffix: str) -> dict[str, Path]:
 def robot_path(name: str) -> Path | None:
     """The built-in robot definition for `name` (any letter case), or None."""
     return _by_name(ROBOTS_DIR, ".robi").get(name.casefold())
+
+
+def stock_robot(reference: str) -> tuple[str, str] | None:
+    """(EyeSim's stock name, built-in name) for a robot file reference whose file name, else whose
+    folder's name (EyeSim keeps each stock robot in a folder of its own: `Omni/Omni2.robi`), is a
+    built-in robot or one of EyeSim's stock robots; None for any other name."""
+    parts = [p for p in reference.replace("\\", "/").split("/") if p]
+    if not parts:
+        return None
+    names = [parts[-1].rsplit(".", 1)[0] if "." in parts[-1] else parts[-1]]
+    if len(parts) > 1:
+        names.append(parts[-2])
+    for name in names:
+        builtin = robot_path(name)
+        if builtin is not None:
+            return name, builtin.stem
+        if name.casefold() in STOCK_ROBOTS:
+            return name, STOCK_ROBOTS[name.casefold()]
+    return None
 
 
 def object_path(name: str) -> Path | None:

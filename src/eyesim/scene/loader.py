@@ -16,6 +16,7 @@ from eyesim.scene import builtins, limits, paths
 from eyesim.scene.description import (Collider, Diagnostic, Location, ObjectPlacement, ObjectType, Pose,
                                       RobotPlacement, RobotType, Scene, World)
 from eyesim.scene.diagnostics import Diagnostics, SceneError, quoted
+from eyesim.scene.drives import drive_of
 from eyesim.scene.placement import settle_placements
 from eyesim.scene.esobj import parse_esobj
 from eyesim.scene.json_format import parse_json
@@ -162,13 +163,11 @@ class _SceneLoader:
         robot = self.robot_file(found) if found is not None else None
         stem = Path(reference.replace("\\", "/")).stem
         if robot is None:
+            stock = builtins.stock_robot(reference)
+            stand_in = stock[1] if stock else builtins.FALLBACK_ROBOT
+            robot = dataclasses.replace(self.builtin_robot(stand_in), name=stem)
             if found is None:
-                builtin = builtins.robot_path(stem)
-                stand_in = builtin.stem if builtin else builtins.FALLBACK_ROBOT
-                self.missing(where, "robot file", reference, scene_file, f"using the built-in {stand_in} as "
-                             f"robot type {quoted(stem)}")
-            robot = dataclasses.replace(self.builtin_robot(stem) or self.builtin_robot(builtins.FALLBACK_ROBOT),
-                                        name=stem)
+                self.missing(where, "robot file", reference, scene_file, self.stand_in_text(stock, robot, stem))
         else:
             self.loaded_files[str(found)] = robot.name
         key = robot.name.casefold()
@@ -180,6 +179,18 @@ class _SceneLoader:
         if builtins.robot_path(stem) is None:  # EyeSim VR 2018 named types after their files
             self.robot_types.setdefault(stem.casefold(), robot)
         return robot
+
+    @staticmethod
+    def stand_in_text(stock: tuple[str, str] | None, robot: RobotType, type_name: str) -> str:
+        """What a missing robot file's warning says is used instead."""
+        builtin = stock[1] if stock else builtins.FALLBACK_ROBOT
+        what = drive_of(robot).noun
+        if stock is None:
+            return f"using the built-in {builtin} ({what}) as robot type {quoted(type_name)}"
+        if stock[0].casefold() == builtin.casefold():
+            return f"using the built-in {builtin} as robot type {quoted(type_name)}"
+        return (f"{stock[0]} is one of EyeSim's own robots: using the built-in {builtin} ({what}, numbered as "
+                f"{stock[0]}'s programs expect) as robot type {quoted(type_name)}")
 
     def define_object(self, reference: str, where: Location, scene_file: Path) -> ObjectType:
         found = self.resolve(reference, scene_file, where)

@@ -24,6 +24,7 @@ class MachineType(IntEnum):
 class DriveArchetype:
     name: str  # RobotType.drive, the JSON `drive` value
     keyword: str  # the .robi `drive` word we write (read in any case)
+    noun: str = ""  # what a robot of this drive is, for messages ("an Ackermann car")
     aliases: tuple[str, ...] = ()  # other `drive` words .robi files use (lower case)
     machine_type: MachineType = MachineType.VEHICLE
     mounted: bool = False  # the base is bolted to the floor (no free joint)

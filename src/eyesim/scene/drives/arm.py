@@ -10,5 +10,6 @@ def check(robot) -> tuple[str, str] | None:
     return None
 
 
-DRIVE = DriveArchetype("arm", "ARM", aliases=("arm_drive",), machine_type=MachineType.PLATFORM, mounted=True,
+DRIVE = DriveArchetype("arm", "ARM", noun="a manipulator arm on a fixed base", aliases=("arm_drive",),
+                       machine_type=MachineType.PLATFORM, mounted=True,
                        check=check)

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from eyesim.scene.drives.archetype import DriveArchetype
 
-DRIVE = DriveArchetype("differential", "DIFFERENTIAL_DRIVE", wheeled=True,
+DRIVE = DriveArchetype("differential", "DIFFERENTIAL_DRIVE", noun="a two-wheeled differential drive robot",
+                       wheeled=True,
                        wheels_outside_hull=True, viewer_wheels=True,
                        component="eyesim.robot.drives.differential_wheels:DifferentialDrive")

@@ -7,5 +7,5 @@ from __future__ import annotations
 
 from eyesim.scene.drives.archetype import DriveArchetype
 
-DRIVE = DriveArchetype("omni", "OMNI_DRIVE", wheeled=True,
+DRIVE = DriveArchetype("omni", "OMNI_DRIVE", noun="a mecanum omni-drive robot", wheeled=True,
                        component="eyesim.robot.drives.omni_wheels:OmniDrive")
