@@ -233,6 +233,21 @@ typedef BYTE CAM5MPgray[CAM5MP_PIXELS];
  * answers a call with an error, the library prints "eyesim: <function>: <reason>" to stderr and
  * returns the error value given below. Units: mm, mm/s, degrees, degrees/s, milliseconds. */
 
+/* <windows.h> (through rpc.h) defines `interface` as `struct` for COM; the serial functions below
+ * name a parameter so. Undone for the declarations only. */
+#if defined(_WIN32)
+#pragma push_macro("interface")
+#undef interface
+#endif
+/* Building eyesim.dll with clang (Zig, llvm-mingw): the functions and variables declared from here
+ * to the end of the generated declarations, and the sleeps at the end of this file, are the DLL's
+ * exports; nothing else is (without any dllexport, MinGW's linker would export every global symbol,
+ * the start-up code's atexit among them, and programs calling atexit would then not link). */
+#if defined(_WIN32) && defined(EYESIM_BUILDING_LIBRARY) && defined(__clang__)
+#define EYESIM_EXPORTS_MARKED 1
+#pragma clang attribute push(__declspec(dllexport), apply_to = any(function, variable(is_global)))
+#endif
+
 /* ==== Generated from the "api" groups of protocol/protocol.json down to "End of the generated
  * declarations": change them there and run `make protocol`. ==== */
 
@@ -460,6 +475,13 @@ int SIMGetObjectCount(void);                            /* objects (not robots) 
 
 /* ==== End of the generated declarations ==== */
 
+#if defined(EYESIM_EXPORTS_MARKED)
+#pragma clang attribute pop
+#endif
+#if defined(_WIN32)
+#pragma pop_macro("interface")
+#endif
+
 /* ---- Older programs (docs/api/compatibility.md): names that still work ------------------------ */
 
 /* The LCD needs no set-up: LCDInit does nothing and returns 0. */
@@ -477,30 +499,41 @@ static inline int XInitThreads(void)
 }
 #endif
 
-/* ---- Windows: sleeping in simulation time ------------------------------------------------------
- * On Linux and macOS libeyesim's own sleep, usleep, nanosleep (and clock_nanosleep) take the
- * program's calls. Windows cannot reroute a function so: there these macros send the calls in code
- * that includes eyebot.h to libeyesim, which waits in simulation time once the program is connected
- * and in wall time (the system's function) before. Sleep (milliseconds) too when <windows.h> came
- * before eyebot.h. See docs/c-library.md, "Sleeping". */
-#if defined(_WIN32)
+/* ---- Windows and macOS: sleeping in simulation time ------------------------------------------
+ * On Linux libeyesim's own sleep, usleep, nanosleep and clock_nanosleep take the program's calls.
+ * Windows cannot reroute a function so, and on macOS whether it does depends on the linker: there
+ * these macros send the calls in code that includes eyebot.h to libeyesim, which waits in
+ * simulation time once the program is connected and in wall time (the system's function) before.
+ * On Windows also Sleep (milliseconds), when <windows.h> came before eyebot.h. See
+ * docs/c-library.md, "Sleeping". */
+#if defined(_WIN32) || defined(__APPLE__)
+#if defined(EYESIM_EXPORTS_MARKED)
+#pragma clang attribute push(__declspec(dllexport), apply_to = function)
+#endif
 unsigned es_sleep(unsigned seconds);
 int es_usleep(useconds_t microseconds);
 int es_nanosleep(const struct timespec *request, struct timespec *remaining);
+#if defined(_WIN32)
 int es_clock_nanosleep(clockid_t clock, int flags, const struct timespec *request, struct timespec *remaining);
 void __stdcall es_Sleep(unsigned long milliseconds);
+#endif
+#if defined(EYESIM_EXPORTS_MARKED)
+#pragma clang attribute pop
+#endif
 #ifndef EYESIM_BUILDING_LIBRARY
 #undef sleep
 #undef usleep
 #undef nanosleep
-#undef clock_nanosleep
 #define sleep(seconds) es_sleep(seconds)
 #define usleep(microseconds) es_usleep(microseconds)
 #define nanosleep(request, remaining) es_nanosleep(request, remaining)
+#if defined(_WIN32)
+#undef clock_nanosleep
 #define clock_nanosleep(clock, flags, request, remaining) es_clock_nanosleep(clock, flags, request, remaining)
 #if defined(_SYNCHAPI_H_)
 #undef Sleep
 #define Sleep(milliseconds) es_Sleep(milliseconds)
+#endif
 #endif
 #endif
 #endif
