@@ -6,12 +6,14 @@ import dataclasses
 import logging
 import os
 import sys
+import threading
 import webbrowser
 
 from eyesim.app import scripted_input
 from eyesim.app.robot_log import RobotLog
 from eyesim.core.clock import DETERMINISTIC, MAX_SPEED, REALTIME, Clock
 from eyesim.core.engine import DEFAULT_CALL_TIME_US, Simulation
+from eyesim.core.stalls import StallWatch
 from eyesim.net.io_thread import IoThread
 from eyesim.net.program_server import ProgramServer
 from eyesim.programs.launcher import Launcher
@@ -28,6 +30,8 @@ def register(subparsers) -> None:
                         "default: the bundled arena with one S4")
     parser.add_argument("--headless", action="store_true", help="no viewer; print a status line per robot at the end")
     parser.add_argument("--until", type=float, metavar="SECONDS", help="stop at this simulation time")
+    parser.add_argument("--wall-limit", type=float, metavar="SECONDS",
+                        help="end the run after this many seconds of real time, whatever the programs do")
     parser.add_argument("--host", default=g.DEFAULT_HOST, help=f"address to serve on (default {g.DEFAULT_HOST})")
     parser.add_argument("--port", type=int, default=int(os.environ.get("EYESIM_PORT", g.DEFAULT_PORT)),
                         help=f"port for programs (default {g.DEFAULT_PORT}, or $EYESIM_PORT; 0 = any free port)")
@@ -153,6 +157,8 @@ def main(args) -> int:
 
 def simulate(args) -> int:
     speed = parse_speed(args.speed)
+    if args.wall_limit is not None and not args.wall_limit > 0:
+        raise UsageError(f"--wall-limit {args.wall_limit:g}: expected a positive number of seconds")
     mode = args.clock or (DETERMINISTIC if args.headless else REALTIME)
     scene = with_settings(load(args.scene), args)
     sim = Simulation(scene, Clock(mode, speed))
@@ -208,12 +214,20 @@ def simulate(args) -> int:
     sim.stop_when_programs_done = bool(args.headless and programs and args.until is None)
     sim.call(lambda s: s.check_programs_done())  # e.g. no program could start
     interrupted = False
+    watch = None
+    if sim.clock.deterministic or args.headless:
+        watch = StallWatch(sim, _say_why_the_run_stands_still, keys_can_come=not args.headless).start()
+    wall_limit = _wall_limit(sim, args.wall_limit)
     try:
         sim.run(until=args.until)
     except KeyboardInterrupt:
         print("\neyesim: interrupted", file=sys.stderr)
         interrupted = True
     finally:
+        if watch is not None:
+            watch.stop()
+        if wall_limit is not None:
+            wall_limit.cancel()
         launcher.stop_all(let_finish=5.0 if sim.stop_when_programs_done else 0.0)
         sim.shutdown_sessions()
         sim.handle_queued()
@@ -237,7 +251,38 @@ def simulate(args) -> int:
             print(status_line(robot, runs.get(robot.id)))
     if interrupted:
         return 130  # Ctrl-C: the shell's status for SIGINT
+    if wall_limit is not None and wall_limit.reached:
+        return 1
     return 1 if any(run.failed for run in launcher.runs) else 0
+
+
+def _say_why_the_run_stands_still(lines: list[str]) -> None:
+    print("eyesim: the run has not moved on for 3 s of real time:", file=sys.stderr)
+    for line in lines:
+        print(f"  {line}", file=sys.stderr)
+    sys.stderr.flush()
+
+
+class _WallLimit:
+    """--wall-limit: ends the run after that much real time."""
+
+    def __init__(self, sim, seconds: float):
+        self.reached = False
+        self._timer = threading.Timer(seconds, self._end, args=(sim, seconds))
+        self._timer.daemon = True
+        self._timer.start()
+
+    def _end(self, sim, seconds: float) -> None:
+        self.reached = True
+        print(f"eyesim: the wall-clock limit of {seconds:g} s is reached; the run ends", file=sys.stderr, flush=True)
+        sim.stop()
+
+    def cancel(self) -> None:
+        self._timer.cancel()
+
+
+def _wall_limit(sim, seconds: float | None) -> _WallLimit | None:
+    return None if seconds is None else _WallLimit(sim, seconds)
 
 
 def scene_workspace(sim, launcher, args):

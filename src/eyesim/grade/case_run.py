@@ -126,6 +126,7 @@ def score_of(checks: list[dict]) -> float:
 
 def run_case(task: dict, directory: Path) -> dict:
     """The case's result (a dict of plain data, `artifacts` holding file contents)."""
+    from eyesim.core.stalls import hung_status
     from eyesim.grade.checks import judge
     from eyesim.testing import Simulation
     from eyesim.testing.assertions import describe_exit
@@ -164,6 +165,9 @@ def run_case(task: dict, directory: Path) -> dict:
         sim.stop_programs()  # the run is over: what still runs is stopped, its output complete
         result["end"] = {"reason": end.reason, "time": round(end.time, 6)}
         result["status"] = _status(end, [robot.program for robot in sim.robots if robot.program is not None])
+        if end.stalled:  # why it stood still, in the teacher's words: "waiting for a key", "hung: ..."
+            result["hung"] = hung_status(list(end.stalled))
+            result["end"]["stalled"] = list(end.stalled)
         context = {"workdir": work, "python_checks": task["python_checks"], "python_modules": {}}
         result["checks"] = [judge(sim, check, context) for check in case.checks]
         result["score"] = score_of(result["checks"])

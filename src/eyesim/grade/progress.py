@@ -38,4 +38,6 @@ class Progress:
 def _summary(result: dict) -> str:
     status = result["status"]
     score = f"{100 * result['score']:.0f}%"
+    if result.get("hung"):
+        return f"{score} ({result['hung']})"
     return score if status == "ok" else f"{score} ({status.replace('_', ' ')})"

@@ -70,6 +70,9 @@ def _student_section(student: dict) -> str:
         end = case.get("end")
         if end:
             parts.append(f"<p>Ran until {end['time']:.2f} s of simulation time ({escape(end['reason'])}).</p>")
+        if case.get("hung"):
+            parts.append(f"<p class='hung'>The run stood still: {escape(case['hung'])}.</p><ul>"
+                         + "".join(f"<li>{escape(line)}</li>" for line in end.get("stalled", [])) + "</ul>")
         for program, build in case.get("build", {}).items():
             if not build["ok"] or build["output"].strip():
                 label = "does not build" if not build["ok"] else "built with messages"

@@ -25,6 +25,7 @@ from pathlib import Path
 from eyesim.core import inputs
 from eyesim.core.clock import DETERMINISTIC, Clock
 from eyesim.core.engine import Simulation as Engine
+from eyesim.core.stalls import StallWatch
 from eyesim.net.program_server import ProgramServer
 from eyesim.programs.launcher import Launcher, ProgramOptions
 from eyesim.protocol import generated as g
@@ -54,6 +55,7 @@ class RunEnd:
 
     reason: str
     time: float
+    stalled: tuple[str, ...] = ()  # what the programs waited for when the run stood still (core/stalls.py)
 
 
 class _ConditionMet(Exception):
@@ -279,12 +281,15 @@ class Simulation:
             timer.daemon = True
             timer.start()
         reason = None
+        stalled: list[str] = []
+        watch = StallWatch(self.engine, stalled.extend, keys_can_come=False).start()
         try:
             self.engine.run(until=until)
         except _ConditionMet:
             reason = "condition"
         finally:
             self._stop_when = None
+            watch.stop()
             if timer is not None:
                 timer.cancel()
         if reason is None:
@@ -299,7 +304,7 @@ class Simulation:
         for run in self._runs.values():
             if not hasattr(run, "process") and reason == "programs" and run.thread is not None:
                 run.thread.join(timeout=5.0)
-        return RunEnd(reason, self.time)
+        return RunEnd(reason, self.time, tuple(stalled))
 
     def _watchdog(self, fired: threading.Event) -> None:
         fired.set()
