@@ -257,3 +257,14 @@ def test_a_definition_named_like_a_builtin_replaces_it(tmp_path):
     make(tmp_path, "mine.robi", "dialect eyesim\nname S4\nwheel 60 3600 1000 100\n")
     loaded = load_scene(make(tmp_path, "s.sim", "robot mine.robi\nS4 2 2 0\n"))
     assert loaded.robot_types["S4"].wheels.diameter == 60
+
+
+def test_relative_textures_are_found_in_the_folders_above_as_eyesim_found_them(tmp_path):
+    # the corpus' worlds/worlds/Soccer1998.wld names ../textures/soccer.png, in textures/ beside worlds/
+    scene = load_scene(CORPUS / "ASAX21__VRRoboticProject/Test Assets/examples/drivemodes/Diff.sim")
+    assert scene.world.floor_texture == str(CORPUS / "ASAX21__VRRoboticProject/Test Assets/textures/soccer.png")
+    # a world elsewhere naming a texture that sits in the scene's own folder
+    image = make(tmp_path, "lab/textures/floor.png", "x")
+    make(tmp_path, "shared/worlds/deep/down/arena.wld", "floor 1000 1000\nfloor_texture textures/floor.png\n")
+    sim = make(tmp_path, "lab/run.sim", "world ../shared/worlds/deep/down/arena.wld\n")
+    assert load_scene(sim).world.floor_texture == str(image)

@@ -101,11 +101,45 @@ def test_missing_gives_none(tmp_path):
     assert paths.resolve("   ", scene) is None
 
 
-def test_relative_references_do_not_search_parent_directories(tmp_path, monkeypatch):
-    make(tmp_path, "maze.maz")
+def test_relative_references_search_the_folders_above_as_eyesim_did(tmp_path, monkeypatch):
+    target = make(tmp_path, "maze.maz")
     scene = make(tmp_path, "lab/sub/a.sim")
     monkeypatch.chdir(scene.parent)
-    assert paths.resolve("maze.maz", scene) is None
+    assert paths.resolve("maze.maz", scene) == target
+    assert paths.resolve("maze.maz", make(tmp_path, "1/2/3/4/a.sim")) is None  # at most three folders up
+
+
+def test_a_relative_texture_of_a_world_copied_one_folder_down(tmp_path):
+    # EyeSim's Soccer1998.wld in worlds/worlds/ names ../textures/soccer.png, which is in textures/
+    # beside worlds/, not in worlds/textures/.
+    target = make(tmp_path, "Test Assets/textures/soccer.png")
+    world = make(tmp_path, "Test Assets/worlds/worlds/Soccer1998.wld")
+    assert paths.resolve("../textures/soccer.png", world) == target
+    assert paths.resolve("..\\textures\\Soccer.PNG", world) == target
+
+
+def test_relative_references_search_the_scene_folder_after_the_referencing_files(tmp_path):
+    target = make(tmp_path, "lab/images/floor.png")
+    world = make(tmp_path, "worlds/a/b/c/arena.wld")  # the world's own folders do not lead there
+    scene = make(tmp_path, "lab/run.sim")
+    assert paths.resolve("images/floor.png", world) is None
+    assert paths.resolve("images/floor.png", world, scene) == target
+
+
+def test_the_folders_above_come_before_the_homes(tmp_path, monkeypatch):
+    home = tmp_path / "home"
+    make(home, "textures/soccer.png")
+    near = make(tmp_path, "sims/textures/soccer.png")
+    monkeypatch.setenv("EYESIM_HOME", str(home))
+    assert paths.resolve("textures/soccer.png", make(tmp_path, "sims/worlds/w.wld")) == near
+    assert paths.resolve("textures/soccer.png", make(tmp_path, "other/x/w.wld")) == home / "textures/soccer.png"
+
+
+def test_a_placeholder_path_stays_missing():
+    # the corpus' Example.sim names `world "Path\To\World.wld"`; a world.wld two folders up is
+    # not what it means
+    scene = CORPUS / "ASAX21__VRRoboticProject/Test Assets/sims/Example.sim"
+    assert paths.resolve("Path\\To\\World.wld", scene) is None
 
 
 def test_directories_are_not_files(tmp_path):

@@ -82,6 +82,7 @@ class _SceneLoader:
         self.loaded_files: dict[str, str] = {}  # definition file -> type name
         self.builtin_objects: dict[str, ObjectType | None] = {}
         self.refused_references: set[str] = set()  # file names past the limits (reported)
+        self.scene_file: Path | None = None  # the scene being loaded: its folders are searched too
 
     # -- files ---------------------------------------------------------------------------------
     def world(self, path: Path) -> World | None:
@@ -144,7 +145,7 @@ class _SceneLoader:
         error here and not looked up (the file system would refuse it)."""
         problem = limits.path_too_long(reference)
         if problem is None:
-            return paths.resolve(reference, referencing)
+            return paths.resolve(reference, referencing, self.scene_file)
         self.diagnostics.error(where, f"file name {quoted(reference)} {problem}", limits.LIMIT)
         self.refused_references.add(reference)
         return None
@@ -153,7 +154,8 @@ class _SceneLoader:
         if reference in self.refused_references:
             return  # its error says enough
         self.diagnostics.warning(where, f"{what} not found: {quoted(reference)} (looked as given, next to "
-                                 f"{Path(referencing).name} and in the EyeSim home); {fallback}", "missing-file")
+                                 f"{Path(referencing).name}, in the folders above and in the EyeSim home); "
+                                 f"{fallback}", "missing-file")
 
     # -- types ---------------------------------------------------------------------------------
     def define_robot(self, reference: str, where: Location, scene_file: Path) -> RobotType:
@@ -244,6 +246,7 @@ class _SceneLoader:
 
     # -- the scene -----------------------------------------------------------------------------
     def scene(self, document: SimDocument, scene_file: Path) -> Scene:
+        self.scene_file = scene_file
         world = self.scene_world(document, scene_file)
         for reference in document.robot_files:
             robot = self.define_robot(reference.path, reference.location or Location(str(scene_file)), scene_file)

@@ -9,8 +9,9 @@ from pathlib import Path
 
 from eyesim.paths import DATA_DIR
 
-# How far above the referencing file we look for an EyeSim installation layout when a path is
-# rooted somewhere that does not exist here (C:\Users\..\eyesimX\..., %sim%/..., /worlds/...).
+# How far above the referencing file we look for an EyeSim installation layout when a path does
+# not lead to a file: rooted somewhere that does not exist here (C:\Users\..\eyesimX\...,
+# %sim%/..., /worlds/...), or relative to a folder the file was copied out of (../textures/x.png).
 ANCESTOR_LEVELS = 3
 
 _SIM_VARIABLE = re.compile(r"^%sim%[\\/]*", re.IGNORECASE)
@@ -24,13 +25,18 @@ def home_dirs() -> list[Path]:
     return dirs
 
 
-def resolve(reference: str, referencing_file: str | Path | None = None) -> Path | None:
+def resolve(reference: str, referencing_file: str | Path | None = None,
+            scene_file: str | Path | None = None) -> Path | None:
     """The file `reference` names, or None. Order: the path as given (absolute, or relative to
     the working directory); relative to the referencing file's directory; relative to each
     EyeSim home directory. `\\` and `/` both separate; `%sim%` and a leading '/' that does not
-    exist mean the EyeSim home. A rooted path that is not found falls back to its trailing
-    components, longest first, below the referencing file's directory and its parents and below
-    the home directories. Every step also accepts a match that differs only in letter case."""
+    exist mean the EyeSim home. Before the home directories, a relative path is also looked for
+    as written from the folders above the referencing file's (up to ANCESTOR_LEVELS), then from
+    the scene file's folder (when another file names it: a world's texture) and those above it,
+    as EyeSim searched (`../textures/soccer.png` of a world in `worlds/worlds/` finds
+    `textures/soccer.png` beside `worlds/`). A rooted path that is not found falls back to its
+    trailing components, longest first, below the same folders and the home directories. Every
+    step also accepts a match that differs only in letter case."""
     text = reference.strip().replace("\\", "/")
     if not text or "\x00" in text:
         return None
@@ -45,31 +51,35 @@ def resolve(reference: str, referencing_file: str | Path | None = None) -> Path 
     if _WINDOWS_DRIVE.match(text):
         parts = parts[1:]  # drop 'C:'
 
-    candidates: list[tuple[Path, list[str]]] = []
-    if not in_home:
-        if text.startswith("/") or (os.name == "nt" and _WINDOWS_DRIVE.match(text)):
-            candidates.append((Path(text[:3] if _WINDOWS_DRIVE.match(text) else "/"), parts))
-        elif not rooted:
-            candidates.append((Path.cwd(), parts))
-            if base is not None:
-                candidates.append((base, parts))
-    for home in home_dirs():
-        candidates.append((home, parts))
-    for anchor, rest in candidates:
-        found = _find(anchor, tuple(rest))
+    bases = [base] if base is not None else []
+    if scene_file is not None:
+        bases.append(Path(os.path.abspath(scene_file)).parent)
+    if rooted:
+        anchors = []
+        if not in_home and (text.startswith("/") or (os.name == "nt" and _WINDOWS_DRIVE.match(text))):
+            anchors.append(Path(text[:3] if _WINDOWS_DRIVE.match(text) else "/"))
+        anchors += home_dirs()
+    else:  # as written: from the working directory, the folders of the files that name it, the homes
+        anchors = [Path.cwd(), *_anchors(bases), *home_dirs()]
+    for anchor in anchors:
+        found = _find(anchor, tuple(parts))
         if found is not None:
             return found
-    if rooted:
-        return _trailing_components(parts, base)
-    return None
+    return _trailing_components(parts, _anchors(bases)) if rooted else None
 
 
-def _trailing_components(parts: list[str], base: Path | None) -> Path | None:
-    anchors = []
-    if base is not None:
-        anchors.append(base)
-        anchors.extend(list(base.parents)[:ANCESTOR_LEVELS])
-    anchors.extend(home_dirs())
+def _anchors(bases: list[Path]) -> list[Path]:
+    """Each base folder and up to ANCESTOR_LEVELS folders above it, in turn."""
+    anchors: list[Path] = []
+    for base in bases:
+        for anchor in (base, *list(base.parents)[:ANCESTOR_LEVELS]):
+            if anchor not in anchors:
+                anchors.append(anchor)
+    return anchors
+
+
+def _trailing_components(parts: list[str], anchors: list[Path]) -> Path | None:
+    anchors = [*anchors, *home_dirs()]
     usable = [p for p in parts if p != ".."]
     for start in range(len(usable)):
         suffix = tuple(usable[start:])
