@@ -130,6 +130,7 @@ def pure_wheel(build_dir: Path) -> Path:
         old.unlink()
     wheel_dir.mkdir(parents=True, exist_ok=True)
     log("building the Python part (the build backend without its CMake step)")
+    (build_dir / "pure.log").write_text("")
     # wheel.cmake=false: scikit-build-core copies the packages and writes the metadata only.
     _run([sys.executable, "-m", "pip", "wheel", "--quiet", "--no-deps", "--wheel-dir", str(wheel_dir),
           "--config-settings=wheel.cmake=false",
