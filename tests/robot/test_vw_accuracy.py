@@ -52,3 +52,41 @@ def test_vw_drive_as_far_ahead_as_aside_is_a_quarter_circle(drive):
         x, y = ahead(start, 0.2, side)
         assert math.hypot(end["x"] - x, end["y"] - y) < 0.005  # at (200, +-200) within 5 mm
         assert abs((heading(end) - heading(start) - turn + 180) % 360 - 180) < 1.0
+
+
+def angle_error(measured: float, target: float) -> float:
+    """Degrees between two headings, whatever whole turns lie between them."""
+    return (measured - target + 180) % 360 - 180
+
+
+def test_small_turns_take_what_the_ramps_allow_and_tight_arcs_end_on_their_heading(drive):
+    run = drive(["S4 1500 1500 0"], {1: "small_manoeuvres"})
+    at = run.marks(1)
+    spot_radius = 0.045  # m: the S4's half track
+    # Turns: each as fast as accelerating at 1 m/s^2 and braking at 0.5 m/s^2 (the VW ramps, wheel
+    # speed) allows, plus 40 ms for the last crawl, the calls' time and a step or two. Before, the
+    # crawl alone took 125 ms, a one-degree turn 146 ms.
+    turns = run.values(1, "turn")
+    assert len(turns) == 13
+    heading_now = heading(at["start"])
+    for i, (angle, took_ms) in enumerate(turns):
+        travel = math.radians(abs(angle)) * spot_radius
+        allowed_ms = 1000 * math.sqrt(2 * travel * (1 / 1.0 + 1 / 0.5)) + 40
+        assert took_ms <= allowed_ms, (angle, took_ms, allowed_ms)
+        heading_now += angle
+        # within the S4's 0.2-degree encoder steps of where the turns so far should have left it
+        assert abs(angle_error(heading(at[f"turn{i}"]), heading_now)) <= 0.3, (i, angle)
+    # Arcs: the odometry ends at the arc's end and heading, and so does the robot.
+    curves = run.values(1, "curve")
+    assert len(curves) == 5
+    before = at[f"turn{len(turns) - 1}"]
+    for i, (dist, angle, x, y, phi) in enumerate(curves):
+        end = at[f"curve{i}"]
+        radius = dist / math.radians(angle)  # mm, signed: the arc's end in the frame it started in
+        ahead_mm, left_mm = radius * math.sin(math.radians(angle)), radius * (1 - math.cos(math.radians(angle)))
+        assert abs(angle_error(phi, angle)) <= 1, (dist, angle, phi)  # VWGetPosition's whole degrees
+        assert math.hypot(x - ahead_mm, y - left_mm) <= 3, (dist, angle, x, y)
+        assert abs(angle_error(heading(end) - heading(before), angle)) <= 1, (dist, angle)
+        true_x, true_y = ahead(before, ahead_mm / 1000, left_mm / 1000)
+        assert math.hypot(end["x"] - true_x, end["y"] - true_y) <= 0.005, (dist, angle)
+        before = end

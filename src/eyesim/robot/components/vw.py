@@ -16,11 +16,14 @@ from eyesim.robot.drives.kinematics import Kinematics
 
 LINEAR_ACCEL = 1.0  # m/s^2 the controller ramps linear speed by (keeps the wheels from slipping)
 BRAKE_FRACTION = 0.5  # of the acceleration used to plan the stop, leaving headroom for lag
-MIN_APPROACH_SPEED = 0.004  # m/s: the crawl speed that finishes a manoeuvre without stalling short
+MIN_APPROACH_SPEED = 0.008  # m/s: the crawl speed that finishes a manoeuvre without stalling short
 HEADING_GAIN = 8.0  # 1/s: how hard a path manoeuvre corrects its heading towards the planned one
-# The last part of a manoeuvre is crawled: the wheels lag their set point by a few ms, and coming in
-# faster they would still turn on after the end, always past the target (12 turns: over 1 degree).
-CRAWL_DISTANCE = 0.0005  # m of wheel travel
+# The last part of a manoeuvre is crawled: the robot lags its wheels' set point by a few ms, and
+# coming in faster it would still turn on after the end, always past the target. What it still
+# rolls on after the end is carried into the next manoeuvre of its kind (VwController._owed_by),
+# so the crawl is kept short: 25 ms, and a one-degree turn takes about what the ramps allow
+# (S4: 70 ms; at 0.5 mm and 4 mm/s its crawl alone took 125 ms).
+CRAWL_DISTANCE = 0.0002  # m of wheel travel
 STALL_WINDOW = 0.1  # s over which a wheel's progress is judged
 STALL_FRACTION = 0.25  # a wheel turning less than this share of its set speed is stalled
 STALL_MIN_TICKS = 4  # a window in which a wheel should turn fewer ticks says nothing
@@ -43,31 +46,53 @@ class Manoeuvre:
     """A drive of `distance` m (signed) along an arc that changes the heading by `rotation` rad
     (signed); distance 0 is a turn on the spot. `speed` is m/s along the path, or rad/s for a turn.
 
-    The plan follows one quantity, `length`: metres of path, or radians for a turn on the spot;
-    what it needs every step is worked out here once."""
+    The plan follows one quantity, `length`: radians for a turn on the spot, else metres of the
+    outer wheel's travel (the path itself for a straight line): on a tight arc the outer wheel
+    travels many times as far as the reference point, and the speed, the ramps and the end are
+    planned on it so the wheels keep within their grip and the arc ends at its heading as well
+    as its length. What the plan needs every step is worked out here once."""
 
-    def __init__(self, distance: float, rotation: float, speed: float, start: tuple, drive: Kinematics):
+    def __init__(self, distance: float, rotation: float, speed: float, start: tuple, drive: Kinematics,
+                 max_turn: float = math.inf):
         self.distance = distance
         self.rotation = rotation
         self.start = start  # the drive's odometer reading
         self.on_the_spot = distance == 0
         followed = rotation if self.on_the_spot else distance
         self.sign = 1.0 if followed >= 0 else -1.0
-        self.length = abs(followed)
         self.curvature = 0.0 if self.on_the_spot else rotation / distance  # rad per metre
+        # Outer wheel travel per metre of path (1 on a straight line), and per radian turned beyond it.
+        self.lever = 0.0 if self.on_the_spot or rotation == 0 else drive.arc_lever()
+        self.factor = 1.0 + abs(self.curvature) * self.lever
+        self.turn_sign = 1.0 if rotation >= 0 else -1.0
+        self.length = abs(rotation) if self.on_the_spot else abs(distance) * self.factor
         self.top_speed = abs(speed)
-        if not self.on_the_spot:  # the outer wheel must stay within its motor's reach
+        if not self.on_the_spot:  # every wheel within its motor's reach, the turn within the robot's rate
             self.top_speed = min(self.top_speed, drive.top_speed(self.curvature))
+            if self.curvature:
+                self.top_speed = min(self.top_speed, max_turn / abs(self.curvature))
+            self.top_speed *= self.factor
         scale = 1 / drive.spot_radius if self.on_the_spot else 1.0  # wheel metres -> the followed unit
         # The odometry's resolution (what one wheel's tick moves the robot): a coarser tolerance
-        # would end every manoeuvre short by the same amount, and twelve turns add it up.
-        self.tolerance = drive.tick_travel * scale
+        # would end every manoeuvre short by the same amount, and twelve turns add it up. On an
+        # arc, a tick of an outer wheel moves the followed quantity by at most twice that (by
+        # `factor` times it when the odometry follows the path, as the car's does).
+        self.tolerance = drive.tick_travel * scale * min(self.factor, 2.0)
         self.floor = MIN_APPROACH_SPEED * scale
         self.crawl = CRAWL_DISTANCE * scale
         self.braking = 2 * BRAKE_FRACTION * LINEAR_ACCEL * scale  # speed = sqrt(braking x remaining)
         # Further than this from the end (followed unit), the plan is top speed until the next one:
         # the braking distance from top speed, plus twice what a PLAN_PERIOD at top speed covers.
         self.cruise_beyond = self.crawl + self.top_speed ** 2 / self.braking + 2 * self.top_speed * PLAN_PERIOD
+        # The reference point's speed ramps so that the outer wheel's does at LINEAR_ACCEL.
+        self.accel = LINEAR_ACCEL / self.factor
+
+    def progress(self, distance: float, rotation: float) -> float:
+        """How far along the followed quantity the robot is after moving `distance` and turning
+        `rotation` since the start (odometry): the outer wheel's travel on an arc."""
+        if self.on_the_spot:
+            return self.sign * rotation
+        return self.sign * distance + self.lever * self.turn_sign * rotation
 
 
 class VwController(Component):
@@ -88,8 +113,11 @@ class VwController(Component):
         self.w = 0.0  # rad/s
         self.target_v = 0.0
         self.target_w = 0.0
+        self.accel = LINEAR_ACCEL  # m/s^2 the linear speed ramps by (on an arc, less: the outer wheel's does so)
         self.manoeuvre: Manoeuvre | None = None
-        self._owed: tuple[str, float] | None = None  # ("turn" | "straight", what the last one left over)
+        # ("turn" | "straight", the last one's start reading, its signed target): what it left over
+        # is worked out when the next one starts, so that what the wheels did after it ended counts
+        self._owed: tuple[str, tuple, float] | None = None
         self.engaged = False  # the wheels' speeds still need setting every step (ramp, manoeuvre)
         self.driving = False  # the controller has the wheels turning: watch for stalls
         self._odometry = [0.0, 0.0, 0.0]  # x, y (m), phi (rad) since start or VWSetPosition, at _reading
@@ -125,6 +153,7 @@ class VwController(Component):
         self._owed = None
         self._new_command()
         self.engaged = self.driving = True
+        self.accel = LINEAR_ACCEL
         self.target_v = max(-self.max_speed, min(self.max_speed, v))
         self.target_w = max(-self.max_turn, min(self.max_turn, w))
         if self.steered:
@@ -140,12 +169,16 @@ class VwController(Component):
 
     def _owed_by(self, kind: str) -> float:
         """What the last manoeuvre of this kind left over (signed: m or rad), when it was the last
-        thing the wheels did. The encoders count in steps (an S4 turning on the spot: 0.2 degrees),
-        so a manoeuvre ends up to half a step off its target, always the same way for the same
-        target; carrying the rest into the next one keeps a series of turns or straights on target
-        (VWGetPosition knows the difference, too)."""
+        thing the wheels did: its target less what the odometry has counted since it started. The
+        encoders count in steps (an S4 turning on the spot: 0.2 degrees), so a manoeuvre ends up
+        to half a step off its target, and the wheels roll on a little after it ended; carrying
+        the rest into the next one keeps a series of turns or straights on target (VWGetPosition
+        knows the difference, too)."""
         owed, self._owed = self._owed, None
-        return owed[1] if owed is not None and owed[0] == kind else 0.0
+        if owed is None or owed[0] != kind:
+            return 0.0
+        distance, _, rotation = self.drive.motion(owed[1], self.drive.odometer())
+        return owed[2] - (rotation if kind == "turn" else distance)
 
     def curve(self, distance: float, angle: float, speed: float) -> None:
         """An arc of `distance` m changing the heading by `angle` rad; a zero distance turns on the
@@ -180,7 +213,8 @@ class VwController(Component):
 
     def _start(self, distance: float, rotation: float, speed: float) -> None:
         self._new_command()
-        self.manoeuvre = Manoeuvre(distance, rotation, speed, self.drive.odometer(), self.drive)
+        self.manoeuvre = Manoeuvre(distance, rotation, speed, self.drive.odometer(), self.drive, self.max_turn)
+        self.accel = self.manoeuvre.accel
         self.engaged = self.driving = True
         if self.manoeuvre.length == 0 or self.manoeuvre.top_speed == 0:
             self._finish()
@@ -209,8 +243,8 @@ class VwController(Component):
         if m is None:
             return 0.0
         distance, rotation = self._progress()
-        left = max(0.0, m.length - m.sign * (rotation if m.on_the_spot else distance))
-        return left * self.spot_radius if m.on_the_spot else left
+        left = max(0.0, m.length - m.progress(distance, rotation))
+        return left * self.spot_radius if m.on_the_spot else left / m.factor
 
     def measured_speed(self) -> tuple[float, float]:
         """Speeds from the wheels' rotation: m/s and rad/s."""
@@ -249,7 +283,7 @@ class VwController(Component):
                 return
             self._plan(dt, reading)
         v, w, target_v, target_w = self.v, self.w, self.target_v, self.target_w
-        v = _ramp(v, target_v, LINEAR_ACCEL * dt)
+        v = _ramp(v, target_v, self.accel * dt)
         if self.steered:  # the arc's curvature holds while the speed ramps
             w = target_w if v == target_v else v * target_w / target_v if target_v else 0.0
         else:
@@ -266,10 +300,10 @@ class VwController(Component):
         distance, _, rotation = self.drive.motion(m.start, reading)
         self._planned_at = reading
         self._held_steps = 0
-        remaining = m.length - m.sign * (rotation if m.on_the_spot else distance)
+        remaining = m.length - m.progress(distance, rotation)
         if remaining <= m.tolerance:
             if m.on_the_spot or m.rotation == 0:
-                self._owed = ("turn" if m.on_the_spot else "straight", m.sign * remaining)
+                self._owed = ("turn", m.start, m.rotation) if m.on_the_spot else ("straight", m.start, m.distance)
             self._finish()
             self.v = self.w = 0.0
             return
@@ -289,6 +323,7 @@ class VwController(Component):
                 self.w = m.sign * min(abs(self.w), speed)
             return
         heading_error = rotation - m.curvature * distance
+        speed /= m.factor  # the reference point's, on its path
         self.target_v = m.sign * speed
         self.target_w = self.target_v * m.curvature - HEADING_GAIN * heading_error
         if braking:

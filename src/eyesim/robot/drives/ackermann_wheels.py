@@ -174,6 +174,9 @@ class AckermannDrive(Component, Kinematics):
         # The outer rear wheel turns fastest; the differential lets it outrun the axle's motor.
         return self.motor.max_speed * self.radius / (1 + abs(curvature) * self.rear_track / 2)
 
+    def arc_lever(self) -> float:
+        return self.rear_track / 2  # the outer rear wheel, through the differential
+
     def stall_watch(self):
         return ((1, self.motor, 0, self.radius), (2, self.motor, 1, self.radius))
 

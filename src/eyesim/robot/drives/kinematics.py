@@ -42,6 +42,12 @@ class Kinematics:
         """m/s the robot may drive along an arc of `curvature` (rad/m) with every wheel within reach."""
         raise NotImplementedError
 
+    def arc_lever(self) -> float:
+        """m the outer driven wheel travels per radian of an arc beyond the reference point's path
+        (half the track of a differential drive): on an arc of curvature k it travels
+        1 + |k| x this as far as the reference point."""
+        return self.spot_radius
+
     def stall_watch(self) -> tuple[tuple[int, WheelMotor, int, float], ...]:
         """What stall detection watches: (VWStalled bit, motor, index of the wheel in
         wheel_ground_positions(), m the wheel rolls over the floor per radian of its motor)."""
