@@ -38,8 +38,9 @@ build/demo: examples/programs/demo.c $(INSTALLED)
 	$(BIN)/eyesim cc -O2 -Wall -Wextra examples/programs/demo.c -o $@
 
 # Debian packages the tests need, installed when missing (needs root): headless Chromium for the
-# browser tests, and software OpenGL (EGL and OSMesa) for the cameras' OpenGL renderer.
-SYSTEM_PACKAGES := chromium libegl1 libgl1-mesa-dri libosmesa6
+# browser tests, software OpenGL (EGL and OSMesa) for the cameras' OpenGL renderer, and bubblewrap
+# for the grader's sandbox.
+SYSTEM_PACKAGES := chromium libegl1 libgl1-mesa-dri libosmesa6 bubblewrap
 
 .PHONY: system-packages
 system-packages:

@@ -30,13 +30,19 @@ else:
 
 @dataclass(frozen=True)
 class Limits:
-    """A program's resource limits; None is no limit."""
+    """A program's resource limits; None is no limit. `processes` counts every process (and, on
+    Linux, thread) of the program's user (RLIMIT_NPROC), so it means "per program" only where the
+    program has a user of its own (a grading sandbox); on Windows it counts the job's processes.
+    `file_bytes` is the largest file the program may write (RLIMIT_FSIZE; not on Windows)."""
 
     cpu_seconds: float | None = None
     memory_bytes: int | None = None
+    processes: int | None = None
+    file_bytes: int | None = None
 
     def __bool__(self) -> bool:
-        return self.cpu_seconds is not None or self.memory_bytes is not None
+        return any(value is not None for value in (self.cpu_seconds, self.memory_bytes, self.processes,
+                                                   self.file_bytes))
 
 
 # ---- Starting and ending programs ---------------------------------------------------------------
@@ -99,6 +105,10 @@ def _apply_rlimits(limits: Limits) -> None:
         resource.setrlimit(resource.RLIMIT_CPU, (soft, soft + 1))  # SIGXCPU, then SIGKILL a second later
     if limits.memory_bytes is not None:
         resource.setrlimit(resource.RLIMIT_AS, (limits.memory_bytes, limits.memory_bytes))
+    if limits.processes is not None:
+        resource.setrlimit(resource.RLIMIT_NPROC, (limits.processes, limits.processes))
+    if limits.file_bytes is not None:
+        resource.setrlimit(resource.RLIMIT_FSIZE, (limits.file_bytes, limits.file_bytes))
 
 
 # ---- Windows jobs ---------------------------------------------------------------------------------
@@ -136,6 +146,7 @@ if WINDOWS:
 
     _EXTENDED_LIMIT_INFORMATION = 9  # JobObjectExtendedLimitInformation
     _LIMIT_PROCESS_TIME = 0x2
+    _LIMIT_ACTIVE_PROCESS = 0x8
     _LIMIT_PROCESS_MEMORY = 0x100
     _LIMIT_KILL_ON_JOB_CLOSE = 0x2000
     _CREATE_SUSPENDED = 0x4
@@ -154,6 +165,9 @@ def _new_job(limits: Limits) -> int:
     if limits.memory_bytes is not None:
         info.basic.flags |= _LIMIT_PROCESS_MEMORY
         info.process_memory = limits.memory_bytes
+    if limits.processes is not None:
+        info.basic.flags |= _LIMIT_ACTIVE_PROCESS
+        info.basic.active_processes = limits.processes
     if not _kernel32.SetInformationJobObject(job, _EXTENDED_LIMIT_INFORMATION, ctypes.byref(info),
                                              ctypes.sizeof(info)):
         error = ctypes.get_last_error()

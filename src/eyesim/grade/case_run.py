@@ -4,12 +4,15 @@ submission's programs, simulate the case, judge its checks, and collect the evid
 Everything in the result except `timing` depends only on the spec and the submission, never on
 the machine or the wall clock, so a case graded anywhere gives the same result (docs/grading.md).
 
-    python -m eyesim.grade.case_run RESULT.pickle < TASK.pickle
+    python -m eyesim.grade.case_run CASE_FOLDER < TASK.pickle > RESULT.json
 """
 
 from __future__ import annotations
 
+import base64
 import io
+import json
+import os
 import pickle
 import shutil
 import subprocess
@@ -21,15 +24,19 @@ from pathlib import Path
 PATH_PERIOD = 0.1  # s between the path points kept for the report's plot
 TAIL = 4000  # characters of a program's output kept in the result
 COMPILE_TIMEOUT = 120  # s
+# The compiler's limits: `#include "/dev/zero"` makes cc1 ask for gigabytes, a generated source for hours.
+COMPILE_LIMITS = dict(cpu_seconds=60, memory_bytes=2 << 30, file_bytes=256 << 20)
+FILE_BYTES = 64 << 20  # the largest file a graded program may write
 
 
 def _tail(text: str) -> str:
     return text if len(text) <= TAIL else "..." + text[-TAIL:]
 
 
-def build(program, submission_files: dict[str, bytes], directory: Path) -> tuple[Path | None, dict]:
-    """Build one of the spec's programs from the submission's files in `directory`;
-    returns (executable or None, build record)."""
+def build(program, submission_files: dict[str, bytes], directory: Path,
+          task_processes: int | None = None) -> tuple[Path | None, dict]:
+    """Build one of the spec's programs from the submission's files in `directory`, the compiler
+    under COMPILE_LIMITS (and `task_processes`); returns (executable or None, build record)."""
     from eyesim.programs import toolchain
 
     sources: list[str] = []
@@ -53,7 +60,7 @@ def build(program, submission_files: dict[str, bytes], directory: Path) -> tuple
         # a temporary directory, so they are the same wherever the case runs.
         args = [*program.flags, *map(toolchain.source_argument, sources), "-o", str(output)]
         command = toolchain.compiler_command(language, args)
-        result = subprocess.run(command, cwd=directory, capture_output=True, text=True, timeout=COMPILE_TIMEOUT)
+        result = _run_limited(command, directory, task_processes)
     except (toolchain.LibraryMissing, toolchain.CompilerMissing) as error:
         return None, {"ok": False, "status": "grader_error", "output": str(error)}
     except FileNotFoundError:
@@ -65,6 +72,19 @@ def build(program, submission_files: dict[str, bytes], directory: Path) -> tuple
         return None, {"ok": False, "status": "compile_error", "output": text}
     toolchain.place_library(args, cwd=directory)
     return output, {"ok": True, "status": "ok", "output": text}
+
+
+def _run_limited(command: list[str], cwd: Path, processes: int | None) -> subprocess.CompletedProcess:
+    from eyesim import platform
+
+    process = platform.start(command, own_group=True, limits=platform.Limits(**COMPILE_LIMITS, processes=processes),
+                             cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, errors="replace")
+    try:
+        stdout, stderr = process.communicate(timeout=COMPILE_TIMEOUT)
+    finally:
+        platform.kill_tree(process, own_group=True)
+        process.wait()
+    return subprocess.CompletedProcess(command, process.returncode, stdout, stderr)
 
 
 def _matching(files: dict[str, bytes], pattern: str) -> list[str]:
@@ -144,7 +164,8 @@ def run_case(task: dict, directory: Path) -> dict:
     for entry in case.robots:
         name = entry["program"]
         if name not in result["build"]:
-            executables[name], result["build"][name] = build(programs[name], task["submission_files"], work)
+            executables[name], result["build"][name] = build(programs[name], task["submission_files"], work,
+                                                             task.get("processes"))
     failed = [name for name, record in result["build"].items() if not record["ok"]]
     if failed:
         record = result["build"][failed[0]]
@@ -159,7 +180,7 @@ def run_case(task: dict, directory: Path) -> dict:
         for entry in case.robots:
             sim.program(entry["robot"], executables[entry["program"]], *entry.get("args", ()),
                         stdin=entry.get("stdin"), cwd=work, env=entry.get("env"), cpu_seconds=case.cpu,
-                        memory_bytes=case.memory_mb << 20)
+                        memory_bytes=case.memory_mb << 20, processes=task.get("processes"), file_bytes=FILE_BYTES)
         _schedule_inputs(sim, case.inputs)
         end = sim.run(until=case.time, end_with_programs=case.end_with_programs, wall_timeout=case.wall_clock)
         sim.stop_programs()  # the run is over: what still runs is stopped, its output complete
@@ -192,10 +213,15 @@ def run_case(task: dict, directory: Path) -> dict:
 
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
-    result_path = Path(argv[0])
+    answer = os.fdopen(os.dup(1), "w")  # the result goes here; anything else printed goes to stderr
+    os.dup2(2, 1)
+    from eyesim.grade.sandbox import become_case_user
+
+    become_case_user()
+    _not_inspectable()
     task = pickle.load(sys.stdin.buffer)
     started = time.perf_counter()
-    directory = Path(argv[1]) if len(argv) > 1 else result_path.parent / "case"
+    directory = Path(argv[0])
     try:
         result = run_case(task, directory)
     except Exception:
@@ -206,8 +232,20 @@ def main(argv: list[str] | None = None) -> int:
     finally:
         shutil.rmtree(directory, ignore_errors=True)
     result["timing"] = {"case_seconds": round(time.perf_counter() - started, 3)}
-    result_path.write_bytes(pickle.dumps(result))
+    result["artifacts"] = {name: base64.b64encode(data).decode() for name, data in result["artifacts"].items()}
+    json.dump(result, answer)
+    answer.close()
     return 0
+
+
+def _not_inspectable() -> None:
+    """Linux: the student's programs, which run as the same user, cannot open this process's
+    /proc files (its memory, the pipe of its answer) once it is not dumpable."""
+    if sys.platform.startswith("linux"):
+        import ctypes
+
+        PR_SET_DUMPABLE = 4
+        ctypes.CDLL(None, use_errno=True).prctl(PR_SET_DUMPABLE, 0, 0, 0, 0)
 
 
 if __name__ == "__main__":

@@ -22,6 +22,9 @@ def register(subparsers) -> None:
     parser.add_argument("--case", action="append", default=[], metavar="NAME",
                         help="grade only this case of the spec (repeatable)")
     parser.add_argument("--fresh", action="store_true", help="grade everything again, ignoring stored results")
+    parser.add_argument("--require-isolation", action="store_true",
+                        help="refuse to grade where cases cannot be sandboxed (Linux without bubblewrap, macOS, "
+                             "Windows); on a Dask cluster, each worker refuses cases it cannot sandbox")
     parser.add_argument("--require-pass", action="store_true",
                         help="exit with status 1 unless every check of every case passed (regression tests)")
     parser.set_defaults(func=main)
@@ -63,12 +66,20 @@ def main(args) -> int:
     if duplicates:
         return _usage(f"two submissions are named {', '.join(duplicates)}")
     out = Path(args.out or f"grading-{Path(args.spec).stem}")
+    if not args.cluster:
+        from eyesim.grade.sandbox import why_not_isolated
+
+        unisolated = why_not_isolated()
+        if unisolated and args.require_isolation:
+            return _usage(f"--require-isolation: {unisolated}")
+        if unisolated:
+            print(f"eyesim grade: warning: {unisolated}", file=sys.stderr)
     try:
         executor = _executor(args)
     except Exception as error:  # ExecutorError, and whatever a Dask address can raise
         return _usage(str(error))
     try:
-        run = grade(spec, submissions, out, executor, resume=not args.fresh)
+        run = grade(spec, submissions, out, executor, resume=not args.fresh, require_isolation=args.require_isolation)
     except Interrupted as error:
         print(f"\neyesim grade: {error}", file=sys.stderr)
         return 130

@@ -1,10 +1,18 @@
 """Running one case in a process of its own, wherever this function is called: in a thread of
 the local pool or in a Dask worker. The case process has its own port, its own temporary
-directory and its own process group (a job on Windows); when it overruns its case's wall-clock limit by
-HARD_MARGIN it is killed with everything in its group, and the case is reported, not lost."""
+directory and its own process group (a job on Windows), and on Linux with bubblewrap a sandbox of
+its own (sandbox.py); when it overruns its case's wall-clock limit by HARD_MARGIN it is killed
+with everything in it, and the case is reported, not lost.
+
+The case process answers with JSON on its standard output, never with a file in its work folder
+(which the submission could rewrite) nor with a pickle (which would run code in the grader). What
+the grader knows itself (student, case, weight, key) it does not take from the answer."""
 
 from __future__ import annotations
 
+import base64
+import json
+import os
 import pickle
 import subprocess
 import sys
@@ -14,8 +22,10 @@ import time
 from pathlib import Path
 
 from eyesim import platform
+from eyesim.grade import sandbox
 
 HARD_MARGIN = 60.0  # s beyond the case's own watchdog (which stops programs gently) before killing
+CASE_PROCESSES = 256  # processes and threads a sandboxed case's user may have (simulator threads included)
 
 _running: set[subprocess.Popen] = set()  # case processes of this process, for an interrupted run
 _running_lock = threading.Lock()
@@ -40,30 +50,65 @@ def failed_result(task: dict, status: str, message: str) -> dict:
 def run_case_isolated(task: dict) -> dict:
     """Grade one submission x case in a fresh `python -m eyesim.grade.case_run`; returns its result."""
     started = time.perf_counter()
+
+    def timed(result: dict) -> dict:
+        return dict(result, timing={"case_seconds": round(time.perf_counter() - started, 3)})
+
+    unisolated = sandbox.why_not_isolated()
+    if unisolated and task.get("require_isolation"):
+        return timed(failed_result(task, "grader_error", f"refused: {unisolated} (--require-isolation)"))
     with tempfile.TemporaryDirectory(prefix="eyesim-grade-") as tmp:
-        result_path = Path(tmp) / "result.pickle"
-        process = platform.start([sys.executable, "-m", "eyesim.grade.case_run", str(result_path),
-                                  str(Path(tmp) / "case")], own_group=True,
-                                 stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, cwd=tmp)
+        work = Path(tmp)
+        process, task = _start_case(task, work)
         with _running_lock:
             _running.add(process)
         try:
-            _, stderr = process.communicate(pickle.dumps(task), timeout=task["case"].wall_clock + HARD_MARGIN)
+            stdout, stderr = process.communicate(pickle.dumps(task), timeout=task["case"].wall_clock + HARD_MARGIN)
         except subprocess.TimeoutExpired:
             _kill_group(process)
-            return dict(failed_result(task, "timeout", f"the case took over {task['case'].wall_clock + HARD_MARGIN:g} s "
-                                                         f"of real time and was killed"),
-                        timing={"case_seconds": round(time.perf_counter() - started, 3)})
+            return timed(failed_result(task, "timeout", f"the case took over {task['case'].wall_clock + HARD_MARGIN:g} s "
+                                                        f"of real time and was killed"))
         finally:
             _kill_group(process)  # programs the case left behind in its group
             with _running_lock:
                 _running.discard(process)
-        if not result_path.exists():
+        result = _read_result(stdout, task)
+        if result is None:
             tail = stderr.decode(errors="replace")[-3000:]
-            return dict(failed_result(task, "grader_error", f"the case process ended with status {process.returncode} "
-                                                              f"without a result:\n{tail}"),
-                        timing={"case_seconds": round(time.perf_counter() - started, 3)})
-        return pickle.loads(result_path.read_bytes())
+            return timed(failed_result(task, "grader_error", f"the case process ended with status {process.returncode} "
+                                                             f"without a result:\n{tail}"))
+        return result
+
+
+def _start_case(task: dict, work: Path) -> tuple[subprocess.Popen, dict]:
+    """The case process, sandboxed where bubblewrap is (and the task allows), with the task as it
+    is sent to it."""
+    inner = [sys.executable, "-m", "eyesim.grade.case_run", str(work / "case")]
+    pipes = dict(stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=work)
+    if not task.get("isolate", True) or sandbox.bwrap() is None:
+        return platform.start(inner, own_group=True, **pipes), task
+    uid = sandbox.case_uid()
+    if uid is not None:
+        os.chown(work, uid, uid)
+    task = dict(task, processes=CASE_PROCESSES if uid is not None else None)
+    process = subprocess.Popen(sandbox.command(inner, work, uid), start_new_session=True, **pipes)
+    return process, task
+
+
+def _read_result(stdout: bytes, task: dict) -> dict | None:
+    """The case process's answer, checked for its shape; None when there is none."""
+    try:
+        result = json.loads(stdout)
+        if not isinstance(result, dict) or not isinstance(result.get("checks"), list):
+            return None
+        score = float(result["score"])
+        artifacts = {str(name): base64.b64decode(data) for name, data in (result.get("artifacts") or {}).items()
+                     if "/" not in str(name) and not str(name).startswith(".")}
+    except (ValueError, TypeError, KeyError, AttributeError):
+        return None
+    case = task["case"]
+    return dict(result, student=task["student"], case=case.name, weight=case.weight, key=task["key"],
+                score=min(1.0, max(0.0, score)), artifacts=artifacts)
 
 
 def _kill_group(process: subprocess.Popen) -> None:

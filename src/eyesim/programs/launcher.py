@@ -35,10 +35,12 @@ class ProgramOptions:
     cpu_seconds: float | None = None
     memory_bytes: int | None = None
     own_group: bool = False
+    processes: int | None = None  # RLIMIT_NPROC (platform.Limits says what it counts)
+    file_bytes: int | None = None  # RLIMIT_FSIZE: the largest file the program may write
 
     @property
     def limits(self) -> platform.Limits:
-        return platform.Limits(self.cpu_seconds, self.memory_bytes)
+        return platform.Limits(self.cpu_seconds, self.memory_bytes, self.processes, self.file_bytes)
 
 
 @dataclass

@@ -156,12 +156,13 @@ class Simulation:
     # -- programs --------------------------------------------------------------------------------
     def program(self, robot, program, *args: str, stdin: str | bytes | None = None, cwd=None,
                 env: dict | None = None, cpu_seconds: float | None = None, memory_bytes: int | None = None,
-                own_group: bool = False):
+                own_group: bool = False, processes: int | None = None, file_bytes: int | None = None):
         """Run a program for a robot when the simulation starts: an executable, a `.py` file
         (run with this Python) or a Python callable `program(robot_client)` (callable_program.py).
         Programs start with the first `run()`; their results are read from `robot(n)`.
-        `cpu_seconds` and `memory_bytes` limit the program's process; `own_group` gives it a
-        process group of its own, stopped as a whole (launcher.ProgramOptions)."""
+        `cpu_seconds`, `memory_bytes`, `processes` and `file_bytes` limit the program's process
+        (platform.Limits); `own_group` gives it a process group of its own, stopped as a whole
+        (launcher.ProgramOptions)."""
         robot_id = self._robot(robot).id
         if robot_id in self._runs or any(r == robot_id for r, *_ in self._pending_programs):
             raise SimulationError(f"robot {robot_id} already has a program")
@@ -172,7 +173,7 @@ class Simulation:
             if not path.is_file():
                 raise SimulationError(f"program not found: {program}")
             options = ProgramOptions(tuple(str(a) for a in args), stdin, cwd, dict(env or {}), cpu_seconds,
-                                     memory_bytes, own_group)
+                                     memory_bytes, own_group, processes, file_bytes)
             self._pending_programs.append((robot_id, path, options))
         if self._started:
             self._start_programs()
