@@ -74,6 +74,18 @@ def test_a_missing_program_robot_marker_or_scene_is_reported_against_the_scene(t
     assert problem.startswith("spec.toml:7: cases[0].scene: scene 'nowhere.sim' not found")
 
 
+def test_schema_and_scene_problems_are_reported_in_one_pass(tmp_path):
+    """A misspelt key and a robot the scene does not have: both at once, not one round each."""
+    text = GOOD.replace("tolerance = 50", "tolernce = 50").replace("robot = 1\npoint", "robot = 3\npoint")
+    found = problems(tmp_path, text)
+    assert any(p.startswith("spec.toml:10: cases[0].checks[0]: unknown key 'tolernce'") for p in found)
+    assert f"spec.toml:12: cases[0].checks[0].robot: no robot 3 in scene '{SCENE}'; robots: 1 (S4)" in found
+    found = problems(tmp_path, GOOD.replace('name = "one"', 'name = 5').replace('program = "follower"',
+                                                                               'program = "folower"'))
+    assert any("cases[0].name" in p for p in found)
+    assert any("no program 'folower'" in p for p in found)
+
+
 def test_a_custom_python_check_must_define_its_function(tmp_path):
     (tmp_path / "extra.py").write_text("def other(sim):\n    return True\n")
     text = GOOD + '\n[[cases.checks]]\nkind = "python"\nfile = "extra.py"\nfunction = "check"\n'

@@ -3,6 +3,7 @@ with every problem reported as `spec.toml:LINE: what is wrong` (docs/grading.md)
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import json
 import re
@@ -93,6 +94,19 @@ def load_spec(path: str | Path) -> GradingSpec:
     return _Checker(path, text, document).spec()
 
 
+def _table(value) -> dict:
+    return value if isinstance(value, dict) else {}
+
+
+@contextlib.contextmanager
+def _passed_over():
+    """A part of the spec the schema found malformed: checking it further stops here quietly."""
+    try:
+        yield
+    except (KeyError, TypeError, ValueError, AttributeError, IndexError):
+        pass
+
+
 def _path_text(path) -> str:
     text = ""
     for part in path:
@@ -119,31 +133,21 @@ class _Checker:
         validator = jsonschema.Draft202012Validator(schema())
         for error in sorted(validator.iter_errors(self.document), key=lambda e: [str(p) for p in e.absolute_path]):
             self.problem(tuple(error.absolute_path), self._schema_message(error))
-        if self.problems:
-            raise SpecError(self.problems)
+        # On with the scene checks even after schema errors, so one pass reports everything; what
+        # the schema found malformed is passed over (it is reported already).
         doc = self.document
-        limits = dict(DEFAULT_LIMITS, **doc.get("limits", {}))
-        programs = {name: ProgramSpec(name, tuple(p["sources"]), p.get("language", "c"),
-                                      tuple(p.get("flags", ["-O2"] if p.get("language", "c") != "python" else [])))
-                    for name, p in doc["programs"].items()}
+        limits = dict(DEFAULT_LIMITS, **_table(doc.get("limits")))
+        programs = {}
+        for name, p in _table(doc.get("programs")).items():
+            with _passed_over():
+                programs[name] = ProgramSpec(name, tuple(p["sources"]), p.get("language", "c"),
+                                             tuple(p.get("flags", ["-O2"] if p.get("language", "c") != "python" else [])))
         python_checks: dict[str, str] = {}
         cases, names = [], set()
-        for index, raw in enumerate(doc["cases"]):
-            where = ("cases", index)
-            if raw["name"] in names:
-                self.problem(where + ("name",), f"a second case named {raw['name']!r}")
-            names.add(raw["name"])
-            scene = self._scene(where + ("scene",), raw["scene"])
-            case = CaseSpec(raw["name"], scene, raw["scene"], raw.get("time", limits["time"]),
-                            raw.get("wall_clock", limits["wall_clock"]), limits["cpu"], limits["memory_mb"],
-                            raw.get("weight", 1.0), raw.get("end_with_programs", True),
-                            raw.get("robots", []), raw.get("inputs", []), raw["checks"])
-            if scene is not None:
-                self._settings(case, raw)
-                self._robots(where, case, programs)
-                self._inputs(where, case)
-                self._checks(where, case, python_checks)
-            cases.append(case)
+        raw_cases = doc.get("cases") if isinstance(doc.get("cases"), list) else []
+        for index, raw in enumerate(raw_cases):
+            with _passed_over():
+                cases.append(self._case(("cases", index), raw, names, limits, programs, python_checks))
         if self.problems:
             raise SpecError(self.problems)
         from eyesim import __version__
@@ -155,6 +159,22 @@ class _Checker:
             digest.update(repr(case.scene).encode())  # the scene as loaded, with its robot and world files
         return GradingSpec(self.path, doc.get("title", self.path.stem), programs, cases, python_checks,
                            digest.hexdigest()[:16])
+
+    def _case(self, where: tuple, raw: dict, names: set, limits: dict, programs: dict, python_checks: dict) -> CaseSpec:
+        if raw["name"] in names:
+            self.problem(where + ("name",), f"a second case named {raw['name']!r}")
+        names.add(raw["name"])
+        scene = self._scene(where + ("scene",), raw["scene"])
+        case = CaseSpec(raw["name"], scene, raw["scene"], raw.get("time", limits["time"]),
+                        raw.get("wall_clock", limits["wall_clock"]), limits["cpu"], limits["memory_mb"],
+                        raw.get("weight", 1.0), raw.get("end_with_programs", True),
+                        raw.get("robots", []), raw.get("inputs", []), raw["checks"])
+        if scene is not None:
+            self._settings(case, raw)
+            self._robots(where, case, programs)
+            self._inputs(where, case)
+            self._checks(where, case, python_checks)
+        return case
 
     @staticmethod
     def _schema_message(error) -> str:
