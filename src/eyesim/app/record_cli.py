@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import sys
+from pathlib import Path
 
+from eyesim.grade.store import RECORDING
 from eyesim.record.recording import Recording, RecordingError
 
 
@@ -17,7 +19,8 @@ def register(subparsers) -> None:
 
     replay = subparsers.add_parser("replay", help="watch a recording in the browser viewer, with a timeline",
                                    description="Serve the viewer over a recording: play, pause, scrub, plot.")
-    replay.add_argument("recording", help="an .mcap file made with eyesim run --record")
+    replay.add_argument("recording", help="an .mcap file made with eyesim run --record, or the folder of a "
+                                          "grading report (eyesim grade --out), to watch its cases' runs")
     replay.add_argument("--host", default="127.0.0.1", help="address to serve on (default 127.0.0.1)")
     replay.add_argument("--viewer-port", type=int, default=8080, help="port of the viewer (default 8080; 0 = any free port)")
     replay.add_argument("--open", action="store_true", help="open the viewer in a web browser")
@@ -68,26 +71,41 @@ def export_main(args) -> int:
 
 
 def replay_main(args) -> int:
+    report = Path(args.recording) if Path(args.recording).is_dir() else None
+    if report is not None:
+        recordings = sorted(report.glob(f"cases/*/*/{RECORDING}"))
+        if not recordings:
+            print(f"eyesim replay: {report} holds no recorded case (cases/*/*/{RECORDING}); grade with "
+                  f"--keep-recordings all, or failed (the default) when a case failed", file=sys.stderr)
+            return 2
+        args.recording = str(recordings[0])
+    return serve_replay(args.recording, args.host, args.viewer_port, args.open, report)
+
+
+def serve_replay(path: str, host: str, port: int, open_browser: bool, report: Path | None = None) -> int:
+    """Serve the viewer over a recording (and a grading report) until Ctrl-C."""
     import asyncio
     import webbrowser
 
     from eyesim.app.run import _has_display
     from eyesim.web.replay_server import serve
 
-    recording = open_recording(args.recording, "replay")
+    recording = open_recording(path, "replay")
     if recording is None:
         return 2
 
     def ready(server) -> None:
+        if report is not None:
+            print(f"EyeSim grading report with replays: {server.report_url}", flush=True)
         print(f"EyeSim replay of {recording.path.name} ({recording.duration_s:.1f} s): {server.url}", flush=True)
-        if args.open and _has_display():
-            webbrowser.open(server.url)
+        if open_browser and _has_display():
+            webbrowser.open(server.report_url if report is not None else server.url)
 
     with recording:
         try:
-            asyncio.run(serve(recording, args.host, args.viewer_port, ready))
+            asyncio.run(serve(recording, host, port, ready, report_dir=report))
         except OSError as error:
-            print(f"eyesim replay: cannot serve on port {args.viewer_port}: {error.strerror} (try --viewer-port 0)",
+            print(f"eyesim replay: cannot serve on port {port}: {error.strerror} (try --viewer-port 0)",
                   file=sys.stderr)
             return 2
         except KeyboardInterrupt:

@@ -148,6 +148,8 @@ def run_case(task: dict, directory: Path) -> dict:
     """The case's result (a dict of plain data, `artifacts` holding file contents)."""
     from eyesim.core.stalls import hung_status
     from eyesim.grade.checks import judge
+    from eyesim.grade.store import RECORDING
+    from eyesim.record import Recorder
     from eyesim.testing import Simulation
     from eyesim.testing.assertions import describe_exit
 
@@ -182,8 +184,12 @@ def run_case(task: dict, directory: Path) -> dict:
                         stdin=entry.get("stdin"), cwd=work, env=entry.get("env"), cpu_seconds=case.cpu,
                         memory_bytes=case.memory_mb << 20, processes=task.get("processes"), file_bytes=FILE_BYTES)
         _schedule_inputs(sim, case.inputs)
+        keep = task.get("keep_recording", "failed")
+        recorder = Recorder(sim.engine, directory / RECORDING) if keep != "none" else None
         end = sim.run(until=case.time, end_with_programs=case.end_with_programs, wall_timeout=case.wall_clock)
         sim.stop_programs()  # the run is over: what still runs is stopped, its output complete
+        if recorder is not None:
+            recorder.close()
         result["end"] = {"reason": end.reason, "time": round(end.time, 6)}
         result["status"] = _status(end, [robot.program for robot in sim.robots if robot.program is not None])
         if end.stalled:  # why it stood still, in the teacher's words: "waiting for a key", "hung: ..."
@@ -208,6 +214,9 @@ def run_case(task: dict, directory: Path) -> dict:
                 "lcd_text": robot.lcd_text()}
             result["artifacts"][f"robot{robot.id}-lcd.png"] = _png(robot.lcd_image())
         result["contacts"] = [c.as_dict() for c in sim.contacts[:100]]
+    failed = result["status"] != "ok" or result["score"] < 1.0
+    if recorder is not None and (keep == "all" or failed):
+        result["artifacts"][RECORDING] = (directory / RECORDING).read_bytes()
     return result
 
 

@@ -25,6 +25,13 @@ def register(subparsers) -> None:
     parser.add_argument("--require-isolation", action="store_true",
                         help="refuse to grade where cases cannot be sandboxed (Linux without bubblewrap, macOS, "
                              "Windows); on a Dask cluster, each worker refuses cases it cannot sandbox")
+    parser.add_argument("--keep-recordings", choices=("failed", "all", "none"), default="failed",
+                        help="keep each case's MCAP recording beside its result, to watch with eyesim replay: "
+                             "of the cases that did not score full marks (default), of all, or of none")
+    parser.add_argument("--serve", action="store_true",
+                        help="then serve the report with its cases' replays in the browser (until Ctrl-C)")
+    parser.add_argument("--viewer-port", type=int, default=8080,
+                        help="port for --serve (default 8080; 0 = any free port)")
     parser.add_argument("--require-pass", action="store_true",
                         help="exit with status 1 unless every check of every case passed (regression tests)")
     parser.set_defaults(func=main)
@@ -79,7 +86,8 @@ def main(args) -> int:
     except Exception as error:  # ExecutorError, and whatever a Dask address can raise
         return _usage(str(error))
     try:
-        run = grade(spec, submissions, out, executor, resume=not args.fresh, require_isolation=args.require_isolation)
+        run = grade(spec, submissions, out, executor, resume=not args.fresh, require_isolation=args.require_isolation,
+                    keep_recordings=args.keep_recordings)
     except Interrupted as error:
         print(f"\neyesim grade: {error}", file=sys.stderr)
         return 130
@@ -89,6 +97,11 @@ def main(args) -> int:
         print(f"{student['name']:<{width}}  {student['score']:6.1f}  ({student['passed_checks']}/{student['checks']} checks)")
     print(f"eyesim grade: {run.ran} case(s) graded, {run.reused} reused; report: {out / 'index.html'}, "
           f"{out / 'report.json'}, {out / 'junit.xml'}")
+    if args.serve:
+        from eyesim.app.record_cli import replay_main
+
+        args.recording, args.host, args.open = str(out), "127.0.0.1", False
+        replay_main(args)
     if args.require_pass:
         failed = [(s["name"], c["case"], check) for s in summary["students"] for c in s["cases"]
                   for check in c["checks"] if not check["passed"]]

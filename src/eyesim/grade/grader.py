@@ -30,21 +30,24 @@ class GradingRun:
     reused: int  # cases whose stored results were still valid
 
 
-def tasks_for(spec: GradingSpec, submission: Submission, require_isolation: bool = False) -> list[dict]:
+def tasks_for(spec: GradingSpec, submission: Submission, require_isolation: bool = False,
+              keep_recordings: str = "failed") -> list[dict]:
     """What each case process is sent. With `require_isolation` a worker that cannot sandbox the
-    case refuses it (sandbox.py)."""
+    case refuses it (sandbox.py); `keep_recordings` (failed, all, none): which cases' MCAP
+    recordings come back with their results."""
     tasks = []
     for case in spec.cases:
         used = {entry["program"] for entry in case.robots}
         tasks.append({"student": submission.name, "submission_files": submission.files, "case": case,
                       "programs": {name: spec.programs[name] for name in sorted(used)},
                       "python_checks": spec.python_checks, "require_isolation": require_isolation,
+                      "keep_recording": keep_recordings,
                       "key": {"spec": spec.digest, "submission": submission.digest, "case": case.name}})
     return tasks
 
 
 def grade(spec: GradingSpec, submissions: list[Submission], out: Path, executor, resume: bool = True,
-          progress_stream=None, require_isolation: bool = False) -> GradingRun:
+          progress_stream=None, require_isolation: bool = False, keep_recordings: str = "failed") -> GradingRun:
     """Grade; results already stored for the same spec and submission are reused when `resume`.
     A KeyboardInterrupt stops the run; what finished is stored."""
     out.mkdir(parents=True, exist_ok=True)
@@ -52,7 +55,7 @@ def grade(spec: GradingSpec, submissions: list[Submission], out: Path, executor,
     results: dict[tuple[str, str], dict] = {}
     pending = []
     for submission in submissions:
-        for task in tasks_for(spec, submission, require_isolation):
+        for task in tasks_for(spec, submission, require_isolation, keep_recordings):
             stored = store.load(task["student"], task["case"].name, task["key"]) if resume else None
             if stored is not None:
                 results[(task["student"], task["case"].name)] = stored

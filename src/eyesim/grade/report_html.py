@@ -9,6 +9,8 @@ import json
 from html import escape
 from pathlib import Path
 
+from eyesim.grade.store import RECORDING
+
 STYLE = """
 body { font-family: system-ui, sans-serif; margin: 2em; color: #222; }
 table { border-collapse: collapse; margin: 0.5em 0 1em; }
@@ -20,6 +22,9 @@ td.score, td.num { text-align: right; font-variant-numeric: tabular-nums; }
 .status { display: inline-block; padding: 0 0.4em; border-radius: 0.3em; font-size: 0.85em; background: #eee; }
 .status.compile_error, .status.missing_sources, .status.grader_error { background: #ffd8d8; }
 .status.timeout, .status.crashed, .status.cpu_limit { background: #fff1c2; }
+.badge { display: inline-block; padding: 0 0.45em; border-radius: 0.3em; font-size: 0.85em; color: #fff; }
+.badge.full { background: #1a7f37; } .badge.partial { background: #bf8700; } .badge.low { background: #cf222e; }
+.replay code { background: #f6f8fa; padding: 0 0.3em; }
 .student { border-top: 2px solid #888; margin-top: 2em; }
 .case { margin-left: 1em; }
 .images img { margin: 0.3em 0.6em 0.3em 0; border: 1px solid #ccc; vertical-align: top; }
@@ -31,11 +36,20 @@ def _status(status: str) -> str:
     return f'<span class="status {escape(status)}">{escape(status.replace("_", " "))}</span>'
 
 
+def _band(score: float) -> str:
+    """The colour of a score's badge: full marks green, half or more amber, less red."""
+    return "full" if score >= 0.999 else "partial" if score >= 0.5 else "low"
+
+
+def _badge(case: dict) -> str:
+    return f'<span class="badge {_band(case["score"])}">{100 * case["score"]:.0f}%</span>'
+
+
 def _case_cell(case: dict | None) -> str:
     if case is None:
         return "<td>not graded</td>"
     extra = "" if case["status"] == "ok" else " " + _status(case["status"])
-    return f'<td class="score">{100 * case["score"]:.0f}%{extra}</td>'
+    return f'<td class="score">{_badge(case)}{extra}</td>'
 
 
 def write_html(summary: dict, path: Path) -> None:
@@ -65,8 +79,15 @@ def _student_section(student: dict) -> str:
     name = escape(student["name"])
     parts = [f"<section class='student' id='student-{name}'><h2>{name}: {student['score']:.1f} / 100</h2>"]
     for case in student["cases"]:
-        parts.append(f"<div class='case'><h3>{escape(case['case'])}: {100 * case['score']:.0f}% "
-                     f"{_status(case['status'])}</h3>")
+        status = "" if case["status"] == "ok" else " " + _status(case["status"])
+        parts.append(f"<div class='case' data-case='{escape(case['case'])}'><h3>{escape(case['case'])}: "
+                     f"{_badge(case)}{status}</h3>")
+        recording = case.get("files", {}).get(RECORDING)
+        if recording:
+            parts.append(f"<p class='replay'><a class='replay-link' href='/replay-case?file={escape(recording)}'>"
+                         f"Watch the run</a> (when the report is served by <code>eyesim replay REPORT_FOLDER</code> "
+                         f"or <code>eyesim grade --serve</code>), or run <code>eyesim replay {escape(recording)}</code> "
+                         f"in the report's folder.</p>")
         end = case.get("end")
         if end:
             parts.append(f"<p>Ran until {end['time']:.2f} s of simulation time ({escape(end['reason'])}).</p>")

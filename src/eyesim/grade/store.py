@@ -3,7 +3,7 @@ run loses nothing it finished, and the next run with the same spec and submissio
 where it stopped.
 
     OUT/cases/<student>/<case>.json      the result (evidence, checks, score)
-    OUT/cases/<student>/<case>/...       its files: final LCD images
+    OUT/cases/<student>/<case>/...       its files: final LCD images, its recording (case.mcap)
 """
 
 from __future__ import annotations
@@ -11,6 +11,9 @@ from __future__ import annotations
 import json
 import os
 from pathlib import Path
+
+
+RECORDING = "case.mcap"  # a case's MCAP recording among its files (eyesim grade --keep-recordings)
 
 
 def _write_atomically(path: Path, data: bytes) -> None:

@@ -4,7 +4,11 @@ The browser gets the recorded `scene`, a `timeline` message saying this is a rep
 `frame` for every time it asks for (`seek`); plots ask for `signals` and `series`, the paths for
 `paths` (docs/viewer-channel.md). The floor texture and .obj models come from the recording's
 attachments. Commands that would change a live run get an error. The page may send another
-recording (`POST /recording`): every open page then shows that one."""
+recording (`POST /recording`): every open page then shows that one.
+
+Over a grading report (`eyesim replay REPORT_FOLDER`, `eyesim grade --serve`) it also serves the
+report at /report/, whose "Watch the run" links (`/replay-case?file=cases/...`) show that case's
+recording and open the viewer on it."""
 
 from __future__ import annotations
 
@@ -12,6 +16,7 @@ import asyncio
 import json
 import logging
 import reprlib
+import shutil
 import tempfile
 from pathlib import Path
 
@@ -29,8 +34,10 @@ MAX_UPLOAD_BYTES = 4 * 1024**3  # a recording sent from the page (hours of camer
 
 
 class ReplayServer:
-    def __init__(self, recording, host: str = "127.0.0.1", port: int = 8080, token: str | None = None):
+    def __init__(self, recording, host: str = "127.0.0.1", port: int = 8080, token: str | None = None,
+                 report_dir: Path | None = None):
         self.recording = recording
+        self.report_dir = None if report_dir is None else Path(report_dir).resolve()
         self.source = timeline.RecordingTimeline(recording)
         self.host = host
         self.port = port
@@ -39,6 +46,7 @@ class ReplayServer:
         self._pages: dict[web.WebSocketResponse, timeline.FrameCursor] = {}
         self._uploads = tempfile.TemporaryDirectory(prefix="eyesim-replay-")
         self._uploaded = 0
+        self._owned = False  # the recording shown was opened here (an upload or a report's case), not given
 
     @property
     def url(self) -> str:
@@ -50,18 +58,26 @@ class ReplayServer:
         app.router.add_post("/recording", self._open)
         app.router.add_get("/scene/floor-texture", self._floor_texture)
         app.router.add_get("/scene/mesh/{kind}/{id}", self._mesh)
+        if self.report_dir is not None:
+            app.router.add_get("/report/{path:.*}", self._report_file)
+            app.router.add_get("/replay-case", self._replay_case)
         app.router.add_get("/{path:.*}", static_file)
         self._runner, self.port = await serve_app(app, self.host, self.port)
 
     async def stop(self) -> None:
         if self._runner is not None:
             await self._runner.cleanup()
-        if self.recording.path.parent.parent == Path(self._uploads.name):
+        if self._owned:
             self.recording.close()
         self._uploads.cleanup()
 
+    @property
+    def report_url(self) -> str:
+        return self.url.replace("/?", "/report/?") if "?" in self.url else self.url + "report/"
+
     async def _open(self, request: web.Request) -> web.Response:
-        """Another recording, sent by the page: checked, then shown on every open page."""
+        """Another recording, sent by the page: checked, then shown on every open page. Only the one
+        shown is kept: a rejected upload, and the one it replaces, are deleted at once."""
         name = Path(request.query.get("name", "recording.mcap")).name or "recording.mcap"
         self._uploaded += 1
         folder = Path(self._uploads.name) / str(self._uploaded)
@@ -73,15 +89,47 @@ class ReplayServer:
         try:
             recording = await asyncio.get_running_loop().run_in_executor(None, Recording, path)
         except RecordingError as error:
+            shutil.rmtree(folder, ignore_errors=True)
             return web.Response(status=400, text=str(error).replace(str(path), name))
+        await self._show(recording, owned=True)
+        return web.Response(text=f"showing {name}")
+
+    async def _show(self, recording, owned: bool) -> None:
+        """Every open page shows `recording` from now on; one opened here that it replaces is closed
+        (and deleted, when it was uploaded)."""
         previous, self.recording = self.recording, recording
+        previous_owned, self._owned = self._owned, owned
         self.source = timeline.RecordingTimeline(recording)
-        if previous.path.parent.parent == Path(self._uploads.name):
+        if previous_owned:
             previous.close()
+            if previous.path.parent.parent == Path(self._uploads.name):
+                shutil.rmtree(previous.path.parent, ignore_errors=True)
         for ws in list(self._pages):
             self._pages[ws] = timeline.FrameCursor()
             await self._introduce(ws, self._pages[ws])
-        return web.Response(text=f"showing {name}")
+
+    def _in_report(self, relative: str) -> Path:
+        """A file of the report folder (404 for anything outside it or missing)."""
+        path = (self.report_dir / (relative or "index.html")).resolve()
+        if not path.is_relative_to(self.report_dir) or not path.is_file():
+            raise web.HTTPNotFound()
+        return path
+
+    async def _report_file(self, request: web.Request) -> web.StreamResponse:
+        return web.FileResponse(self._in_report(request.match_info["path"]), headers={"Cache-Control": "no-cache"})
+
+    async def _replay_case(self, request: web.Request) -> web.Response:
+        """A case's recording from the report: shown on every page, then the viewer opens on it."""
+        relative = request.query.get("file", "")
+        path = self._in_report(relative)
+        if path.suffix != ".mcap":
+            raise web.HTTPNotFound()
+        try:
+            recording = await asyncio.get_running_loop().run_in_executor(None, Recording, path)
+        except RecordingError as error:
+            return web.Response(status=400, text=str(error).replace(str(path), relative))
+        await self._show(recording, owned=True)
+        raise web.HTTPFound("/")
 
     async def _introduce(self, ws: web.WebSocketResponse, cursor: timeline.FrameCursor) -> None:
         """The scene, the timeline and the first frame of the recording shown now."""
@@ -155,9 +203,10 @@ def _image_kind(data: bytes) -> str | None:
     return None
 
 
-async def serve(recording, host: str, port: int, on_ready) -> None:
-    """Serves the replay until cancelled; `on_ready(server)` once it listens."""
-    server = ReplayServer(recording, host, port)
+async def serve(recording, host: str, port: int, on_ready, report_dir: Path | None = None) -> None:
+    """Serves the replay (and the grading report in `report_dir`) until cancelled; `on_ready(server)`
+    once it listens."""
+    server = ReplayServer(recording, host, port, report_dir=report_dir)
     await server.start()
     on_ready(server)
     try:
