@@ -1,0 +1,40 @@
+"""`eyesim replay` keeps only the recording it shows: a rejected upload, and one replaced by the
+next, are deleted at once (they used to stay until the server exited)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import aiohttp
+from support.recordings import record_tour
+from support.viewer import run_async
+
+from eyesim.record import Recording
+from eyesim.web.replay_server import ReplayServer
+
+
+def kept_uploads(server: ReplayServer) -> list[Path]:
+    return sorted(p for p in Path(server._uploads.name).rglob("*") if p.is_file())
+
+
+def test_only_the_shown_upload_is_kept(tmp_path):
+    tour = record_tour(tmp_path)
+
+    async def scenario():
+        with Recording(tour) as recording:
+            server = ReplayServer(recording, port=0)
+            await server.start()
+            base = f"http://127.0.0.1:{server.port}"
+            try:
+                async with aiohttp.ClientSession() as client:
+                    async with client.post(f"{base}/recording?name=bad.mcap", data=b"not a recording") as response:
+                        assert response.status == 400
+                    assert kept_uploads(server) == []
+                    for name in ("first.mcap", "second.mcap"):
+                        async with client.post(f"{base}/recording?name={name}", data=tour.read_bytes()) as response:
+                            assert response.status == 200, await response.text()
+                    assert [p.name for p in kept_uploads(server)] == ["second.mcap"]
+            finally:
+                await server.stop()
+
+    run_async(scenario())
