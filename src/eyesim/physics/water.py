@@ -35,16 +35,21 @@ def water_of(scene: Scene) -> Water | None:
 
 class WaterForces:
     """Buoyancy and linear drag on one free body, through `data.xfrc_applied` (world frame, at the
-    body's centre of mass).
+    body's centre of mass, with the torques of forces that act elsewhere).
 
     The body is taken as upright for how much of it is under water: its hull spans `height` metres
     around `hull_centre` (body frame); buoyancy scales with the submerged part of that span and acts
     at `buoyancy_centre`, so a centre of buoyancy above the centre of mass rights the body. Drag
     opposes the velocity along the body's own axes (`drag`, N per m/s) and its rotation
-    (`rotational_drag`, N*m per rad/s), scaled the same way."""
+    (`rotational_drag`, N*m per rad/s), scaled the same way. It acts where the water presses on
+    the hull: the centre of its submerged part (`pressure_centre` across, the middle of the
+    submerged span up and down), not at the centre of mass. Thrusters level with the hull's middle
+    then push a submarine straight, however low its centre of mass sits; drag at the centre of
+    mass would leave their thrust a lever that pitches it nose down (13 degrees for a Mako-like
+    hull) and drives it into the pool floor."""
 
     def __init__(self, body: int, volume: float, buoyancy_centre, hull_centre, height: float,
-                 drag=(0.0, 0.0, 0.0), rotational_drag: float = 0.0):
+                 drag=(0.0, 0.0, 0.0), rotational_drag: float = 0.0, pressure_centre=None):
         self.body = body
         self.volume = volume  # m^3
         self.buoyancy_centre = buoyancy_centre
@@ -52,6 +57,9 @@ class WaterForces:
         self.height = height
         self.drag = drag
         self.rotational_drag = rotational_drag
+        across = pressure_centre if pressure_centre is not None else hull_centre
+        self.pressure_x, self.pressure_y = across[0], across[1]
+        self.bottom = hull_centre[2] - height / 2  # of the hull, body frame
 
     def bind(self, world) -> None:
         self.water = world.water
@@ -94,13 +102,19 @@ class WaterForces:
                 for i in range(3)]
         spin = [qvel[self.dof + 3 + i] for i in range(3)]
         spin_world = [rot[3 * i] * spin[0] + rot[3 * i + 1] * spin[1] + rot[3 * i + 2] * spin[2] for i in range(3)]
+        # where the drag acts: the middle of the submerged part of the hull
+        px, py, pz = self._world_point((self.pressure_x, self.pressure_y, self.bottom + fraction * self.height / 2))
+        lever = (px - com[0], py - com[1], pz - com[2])
         forces[0] = drag[0]
         forces[1] = drag[1]
         forces[2] = drag[2] + lift
-        # torque of the lift at the centre of buoyancy (arm x (0, 0, lift)), plus rotational drag
-        forces[3] = arm[1] * lift - fraction * self.rotational_drag * spin_world[0]
-        forces[4] = -arm[0] * lift - fraction * self.rotational_drag * spin_world[1]
-        forces[5] = -fraction * self.rotational_drag * spin_world[2]
+        # torques of the lift at the centre of buoyancy (arm x (0, 0, lift)) and of the drag at the
+        # centre of pressure (lever x drag), plus rotational drag
+        forces[3] = arm[1] * lift + lever[1] * drag[2] - lever[2] * drag[1] \
+            - fraction * self.rotational_drag * spin_world[0]
+        forces[4] = -arm[0] * lift + lever[2] * drag[0] - lever[0] * drag[2] \
+            - fraction * self.rotational_drag * spin_world[1]
+        forces[5] = lever[0] * drag[1] - lever[1] * drag[0] - fraction * self.rotational_drag * spin_world[2]
 
 
 def object_water_forces(body: int, volume_litres: float, height: float, centre) -> WaterForces:

@@ -1,5 +1,5 @@
-/* Mako: a timed thrust script. LEFT (1) and RIGHT (3) push ahead together for 5 s, then it
- * coasts; then LEFT alone for 5 s turns it. */
+/* Mako: a timed thrust script at the surface. LEFT (1) and RIGHT (3) push ahead together for 5 s,
+ * then it coasts; then LEFT alone for 5 s turns it. */
 #include <stdio.h>
 #include "eyebot.h"
 
@@ -15,6 +15,8 @@ static void report(const char *tag)
 
 int main(void)
 {
+    SIMSetRobot(0, 2000, 3000, 1565, 0); /* afloat at the surface: its 2 kg of lift held by the air */
+    OSWait(500);
     report("start");
     MOTORDrive(LEFT, 50);
     MOTORDrive(RIGHT, 50);

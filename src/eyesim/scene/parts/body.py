@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -167,6 +168,26 @@ def _dimensions(collected: dict) -> tuple[float, float, float]:
 def collider_bottom(collider: Collider) -> float:
     """mm the collider's lowest point lies above the robot's origin (its floor)."""
     return collider.center[2] - _half_extent(collider)[2]
+
+
+def collider_volume(collider: Collider) -> float:
+    """mm^3 of a collider (a capsule's height includes its caps)."""
+    r = collider.size[0]
+    if collider.kind == "box":
+        return collider.size[0] * collider.size[1] * collider.size[2]
+    if collider.kind == "sphere":
+        return 4 / 3 * math.pi * r ** 3
+    if collider.kind == "capsule":
+        return math.pi * r * r * max(collider.size[1] - 2 * r, 0.0) + 4 / 3 * math.pi * r ** 3
+    return math.pi * r * r * collider.size[1]
+
+
+def hull_centroid(robot_type: RobotType) -> tuple[float, float, float]:
+    """mm: the centre of the hull's volume (its colliders' centroid by volume), robot frame."""
+    colliders = hull_colliders(robot_type)
+    volumes = [collider_volume(c) for c in colliders]
+    total = sum(volumes) or 1.0
+    return tuple(sum(v * c.center[i] for v, c in zip(volumes, colliders)) / total for i in range(3))
 
 
 def _half_extent(collider: Collider) -> tuple[float, float, float]:

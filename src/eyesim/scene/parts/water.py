@@ -1,5 +1,5 @@
-"""How the robot floats and moves through water (`buoyancy`, `drag`); the forces:
-robot/components/buoyancy.py and physics/water.py."""
+"""How the robot floats and moves through water (`buoyancy`, `drag`) and where it starts in it
+(`depth`); the forces: robot/components/buoyancy.py and physics/water.py."""
 
 from __future__ import annotations
 
@@ -56,9 +56,23 @@ def read_drag(reader: PartReader, line: Line) -> None:
         reader.fields["drag"] = DragSpec(*(v + 0.0 for v in values))
 
 
+def read_depth(reader: PartReader, line: Line) -> None:
+    if not reader.arity(line, (1,), "<mm>"):
+        return
+    values = reader.numbers(line, 1, ("depth in mm",))
+    if values:
+        if values[0] < 0:
+            reader.error(line, f"depth: expected mm >= 0 below the surface, found {quoted(line.tokens[1].text)}",
+                         1, "bad-value")
+            return
+        reader.fields["start_depth"] = values[0] + 0.0
+
+
 def write(robot) -> list[str]:
     f = format_number
     out = []
+    if robot.start_depth is not None:
+        out.append(f"depth {f(robot.start_depth)}")
     if robot.buoyancy is not None:
         b = robot.buoyancy
         out.append(f"buoyancy {f(b.volume)} {f(b.x)} {f(b.y)} {f(b.z)}")
@@ -71,10 +85,14 @@ def write(robot) -> list[str]:
 PART = Part(
     "water",
     components=("eyesim.robot.components.buoyancy:create",),
-    fields=(("buoyancy", BuoyancySpec | None, None), ("drag", DragSpec | None, None)),
-    keywords={"buoyancy": read_buoyancy, "drag": read_drag},
+    fields=(("buoyancy", BuoyancySpec | None, None), ("drag", DragSpec | None, None),
+            ("start_depth", float | None, None)),  # mm the hull's top starts below the surface
+    keywords={"buoyancy": read_buoyancy, "drag": read_drag, "depth": read_depth},
     write=write,
-    properties={"buoyancy": ref("buoyancy"), "drag": ref("drag")},
+    properties={"buoyancy": ref("buoyancy"), "drag": ref("drag"),
+                "start_depth": at_least(0, "Start depth", "mm the hull's top starts below the water's surface "
+                                        "(a robot placed in a scene under water; else it starts afloat if it "
+                                        "floats, on the pool floor if not)")},
     defs={
         "buoyancy": record("Buoyancy", "buoyancy and its centre (mm)", {
             "volume": at_least(0, "Volume", "displaced litres"),
