@@ -15,6 +15,7 @@ import shutil
 import struct
 import subprocess
 import sys
+import threading
 from pathlib import Path
 from typing import NamedTuple
 
@@ -481,8 +482,7 @@ int main(int argc, char **argv)
 {
     atexit(goodbye);
     VWSetSpeed(100, 0);
-    printf("connected\n");
-    fflush(stdout);
+    printf("connected\n"); /* no fflush: piped stdout is unbuffered on Windows (console.c) */
     if (argc > 1 && strcmp(argv[1], "compute") == 0) {
         volatile unsigned long n = 0;
         for (;;) /* no calls: only the library's watcher can see the simulator go */
@@ -539,13 +539,17 @@ def test_windows_program_ends_when_the_simulator_goes_while_it_computes(tmp_path
     env = wine_env(EYESIM_HOST="127.0.0.1", EYESIM_PORT=str(fake_sim.port))
     process = subprocess.Popen([wine_command(), str(exe), "compute"], env=env, stdout=subprocess.PIPE,
                                stderr=subprocess.PIPE, text=True)
+    stopper = threading.Timer(120, process.kill)  # were "connected" held in a buffer, readline would wait
+    stopper.start()
     try:
         # Printed once its call has returned: the program computes from then on.
         connected = process.stdout.readline()
+        assert connected == "connected\n", "the program's piped output did not appear as it was printed"
         fake_sim.close_clients()
         stdout, stderr = process.communicate(timeout=60)
         stdout = connected + stdout
     finally:
+        stopper.cancel()
         if process.poll() is None:
             process.kill()
             process.communicate()
