@@ -12,7 +12,7 @@ import pytest
 from browser import open_viewer
 
 from eyesim.physics.meshes import read_obj
-from eyesim.protocol.channel_schema import MESH_BODY
+from eyesim.protocol.channel_schema import mesh_body_validator
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.corpus import CORPUS  # noqa: E402
@@ -56,7 +56,7 @@ def test_the_viewer_draws_the_models_where_the_bodies_are(browser_context, tmp_p
         in_file = sum(len(p.triangles) for p in read_obj(S4BLUE.with_suffix(".obj")).parts)
         assert sum(len(p["triangles"]) for p in robot["parts"]) == 3 * in_file  # every triangle
         for body in (sign, robot):  # as protocol/viewer.schema.json describes the route
-            assert [error.message for error in MESH_BODY.iter_errors(body)] == []
+            assert [error.message for error in mesh_body_validator().iter_errors(body)] == []
         for missing in ("object/2", "robot/0", "robot/x", "wall/1"):
             with pytest.raises(urllib.error.HTTPError) as error:
                 urllib.request.urlopen(f"{base}/scene/mesh/{missing}", timeout=30)

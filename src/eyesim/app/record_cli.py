@@ -6,7 +6,6 @@ import sys
 from pathlib import Path
 
 from eyesim.grade.store import RECORDING
-from eyesim.record.recording import Recording, RecordingError
 
 
 def register(subparsers) -> None:
@@ -45,8 +44,10 @@ def register(subparsers) -> None:
     plot.set_defaults(func=plot_main)
 
 
-def open_recording(path: str, command: str) -> Recording | None:
-    """The recording, or None after printing why it cannot be read."""
+def open_recording(path: str, command: str):
+    """The recording (record.Recording), or None after printing why it cannot be read."""
+    from eyesim.record.recording import Recording, RecordingError  # on use: not every command reads one
+
     try:
         return Recording(path)
     except RecordingError as error:

@@ -14,7 +14,6 @@ from eyesim.app.robot_log import RobotLog
 from eyesim.core.clock import DETERMINISTIC, MAX_SPEED, REALTIME, Clock
 from eyesim.core.engine import DEFAULT_CALL_TIME_US, Simulation
 from eyesim.core.stalls import StallWatch
-from eyesim.net.io_thread import IoThread
 from eyesim.net.program_server import ProgramServer
 from eyesim.programs.launcher import Launcher
 from eyesim.protocol import generated as g
@@ -189,6 +188,8 @@ def simulate(args) -> int:
     if not args.headless:
         from eyesim.web.server import ViewerServer
 
+        from eyesim.net.io_thread import IoThread  # the viewer's asyncio: not imported by headless runs
+
         io = IoThread()
         io.start()
         viewer = ViewerServer(sim, io, args.host, args.viewer_port, launcher=launcher)
@@ -308,6 +309,8 @@ def scene_workspace(sim, launcher, args):
 
 def start_recorders(sim, args) -> list:
     """One recorder per --record file: MCAP for .mcap, the trajectory CSV for anything else."""
+    if not args.record and args.record_rate is None:
+        return []  # and MCAP is not even imported (start-up time)
     from eyesim.record import Recorder, TrajectoryRecorder
     from eyesim.record.mcap_recorder import DEFAULT_POSE_RATE
 

@@ -10,10 +10,12 @@ from __future__ import annotations
 
 import functools
 import reprlib
-
-from jsonschema import Draft202012Validator
+from typing import TYPE_CHECKING
 
 from eyesim.protocol.viewer_schema import SCHEMA
+
+if TYPE_CHECKING:
+    from jsonschema import Draft202012Validator
 
 _short = reprlib.Repr()
 _short.maxstring = _short.maxother = 40
@@ -24,11 +26,14 @@ ROUTES = SCHEMA["routes"]  # "METHOD /path" -> {"request": {"$ref"}, "response":
 
 
 @functools.cache
-def _validator(name: str) -> Draft202012Validator:
+def _validator(name: str) -> "Draft202012Validator":
+    from jsonschema import Draft202012Validator  # on first use: a headless run never needs it (start-up time)
+
     return Draft202012Validator({**SCHEMA, "$ref": f"#/$defs/{name}"})
 
 
-def _by_tag(union: str) -> dict[str | None, Draft202012Validator]:
+@functools.cache
+def _by_tag(union: str) -> dict[str | None, "Draft202012Validator"]:
     """The union's members by the constant of its `x-discriminator` property (None: the member
     taken when the property is absent)."""
     key = SCHEMA["$defs"][union]["x-discriminator"]
@@ -36,9 +41,14 @@ def _by_tag(union: str) -> dict[str | None, Draft202012Validator]:
     return {SCHEMA["$defs"][name]["properties"].get(key, {}).get("const"): _validator(name) for name in names}
 
 
-COMMANDS = _by_tag("BrowserCommand")
-SERVER_MESSAGES = _by_tag("ServerMessage")
-MESH_BODY = _validator("MeshBody")
+def command_validators() -> dict[str | None, "Draft202012Validator"]:
+    """The browser commands' validators by their `type`."""
+    return _by_tag("BrowserCommand")
+
+
+def mesh_body_validator() -> "Draft202012Validator":
+    """The schema of a mesh route's body (made on first use, as every validator here)."""
+    return _validator("MeshBody")
 
 
 def command_problem(data) -> str | None:
@@ -46,7 +56,7 @@ def command_problem(data) -> str | None:
     if not isinstance(data, dict):
         return "expected a JSON object with a 'type'"
     kind = data.get("type")
-    validator = COMMANDS.get(kind) if isinstance(kind, str) else None
+    validator = command_validators().get(kind) if isinstance(kind, str) else None
     if validator is None:
         return f"unknown message type {_short.repr(kind)}"
     return _problem(validator, data, kind)
@@ -54,7 +64,7 @@ def command_problem(data) -> str | None:
 
 def server_message_problems(message: dict) -> list[str]:
     """Everything wrong with a message the server sends (for tests), [] when it follows the schema."""
-    validator = SERVER_MESSAGES.get(message.get("type"))
+    validator = _by_tag("ServerMessage").get(message.get("type"))
     if validator is None:
         return [f"unknown message type {_short.repr(message.get('type'))}"]
     problems = [_describe(error, message["type"]) for error in validator.iter_errors(message)]
@@ -92,7 +102,7 @@ def _definition(reference: dict) -> str:
     return reference["$ref"].removeprefix("#/$defs/")
 
 
-def _problem(validator: Draft202012Validator, data: dict, kind: str | None) -> str | None:
+def _problem(validator: "Draft202012Validator", data: dict, kind: str | None) -> str | None:
     # The shallowest error says most: a missing field before what is wrong inside another.
     error = min(validator.iter_errors(data), key=lambda e: len(e.absolute_path), default=None)
     return None if error is None else _describe(error, kind)

@@ -14,8 +14,7 @@ import types
 import typing
 from functools import lru_cache
 from pathlib import Path
-
-import jsonschema
+from typing import TYPE_CHECKING
 
 from eyesim.scene import limits
 from eyesim.scene.description import Location, Marker, ObjectPlacement, ObjectType, Pose, RobotType, Settings, World
@@ -26,6 +25,9 @@ from eyesim.scene.parts import PARTS, robot_schema
 from eyesim.scene.robot_type import finish_robot_type
 from eyesim.scene.sim import Placement, Reference, SimDocument
 from eyesim.scene.wld import BALL_TYPE
+
+if TYPE_CHECKING:
+    import jsonschema
 
 SCHEMA_DIR = Path(__file__).resolve().parent / "schemas"
 KINDS = ("scene", "world", "maze", "robot", "object")
@@ -166,6 +168,8 @@ def parse_json(text: str, source: str, diagnostics: Diagnostics, expected: tuple
     if _too_many(data, source, diagnostics):
         return kind, None
     positions = _Positions(text, source)
+    import jsonschema  # here, not at the top: a run of a .sim scene does not need it (start-up time)
+
     validator = jsonschema.Draft202012Validator(schema(kind))
     errors = sorted(validator.iter_errors(data), key=lambda e: list(e.absolute_path))
     for error in errors:
@@ -240,7 +244,7 @@ def _describe(value) -> str:
     return text if len(text) <= 60 else text[:57] + "..."
 
 
-def _report(error: jsonschema.ValidationError, positions: _Positions, diagnostics: Diagnostics) -> None:
+def _report(error: "jsonschema.ValidationError", positions: _Positions, diagnostics: Diagnostics) -> None:
     path = list(error.absolute_path)
     if error.validator == "additionalProperties":
         allowed = sorted(error.schema.get("properties", {}))
@@ -257,7 +261,7 @@ def _add(diagnostics: Diagnostics, location: Location, message: str) -> None:
         diagnostics.error(location, message, "json-schema")
 
 
-def _message(error: jsonschema.ValidationError) -> str:
+def _message(error: "jsonschema.ValidationError") -> str:
     v, value, instance = error.validator, error.validator_value, error.instance
     if v == "required":
         missing = [k for k in value if k not in instance]
