@@ -88,6 +88,7 @@ bench: $(INSTALLED)
 	$(BIN)/python bench/bench_realtime_factor.py
 	$(BIN)/python bench/bench_recording.py
 	$(BIN)/python bench/bench_grading.py
+	$(BIN)/python bench/bench_startup.py
 
 clean:
 	rm -rf $(VENV) build dist
