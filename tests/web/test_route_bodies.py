@@ -196,3 +196,14 @@ def test_every_json_route_the_server_serves_is_in_the_schema(tmp_path):
             viewer.stop()
             io.stop()
     assert served - NOT_JSON_ROUTES == set(ROUTES)
+
+
+def test_a_file_name_too_long_for_the_file_system_is_refused_with_a_reason(simulator):
+    """It used to answer 500 with a traceback: a name longer than the file system's 255 bytes."""
+    url, folder = simulator
+    call = Checked(url)
+    refused = call("POST /scenes/save", {"root": 0, "path": "x" * 300, "format": "sim"}, status=403)
+    assert "a folder or file name of 300 bytes, more than 250" in refused["error"]
+    refused = call("POST /scenes/save", {"root": 0, "path": "deep/" + "y" * 254, "format": "json"}, status=403)
+    assert "more than 250" in refused["error"]
+    assert call("POST /scenes/save", {"root": 0, "path": "z" * 250, "format": "sim"})["saved"]

@@ -19,6 +19,7 @@ MAX_DEPTH = 6  # folders below a root the browser looks into
 MAX_ENTRIES = 20_000  # directory entries looked at per listing: a root may be a home folder
 MAX_LISTED = 500  # files returned per listing
 MAX_PATH = 1000
+MAX_NAME = 255  # bytes in one folder or file name, on the usual file systems
 SKIPPED_DIRS = {"node_modules", "__pycache__", ".venv", "venv", ".git"}
 # A JSON file is a scene file when it says so near its start (json_format: "format": "eyesim.scene").
 JSON_SCENE = re.compile(rb'"format"\s*:\s*"eyesim\.(scene|world|maze)"')
@@ -49,6 +50,10 @@ def confined(base: Path, relative: object, where: str = "the scene root") -> Pat
         raise FileAccessError(f"{relative!r}: absolute paths are not allowed, only paths under {where}")
     if ".." in parts:
         raise FileAccessError(f"{relative!r}: '..' is not allowed, only paths under {where}")
+    longest = max(parts, key=lambda part: len(part.encode()), default="")
+    if len(longest.encode()) > MAX_NAME - 5:  # room for the .sim/.json a save may add
+        raise FileAccessError(f"{longest[:40]!r}...: a folder or file name of {len(longest.encode())} bytes, "
+                              f"more than {MAX_NAME - 5} (file systems take {MAX_NAME})")
     base = base.resolve()
     try:
         resolved = base.joinpath(*parts).resolve()

@@ -173,7 +173,10 @@ class SceneWorkspace:
             outside = [p for p in files if not self.roots.writable(p)]
             if outside:
                 return _refused(f"{outside[0]} is not in a scene root that can be written to")
-            existing = [p for p in files if p.exists()]
+            try:
+                existing = [p for p in files if p.exists()]
+            except OSError as error:  # a name the file system refuses
+                return _refused(f"cannot save there: {error.strerror}")
             if existing and body.get("overwrite") is not True:
                 return web.json_response({"error": f"{', '.join(p.name for p in existing)} already exist(s)",
                                           "exists": [self._shown(p) for p in existing]}, status=409)
