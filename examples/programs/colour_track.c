@@ -1,7 +1,9 @@
 /* Colour tracking with the camera: S4 turns until it sees something red, steers to keep it in the
  * middle of the image, drives up to it and stops once it fills a quarter of the picture. The LCD
  * shows the camera image with the red pixels' centre marked.
- * eyesim cc colour_track.c -o colour_track && eyesim run ../scenes/colour_track.sim --program 1=./colour_track */
+ * From the examples folder (eyesim compiles it):
+ *   eyesim run scenes/colour_track.sim --program 1=programs/colour_track.c
+ */
 #include <stdio.h>
 #include "eyebot.h"
 

@@ -1,5 +1,8 @@
 /* The `make demo` program: S4 explores its arena, avoiding walls with its PSDs, and shows what it
- * senses on the LCD. Soft keys: KEY1 pause/continue, KEY2 drive a 400 mm square, KEY4 end. */
+ * senses on the LCD. Soft keys: KEY1 pause/continue, KEY2 drive a 400 mm square, KEY4 end.
+ * From the examples folder (the default arena; eyesim compiles it; open the printed viewer address):
+ *   eyesim run --program 1=programs/demo.c
+ */
 #include <stdio.h>
 #include "eyebot.h"
 

@@ -1,8 +1,10 @@
 /* Lidar mapping: the robot wanders, turning away from what its lidar sees ahead, and enters every
  * scan into an occupancy grid around its start (poses from odometry). The map grows on the LCD;
  * at the end it is saved as map.pgm (black = seen as occupied, 1 pixel = CELL mm, start at the
- * centre, x to the right, y up). KEY4 ends it early.
- * eyesim cc lidar_map.c -o lidar_map && eyesim run ../scenes/lidar_map.sim --program 1=./lidar_map */
+ * centre, x to the right, y up), beside this program. KEY4 ends it early.
+ * From the examples folder (eyesim compiles it):
+ *   eyesim run scenes/lidar_map.sim --program 1=programs/lidar_map.c
+ */
 #include <math.h>
 #include <stdio.h>
 #include "eyebot.h"

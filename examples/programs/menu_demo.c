@@ -1,7 +1,7 @@
 /* menu_demo.c: a menu-driven robot program as students write them: the soft keys choose what the
  * robot does, and the LCD shows a title, the sensors, a small drawing and a log of what happened.
- *
- *   eyesim cc menu_demo.c -o menu_demo && eyesim run --program 1=./menu_demo --open
+ * From the examples folder (the default arena; eyesim compiles it; open the printed viewer address):
+ *   eyesim run --program 1=programs/menu_demo.c
  */
 #include <stdio.h>
 #include "eyebot.h"

@@ -1,6 +1,9 @@
 /* Pick and place: the Reacher arm (the built-in Reacher, eyesim/data/robots/Reacher.robi) takes the can 300 mm to its left
  * and puts it down about 300 mm ahead of it (and 80 mm to the right). Servos: 1 lift (0..250 mm), 2 shoulder, 3 elbow (each
- * -150..150 deg over 0..255), 4 gripper (0 closed, 255 open). */
+ * -150..150 deg over 0..255), 4 gripper (0 closed, 255 open).
+ * From the examples folder (eyesim compiles it):
+ *   eyesim run scenes/workshop.sim --program 1=programs/pick_and_place.c
+ */
 #include <stdio.h>
 #include "eyebot.h"
 

@@ -1,5 +1,8 @@
 /* Push a crate: the Trolley (the built-in Trolley, eyesim/data/robots/Trolley.robi) drives up to the crate ahead and
- * pushes it 600 mm further, then backs off. */
+ * pushes it 600 mm further, then backs off.
+ * It is robot 3 of the drive-types scene, which names this program; from the examples folder:
+ *   eyesim run scenes/drive_types.sim --program 3=programs/push_crate.c
+ */
 #include <stdio.h>
 #include "eyebot.h"
 

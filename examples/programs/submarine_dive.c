@@ -1,6 +1,9 @@
 /* Submarine dive: Minnow (the built-in Minnow, eyesim/data/robots/Minnow.robi) dives to 500 mm under the surface of its
  * pool, holding that depth with its vertical thrusters (3 front, 4 back) while it cruises and
- * turns on its horizontal ones (1 left, 2 right), then surfaces. Depth comes from SIMGetRobot. */
+ * turns on its horizontal ones (1 left, 2 right), then surfaces. Depth comes from SIMGetRobot.
+ * From the examples folder (eyesim compiles it):
+ *   eyesim run scenes/pool.sim --program 1=programs/submarine_dive.c
+ */
 #include <stdio.h>
 #include "eyebot.h"
 

@@ -1,6 +1,8 @@
 /* Wall following with PSDs: S4 keeps the wall on its left at DISTANCE mm and turns right where a
  * wall blocks the way. Runs for RUN_SECONDS (or until KEY4) and shows the readings on the LCD.
- * eyesim cc wall_follow.c -o wall_follow && eyesim run ../scenes/wall_follow.sim --program 1=./wall_follow */
+ * From the examples folder (eyesim compiles it):
+ *   eyesim run scenes/wall_follow.sim --program 1=programs/wall_follow.c
+ */
 #include <stdio.h>
 #include "eyebot.h"
 
