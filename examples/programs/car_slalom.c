@@ -1,7 +1,8 @@
 /* Car slalom: the Ackermann car (the built-in Car, eyesim/data/robots/Car.robi) drives ahead, steering left and right
  * in turn. Motor 1 drives the rear axle; servo 1 steers: 0 = 45 deg left, 127 = ahead, 255 = right.
- * The car is robot 1 of the drive-types scene, which names this program; from the examples folder:
- *   eyesim run scenes/drive_types.sim --program 1=programs/car_slalom.c
+ * The car is robot 1 of the drive-types scene (which names the three C programs); from the
+ * examples folder:
+ *   eyesim run scenes/drive_types.sim --program 1=programs/car_slalom.c --program 2=programs/omni_square.c --program 3=programs/push_crate.c
  */
 #include <stdio.h>
 #include "eyebot.h"

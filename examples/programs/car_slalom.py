@@ -1,7 +1,8 @@
 # Car slalom (the Python version of car_slalom.c): the Ackermann car (the built-in Car) drives ahead,
 # steering left and right in turn. Motor 1 drives the rear axle; servo 1 steers: 0 = 45 deg left,
-# 127 = ahead, 255 = right. The car is robot 1 of the drive-types scene; from the examples folder:
-#   eyesim run scenes/drive_types.sim --program 1=programs/car_slalom.py
+# 127 = ahead, 255 = right. The car is robot 1 of the drive-types scene; from the examples folder,
+# with the other two:
+#   eyesim run scenes/drive_types.sim --program 1=programs/car_slalom.py --program 2=programs/omni_square.py --program 3=programs/push_crate.py
 from eye import *
 
 LCDPrintf("Car slalom\n")

@@ -1,8 +1,9 @@
 /* Omni square: the mecanum robot (the built-in Mecanum, eyesim/data/robots/Mecanum.robi) drives a 600 mm square facing the
  * same way all along: back, right, ahead, left. Motors 1..4 = front left, front right, back left,
  * back right; each leg is measured with the encoders.
- * It is robot 2 of the drive-types scene, which names this program; from the examples folder:
- *   eyesim run scenes/drive_types.sim --program 2=programs/omni_square.c
+ * It is robot 2 of the drive-types scene (which names the three C programs); from the examples
+ * folder:
+ *   eyesim run scenes/drive_types.sim --program 1=programs/car_slalom.c --program 2=programs/omni_square.c --program 3=programs/push_crate.c
  */
 #include <stdlib.h>
 #include "eyebot.h"

@@ -1,8 +1,8 @@
 # Omni square (the Python version of omni_square.c): the mecanum robot (the built-in Mecanum) drives a
 # 600 mm square facing the same way all along: back, right, ahead, left. Motors 1..4 = front left,
 # front right, back left, back right; each leg is measured with the encoders. It is robot 2 of the
-# drive-types scene; from the examples folder:
-#   eyesim run scenes/drive_types.sim --program 2=programs/omni_square.py
+# drive-types scene; from the examples folder, with the other two:
+#   eyesim run scenes/drive_types.sim --program 1=programs/car_slalom.py --program 2=programs/omni_square.py --program 3=programs/push_crate.py
 from eye import *
 
 TICKS_PER_MM = 720 / (3.14159265 * 60)  # 720 ticks per turn of a 60 mm wheel

@@ -1,7 +1,8 @@
 /* Push a crate: the Trolley (the built-in Trolley, eyesim/data/robots/Trolley.robi) drives up to the crate ahead and
  * pushes it 600 mm further, then backs off.
- * It is robot 3 of the drive-types scene, which names this program; from the examples folder:
- *   eyesim run scenes/drive_types.sim --program 3=programs/push_crate.c
+ * It is robot 3 of the drive-types scene (which names the three C programs); from the examples
+ * folder:
+ *   eyesim run scenes/drive_types.sim --program 1=programs/car_slalom.c --program 2=programs/omni_square.c --program 3=programs/push_crate.c
  */
 #include <stdio.h>
 #include "eyebot.h"

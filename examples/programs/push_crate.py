@@ -1,7 +1,7 @@
 # Push a crate (the Python version of push_crate.c): the Trolley (the built-in Trolley) drives up to
 # the crate ahead and pushes it 600 mm further, then backs off. It is robot 3 of the drive-types
-# scene; from the examples folder:
-#   eyesim run scenes/drive_types.sim --program 3=programs/push_crate.py
+# scene; from the examples folder, with the other two:
+#   eyesim run scenes/drive_types.sim --program 1=programs/car_slalom.py --program 2=programs/omni_square.py --program 3=programs/push_crate.py
 from eye import *
 
 LCDPrintf("Pushing the crate\n")

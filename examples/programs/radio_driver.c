@@ -1,7 +1,7 @@
 /* Radio, the driver (robot 2): waits for commands from robot 1 over the radio ("forward <mm>",
  * "left <degrees>", "right <degrees>", "stop"), carries each out and answers where it is now.
- * Runs with radio_commander.c on robot 1. From the examples folder (eyesim compiles it):
- *   eyesim run scenes/radio.sim --program 2=programs/radio_driver.c
+ * Runs with radio_commander.c on robot 1. From the examples folder (eyesim compiles them):
+ *   eyesim run scenes/radio.sim --program 1=programs/radio_commander.c --program 2=programs/radio_driver.c
  */
 #include <stdio.h>
 #include <string.h>

@@ -1,7 +1,7 @@
 # Radio, the driver (robot 2; the Python version of radio_driver.c): waits for commands from robot 1
 # over the radio ("forward <mm>", "left <degrees>", "right <degrees>", "stop"), carries each out and
-# answers where it is now. From the examples folder:
-#   eyesim run scenes/radio.sim --program 2=programs/radio_driver.py
+# answers where it is now. Runs with radio_commander.py on robot 1. From the examples folder:
+#   eyesim run scenes/radio.sim --program 1=programs/radio_commander.py --program 2=programs/radio_driver.py
 from eye import *
 
 RADIOInit()
