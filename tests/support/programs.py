@@ -60,9 +60,11 @@ def program_builder(source_dir: Path, out_dir: Path):
 
 
 @contextlib.contextmanager
-def simulator_with_viewer(*args: str, cwd: Path):
-    """`eyesim run ARGS` with its viewer on a free port; yields (process, viewer URL)."""
-    process = subprocess.Popen(eyesim_command("run", "--port", "0", "--viewer-port", "0", *args),
+def simulator_with_viewer(*args: str, cwd: Path, token: bool = False):
+    """`eyesim run ARGS` with its viewer on a free port, without its access token unless `token`
+    (the tests of the token); yields (process, viewer URL)."""
+    no_token = () if token else ("--no-token",)
+    process = subprocess.Popen(eyesim_command("run", "--port", "0", "--viewer-port", "0", *no_token, *args),
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=cwd)
     try:
         url = None

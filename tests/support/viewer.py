@@ -19,7 +19,7 @@ def viewer_simulation(scene, mode: str = "realtime", root=None):
     with running_simulation(scene, mode) as (sim, port):
         io = IoThread()
         io.start()
-        server = ViewerServer(sim, io, "127.0.0.1", 0, run_folder=root)
+        server = ViewerServer(sim, io, "127.0.0.1", 0, run_folder=root, require_token=False)
         server.start()
         try:
             yield sim, port, server

@@ -22,7 +22,7 @@ def test_only_the_shown_upload_is_kept(tmp_path):
 
     async def scenario():
         with Recording(tour) as recording:
-            server = ReplayServer(recording, port=0)
+            server = ReplayServer(recording, port=0, require_token=False)
             await server.start()
             base = f"http://127.0.0.1:{server.port}"
             try:

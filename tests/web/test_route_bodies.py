@@ -186,7 +186,7 @@ def test_every_json_route_the_server_serves_is_in_the_schema(tmp_path):
         io = IoThread()
         io.start()
         launcher = Launcher(sim, "127.0.0.1", port)
-        viewer = ViewerServer(sim, io, "127.0.0.1", 0, launcher=launcher, run_folder=tmp_path)
+        viewer = ViewerServer(sim, io, "127.0.0.1", 0, launcher=launcher, run_folder=tmp_path, require_token=False)
         viewer.workspace = SceneWorkspace(sim, launcher, SceneRoots([("work", tmp_path, True)]))
         viewer.start()
         try:

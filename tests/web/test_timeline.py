@@ -108,7 +108,8 @@ def test_the_live_history_keeps_a_bounded_recent_past():
 
 
 def test_replay_server_answers_the_viewer_and_refuses_changes(tour):
-    process = subprocess.Popen(eyesim_command("replay", str(tour), "--viewer-port", "0"), stdout=subprocess.PIPE,
+    process = subprocess.Popen(eyesim_command("replay", str(tour), "--viewer-port", "0", "--no-token"),
+                               stdout=subprocess.PIPE,
                                stderr=subprocess.PIPE, text=True)
     try:
         url = re.search(r"(http://\S+)", process.stdout.readline()).group(1)

@@ -1,5 +1,5 @@
-"""The viewer serves only its own page: foreign origins and host names are refused, a server on a
-non-loopback address wants its token, file routes serve only the scene's images, and a closing
+"""The viewer serves only its own page: foreign origins and host names are refused, a server wants
+its token (on loopback too, unless started without one), file routes serve only the scene's images, and a closing
 tab or a malformed command affects nobody else."""
 
 import asyncio
@@ -75,8 +75,11 @@ def test_an_unknown_host_name_is_refused(viewer_sim):
 
 
 def test_host_and_origin_rules():
-    policy = AccessPolicy("127.0.0.1")
-    assert policy.token is None and policy.url_suffix() == ""
+    policy = AccessPolicy("127.0.0.1")  # a token on loopback too: every local user reaches the port
+    assert policy.token and policy.url_suffix() == f"?token={policy.token}"
+    assert AccessPolicy("127.0.0.1", require_token=False).token is None
+    with pytest.raises(ValueError, match="may only listen on loopback"):
+        AccessPolicy("0.0.0.0", require_token=False)
     assert is_loopback("localhost") and is_loopback("127.0.0.5") and is_loopback("[::1]")
     assert not is_loopback("0.0.0.0") and not is_loopback("192.168.1.4") and not is_loopback("evil.example")
     remote = AccessPolicy("0.0.0.0")
@@ -240,3 +243,25 @@ def test_closing_tabs_never_freezes_another(viewer_sim):
         return steady_after, last_after
 
     assert run_async(asyncio.wait_for(scenario(), timeout=120)) == (5, 5)
+
+
+def test_a_loopback_server_wants_its_token_too():
+    """Any user of a shared lab machine can connect to a loopback port: without the token from the
+    printed URL, nothing is served (page, assets or WebSocket)."""
+    with running_simulation(arena()) as (sim, _):
+        io = IoThread()
+        io.start()
+        server = ViewerServer(sim, io, "127.0.0.1", 0)
+        server.start()
+        try:
+            token = server.access.token
+            base = f"127.0.0.1:{server.port}"
+            assert server.url == f"http://{base}/?token={token}"
+            assert run_async(_status(f"http://{base}/")) == 403
+            assert run_async(_status(f"http://{base}/index.html")) == 403
+            assert run_async(_ws_status(f"ws://{base}/ws", {"Origin": f"http://{base}"})) == 403
+            assert run_async(_status(f"http://{base}/?token={token}")) == 200
+            assert run_async(_status(f"http://{base}/index.html", cookies={"eyesim_token": token})) == 200
+        finally:
+            server.stop()
+            io.stop()

@@ -14,7 +14,7 @@ pytestmark = pytest.mark.browser
 
 
 def test_the_printed_url_opens_the_viewer_and_a_bare_one_is_refused(browser_context, tmp_path):
-    with simulator_with_viewer("--host", "0.0.0.0", cwd=tmp_path) as (process, url):
+    with simulator_with_viewer("--host", "0.0.0.0", cwd=tmp_path, token=True) as (process, url):
         match = re.match(r"http://[^/]+:(\d+)/\?token=([\w-]+)$", url)
         assert match, url
         port, token = match.groups()
@@ -28,4 +28,17 @@ def test_the_printed_url_opens_the_viewer_and_a_bare_one_is_refused(browser_cont
         assert viewer.state("robotIds") == [1]
         viewer.page.screenshot(path="/tmp/token.png")
         assert viewer.errors == []
+        viewer.page.close()
+
+
+def test_on_loopback_too_the_printed_url_carries_the_token(browser_context, tmp_path):
+    with simulator_with_viewer(cwd=tmp_path, token=True) as (process, url):
+        match = re.match(r"http://127\.0\.0\.1:(\d+)/\?token=([\w-]+)$", url)
+        assert match, url
+        port, _ = match.groups()
+        bare = browser_context.new_page()
+        assert bare.goto(f"http://127.0.0.1:{port}/").status == 403
+        bare.close()
+        viewer = open_viewer(browser_context, url)
+        assert viewer.state("robotIds") == [1] and viewer.errors == []
         viewer.page.close()

@@ -23,6 +23,8 @@ def register(subparsers) -> None:
     replay.add_argument("--host", default="127.0.0.1", help="address to serve on (default 127.0.0.1)")
     replay.add_argument("--viewer-port", type=int, default=8080, help="port of the viewer (default 8080; 0 = any free port)")
     replay.add_argument("--open", action="store_true", help="open the viewer in a web browser")
+    replay.add_argument("--no-token", action="store_true",
+                        help="serve without the access token (loopback only; any local user can then use it)")
     replay.set_defaults(func=replay_main)
 
     render = subparsers.add_parser("render", help="make a video of a recording (top-down view)",
@@ -80,10 +82,11 @@ def replay_main(args) -> int:
                   f"--keep-recordings all, or failed (the default) when a case failed", file=sys.stderr)
             return 2
         args.recording = str(recordings[0])
-    return serve_replay(args.recording, args.host, args.viewer_port, args.open, report)
+    return serve_replay(args.recording, args.host, args.viewer_port, args.open, report, not args.no_token)
 
 
-def serve_replay(path: str, host: str, port: int, open_browser: bool, report: Path | None = None) -> int:
+def serve_replay(path: str, host: str, port: int, open_browser: bool, report: Path | None = None,
+                 require_token: bool = True) -> int:
     """Serve the viewer over a recording (and a grading report) until Ctrl-C."""
     import asyncio
     import webbrowser
@@ -104,7 +107,10 @@ def serve_replay(path: str, host: str, port: int, open_browser: bool, report: Pa
 
     with recording:
         try:
-            asyncio.run(serve(recording, host, port, ready, report_dir=report))
+            asyncio.run(serve(recording, host, port, ready, report_dir=report, require_token=require_token))
+        except ValueError as error:  # --no-token on an address other machines reach
+            print(f"eyesim replay: {error}", file=sys.stderr)
+            return 2
         except OSError as error:
             print(f"eyesim replay: cannot serve on port {port}: {error.strerror} (try --viewer-port 0)",
                   file=sys.stderr)

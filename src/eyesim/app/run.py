@@ -60,6 +60,9 @@ def register(subparsers) -> None:
                         help="another folder whose scene files the viewer's scene browser lists and may save into "
                              "(besides the current folder and the bundled examples); repeatable")
     parser.add_argument("--open", action="store_true", help="open the viewer in a web browser")
+    parser.add_argument("--no-token", action="store_true",
+                        help="serve the viewer without its access token (loopback only; any local user can then "
+                             "use it)")
     parser.add_argument("--verbose", "-v", action="store_true", help="log connections and internal events")
     parser.set_defaults(func=main)
 
@@ -192,7 +195,11 @@ def simulate(args) -> int:
 
         io = IoThread()
         io.start()
-        viewer = ViewerServer(sim, io, args.host, args.viewer_port, launcher=launcher)
+        try:
+            viewer = ViewerServer(sim, io, args.host, args.viewer_port, launcher=launcher,
+                                  require_token=not args.no_token)
+        except ValueError as error:  # --no-token on an address other machines reach
+            raise UsageError(str(error)) from None
         viewer.workspace = scene_workspace(sim, launcher, args)
         try:
             viewer.start()
@@ -200,7 +207,7 @@ def simulate(args) -> int:
             raise UsageError(f"cannot serve the viewer on port {args.viewer_port}: {error.strerror} "
                              f"(try --viewer-port 0)") from None
         print(f"EyeSim viewer: {viewer.url}", flush=True)
-        if viewer.access.token:
+        if viewer.access.token and not viewer.access.loopback:
             print("EyeSim: the viewer is reachable from other machines; open it with the URL above "
                   "(it carries the access token)", flush=True)
         if args.open and _has_display():

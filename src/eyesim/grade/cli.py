@@ -100,7 +100,7 @@ def main(args) -> int:
     if args.serve:
         from eyesim.app.record_cli import replay_main
 
-        args.recording, args.host, args.open = str(out), "127.0.0.1", False
+        args.recording, args.host, args.open, args.no_token = str(out), "127.0.0.1", False, False
         replay_main(args)
     if args.require_pass:
         failed = [(s["name"], c["case"], check) for s in summary["students"] for c in s["cases"]

@@ -8,9 +8,10 @@ Three checks, in this order, on every HTTP request and WebSocket upgrade:
 - **Origin.** When a browser sends `Origin` (it always does for WebSockets and for cross-site
   requests), it must be this server's own `http://host:port`. Another site's page open in the same
   browser cannot drive the simulation or read the LCDs.
-- **Token.** When the server listens on a non-loopback address, other machines can reach it, so a
-  random token is required: `?token=...` in the URL printed at start, after which a cookie
-  carries it. Loopback needs none: only this machine's users can connect.
+- **Token.** A random token is required, as Jupyter does: `?token=...` in the URL printed at
+  start, after which a cookie carries it. On a shared lab machine every local user can reach a
+  loopback port, so loopback needs it too, unless the server was started without one
+  (`--no-token`, refused for any other address, where other machines can reach the server).
 
 Refusals answer 403 with the reason, and are logged."""
 
@@ -37,11 +38,18 @@ def is_loopback(host: str) -> bool:
         return False
 
 
+class NoTokenRefused(ValueError):
+    """--no-token with an address other machines can reach."""
+
+
 class AccessPolicy:
-    def __init__(self, host: str, token: str | None = None):
+    def __init__(self, host: str, token: str | None = None, require_token: bool = True):
         self.host = host
         self.loopback = is_loopback(host)
-        self.token = None if self.loopback else (token or secrets.token_urlsafe(18))
+        if not require_token and not self.loopback:
+            raise NoTokenRefused(f"--no-token: {host} can be reached from other machines; "
+                                 f"a server without a token may only listen on loopback (127.0.0.1)")
+        self.token = (token or secrets.token_urlsafe(18)) if require_token else None
         self._names = self._allowed_names(host)
 
     def _allowed_names(self, host: str) -> set[str] | None:

@@ -35,13 +35,13 @@ MAX_UPLOAD_BYTES = 4 * 1024**3  # a recording sent from the page (hours of camer
 
 class ReplayServer:
     def __init__(self, recording, host: str = "127.0.0.1", port: int = 8080, token: str | None = None,
-                 report_dir: Path | None = None):
+                 report_dir: Path | None = None, require_token: bool = True):
         self.recording = recording
         self.report_dir = None if report_dir is None else Path(report_dir).resolve()
         self.source = timeline.RecordingTimeline(recording)
         self.host = host
         self.port = port
-        self.access = AccessPolicy(host, token)
+        self.access = AccessPolicy(host, token, require_token)
         self._runner: web.AppRunner | None = None
         self._pages: dict[web.WebSocketResponse, timeline.FrameCursor] = {}
         self._uploads = tempfile.TemporaryDirectory(prefix="eyesim-replay-")
@@ -203,10 +203,11 @@ def _image_kind(data: bytes) -> str | None:
     return None
 
 
-async def serve(recording, host: str, port: int, on_ready, report_dir: Path | None = None) -> None:
+async def serve(recording, host: str, port: int, on_ready, report_dir: Path | None = None,
+                require_token: bool = True) -> None:
     """Serves the replay (and the grading report in `report_dir`) until cancelled; `on_ready(server)`
     once it listens."""
-    server = ReplayServer(recording, host, port, report_dir=report_dir)
+    server = ReplayServer(recording, host, port, report_dir=report_dir, require_token=require_token)
     await server.start()
     on_ready(server)
     try:

@@ -361,7 +361,7 @@ async def static_file(request: web.Request) -> web.StreamResponse:
 
 class ViewerServer:
     def __init__(self, sim, io_thread, host: str = "127.0.0.1", port: int = 8080, token: str | None = None,
-                 launcher=None, run_folder: Path | None = None):
+                 launcher=None, run_folder: Path | None = None, require_token: bool = True):
         """`launcher` runs the programs the page starts (none: the page cannot start programs);
         `run_folder` is the first scene root (default: the current folder)."""
         self.sim = sim
@@ -370,7 +370,7 @@ class ViewerServer:
         self.io = io_thread
         self.host = host
         self.port = port
-        self.access = AccessPolicy(host, token)
+        self.access = AccessPolicy(host, token, require_token)
         self.hub: ViewerHub | None = None
         # robot files the editor opens and saves stay under the folder the simulator started in
         self.robot_editor = RobotEditor(self.run_folder)
