@@ -71,6 +71,7 @@ class Simulation:
         self._stopping = False
         self._until_us: int | None = None  # where the run under way ends (run's `until`)
         self._answered_later = 0  # pending calls answered so far (a step that answers one ends a quiet stretch)
+        self._pause_at_us: int | None = None  # step_for: pause again once simulation time gets here
         self._last_snapshot = 0.0
         self._publish_again = False  # every component publishes its state at the next tick
         self.step_observers: list = []  # called as observer(sim) after every physics step
@@ -110,11 +111,12 @@ class Simulation:
                 component.reset()
         self.events.reset()
 
-    def replace_scene(self, scene: Scene) -> None:
+    def replace_scene(self, scene: Scene, opened: bool = True) -> None:
         """Put another scene in place of this one (the viewer's scene browser and editor), on the
         simulation thread: connected programs are disconnected (their robots are gone), the world
         is built afresh and simulation time goes on. A scene the physics cannot build raises and
-        leaves the old one running."""
+        leaves the old one running. `opened`: another scene (a file opened, a new one), not an edit
+        of this one (listeners such as recorders tell the two apart)."""
         built = build_world(scene, self.step_us / 1e6)  # first: a failure changes nothing
         self.shutdown_programs()
         self.scene = scene
@@ -122,7 +124,7 @@ class Simulation:
         self.call_time_us = DEFAULT_CALL_TIME_US if call_time_ms is None else round(call_time_ms * 1000)
         self._build(built)
         self._publish_again = True  # the new robots' LCD and camera images, whether they change or not
-        self.events.emit({"type": "new-scene"})
+        self.events.emit({"type": "new-scene", "opened": opened})
 
     def shutdown_programs(self) -> None:
         """Disconnect every program, keeping the port open for new ones."""
@@ -160,6 +162,14 @@ class Simulation:
     def stop(self) -> None:
         self._stopping = True
         self.network.wake()
+
+    def step_for(self, duration_us: int) -> None:
+        """The viewer's Step: let simulation time go on as it does running, by `duration_us` rounded
+        up to whole physics steps (at least one), then pause (running, it pauses after that long).
+        On the simulation thread."""
+        steps = max(1, -(-duration_us // self.step_us))
+        self._pause_at_us = self.time_us + steps * self.step_us
+        self.clock.set_paused(False, self.time_us)
 
     # -- things that happen at a simulation time ------------------------------------------------
     def schedule(self, time_us: int, action) -> None:
@@ -301,6 +311,9 @@ class Simulation:
         self._execute(request)
 
     def _deterministic_round(self) -> None:
+        if self.clock.paused:  # nothing goes on; the order of everything is kept for when it does
+            self._wait(IDLE_WAIT)
+            return
         self._wait(0)
         if self._stopping:  # the last program just ended: not one more step, so every run ends alike
             return
@@ -341,7 +354,7 @@ class Simulation:
         answered = self._answered_later
         for _ in range(QUIET_STEPS):
             self.step()
-            if self._answered_later != answered or self._stopping or not self.inbox.empty():
+            if self._answered_later != answered or self._stopping or not self.inbox.empty() or self.clock.paused:
                 return
             if due_us is not None and due_us < self.time_us + self.step_us:
                 return
@@ -371,6 +384,9 @@ class Simulation:
             self._wake_pending()
         for observer in self.step_observers:
             observer(self)
+        if self._pause_at_us is not None and self.time_us >= self._pause_at_us:
+            self._pause_at_us = None
+            self.clock.set_paused(True, self.time_us)
 
     # -- requests --------------------------------------------------------------------------------
     def _execute(self, request: Request) -> None:
