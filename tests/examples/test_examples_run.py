@@ -107,7 +107,8 @@ class ExampleRun:
     def lcd(self, robot: int) -> np.ndarray:
         return np.asarray(Image.open(self.out / "lcd" / f"robot{robot}-lcd.png").convert("RGB"))
 
-    def lcd_shows(self, robot: int, row: int, text: str, column: int = 0, colours: tuple[int, int] | None = None) -> bool:
+    def lcd_shows(self, robot: int, row: int, text: str, column: int = 0,
+                  colours: tuple[int, int] | None = None) -> bool:
         """Whether robot's final LCD shows `text` at (row, column) of the default font's grid, in
         white on black or in `colours` (foreground, background): pixel for pixel as the
         simulator's LCD draws it."""
@@ -184,7 +185,7 @@ def test_every_example_documents_how_to_run_it_and_has_a_python_version():
         own = [command for command, files in commands.items() if Path("scenes") / scene.name in files]
         assert any(shlex.split(command)[2] == f"scenes/{scene.name}" for command in own), \
             f"{scene.name} says nowhere how to run it"
-    assert {example_of(command) for command in commands} == set(BOUNDS)  # no bounds without a run, no run without bounds
+    assert {example_of(command) for command in commands} == set(BOUNDS)  # every run has bounds, all bounds a run
 
 
 @pytest.mark.parametrize("command", sorted(documented_commands()), ids=str)
