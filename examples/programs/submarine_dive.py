@@ -1,7 +1,8 @@
-# Submarine dive (the Python version of submarine_dive.c): Minnow (the built-in Minnow) dives to
-# 500 mm under the surface of its pool, holding that depth with its vertical thrusters (3 front,
-# 4 back) while it cruises and turns on its horizontal ones (1 left, 2 right), then surfaces. Depth
-# comes from SIMGetRobot. From the examples folder:
+# Submarine dive (the Python version of submarine_dive.c): Minnow (the built-in Minnow) goes to
+# 500 mm under the surface of its pool (it is as heavy as the water it displaces, so it starts on the
+# pool floor and rises there), holds that depth with its vertical thrusters (3 front, 4 back) while
+# it cruises and turns on its horizontal ones (1 left, 2 right), then surfaces. Depth comes from
+# SIMGetRobot. From the examples folder:
 #   eyesim run scenes/pool.sim --program 1=programs/submarine_dive.py
 from eye import *
 
@@ -33,8 +34,8 @@ def hold_depth(target, ms, left, right):
         OSWait(50)
 
 
-LCDPrintf("Diving\n")
-hold_depth(500, 6000, 0, 0)     # down to 0.5 m
+LCDPrintf("Going to 500 mm depth\n")
+hold_depth(500, 6000, 0, 0)     # to 0.5 m under the surface
 LCDPrintf("depth %d mm, cruising\n", depth())
 print("dived", depth())
 hold_depth(500, 4000, 60, 60)   # ahead

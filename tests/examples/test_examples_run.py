@@ -284,7 +284,7 @@ def test_submarine_dives_holds_its_depth_and_surfaces(run_example, command):
     assert all(abs(d - 0.5) < 0.08 for d in held)  # ... held it while cruising and turning ...
     assert path[-1]["time_s"] > 25 and depth[round(path[-1]["time_s"], 2)] < 0.02  # ... and surfaced
     assert path[-1]["x"] - path[0]["x"] > 1.0  # it cruised ahead
-    assert run.lcd_shows(1, 0, "Diving") and run.lcd_shows(1, 3, "at the surface: depth %d mm" % surfaced)
+    assert run.lcd_shows(1, 0, "Going to 500 mm depth") and run.lcd_shows(1, 3, "at the surface: depth %d mm" % surfaced)
 
 
 @pytest.mark.parametrize("command", commands_for("scenes/workshop.sim"), ids=str)
