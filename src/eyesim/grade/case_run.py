@@ -10,6 +10,7 @@ the machine or the wall clock, so a case graded anywhere gives the same result (
 from __future__ import annotations
 
 import base64
+import contextlib
 import io
 import json
 import os
@@ -149,8 +150,6 @@ def run_case(task: dict, directory: Path) -> dict:
     from eyesim.core.stalls import hung_status
     from eyesim.grade.checks import judge
     from eyesim.grade.store import RECORDING
-    from eyesim.record import Recorder
-    from eyesim.testing import Simulation
     from eyesim.testing.assertions import describe_exit
 
     case, programs = task["case"], task["programs"]
@@ -178,21 +177,13 @@ def run_case(task: dict, directory: Path) -> dict:
         result["score"] = 0.0
         return result
 
-    with Simulation(case.scene) as sim:
-        for entry in case.robots:
-            sim.program(entry["robot"], executables[entry["program"]], *entry.get("args", ()),
-                        stdin=entry.get("stdin"), cwd=work, env=entry.get("env"), cpu_seconds=case.cpu,
-                        memory_bytes=case.memory_mb << 20, processes=task.get("processes"), file_bytes=FILE_BYTES)
-        _schedule_inputs(sim, case.inputs)
-        keep = task.get("keep_recording", "failed")
-        recorder = Recorder(sim.engine, directory / RECORDING) if keep != "none" else None
-        end = sim.run(until=case.time, end_with_programs=case.end_with_programs, wall_timeout=case.wall_clock)
-        sim.stop_programs()  # the run is over: what still runs is stopped, its output complete
-        if recorder is not None:
-            recorder.close()
+    keep = task.get("keep_recording", "failed")
+    with _simulated(case, executables, work, task, directory / RECORDING if keep == "all" else None) as (sim, end):
         result["end"] = {"reason": end.reason, "time": round(end.time, 6)}
         result["status"] = _status(end, [robot.program for robot in sim.robots if robot.program is not None])
-        if end.stalled:  # why it stood still, in the teacher's words: "waiting for a key", "hung: ..."
+        if end.reason == "watchdog" and end.stalled:
+            # why the watchdog had to end it, in the teacher's words: "waiting for a key", "hung: ...";
+            # only then, as any other run's result must not depend on the wall clock
             result["hung"] = hung_status(list(end.stalled))
             result["end"]["stalled"] = list(end.stalled)
         context = {"workdir": work, "python_checks": task["python_checks"], "python_modules": {}}
@@ -215,9 +206,35 @@ def run_case(task: dict, directory: Path) -> dict:
             result["artifacts"][f"robot{robot.id}-lcd.png"] = _png(robot.lcd_image())
         result["contacts"] = [c.as_dict() for c in sim.contacts[:100]]
     failed = result["status"] != "ok" or result["score"] < 1.0
-    if recorder is not None and (keep == "all" or failed):
+    stood_still = result["status"] == "timeout" or "hung" in result  # nothing to watch, and slow to run again
+    if keep == "failed" and failed and not stood_still:
+        # Recording costs about as much as simulating: only a failed case is run again, recorded.
+        # Simulated time is deterministic, so it is the same run.
+        with _simulated(case, executables, work, task, directory / RECORDING):
+            pass
+    if (directory / RECORDING).exists() and (keep == "all" or failed):
         result["artifacts"][RECORDING] = (directory / RECORDING).read_bytes()
     return result
+
+
+@contextlib.contextmanager
+def _simulated(case, executables: dict, work: Path, task: dict, recording: Path | None):
+    """The case's run, done (and recorded to `recording`): yields (Simulation, RunEnd)."""
+    from eyesim.record import Recorder
+    from eyesim.testing import Simulation
+
+    with Simulation(case.scene) as sim:
+        for entry in case.robots:
+            sim.program(entry["robot"], executables[entry["program"]], *entry.get("args", ()),
+                        stdin=entry.get("stdin"), cwd=work, env=entry.get("env"), cpu_seconds=case.cpu,
+                        memory_bytes=case.memory_mb << 20, processes=task.get("processes"), file_bytes=FILE_BYTES)
+        _schedule_inputs(sim, case.inputs)
+        recorder = Recorder(sim.engine, recording) if recording is not None else None
+        end = sim.run(until=case.time, end_with_programs=case.end_with_programs, wall_timeout=case.wall_clock)
+        sim.stop_programs()  # the run is over: what still runs is stopped, its output complete
+        if recorder is not None:
+            recorder.close()
+        yield sim, end
 
 
 def main(argv: list[str] | None = None) -> int:
