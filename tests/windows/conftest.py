@@ -1,0 +1,53 @@
+"""The Windows simulator end to end, under Wine: run by `make test-windows` (`pytest tests/windows`);
+plain `pytest` skips this folder (pyproject's addopts --ignore it). The tests run here on Linux;
+EyeSim, the simulator and the robots' programs run under Wine with a Windows CPython and EyeSim's
+Windows wheel (windows_env.py builds that environment, cached between runs)."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+import windows_env  # noqa: E402
+from wine_sim import WindowsEyeSim  # noqa: E402
+
+# Screenshots and other files for a person to look at, listed at the end of the run.
+ARTIFACTS = windows_env.ROOT / "build" / "windows-tests"
+_artifacts: list[Path] = []
+
+
+@pytest.fixture(scope="session")
+def windows() -> WindowsEyeSim:
+    """EyeSim's Windows wheel installed in the Windows Python under Wine (built when missing)."""
+    try:
+        env = windows_env.ensure()
+    except windows_env.EnvError as error:
+        pytest.fail(f"no Windows environment: {error}", pytrace=False)
+    return WindowsEyeSim(env)
+
+
+@pytest.fixture
+def artifact():
+    """artifact(name) -> a path under build/windows-tests/ that the run lists at its end."""
+    ARTIFACTS.mkdir(parents=True, exist_ok=True)
+
+    def make(name: str) -> Path:
+        path = ARTIFACTS / name
+        path.unlink(missing_ok=True)
+        _artifacts.append(path)
+        return path
+
+    return make
+
+
+def pytest_terminal_summary(terminalreporter):
+    kept = [path for path in _artifacts if path.exists()]
+    if kept:
+        terminalreporter.write_sep("-", "files to look at")
+        for path in kept:
+            terminalreporter.write_line(str(path))

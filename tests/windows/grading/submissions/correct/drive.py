@@ -1,0 +1,5 @@
+from eye import *
+
+VWStraight(400, 300)
+VWWait()
+LCDPrintf("done\n")

@@ -1,0 +1,22 @@
+"""Windows test program: starts forever.exe (from the folder named by its first argument, or its
+own), waits until it runs, then keeps the robot busy for ever."""
+import os
+import subprocess
+import sys
+import time
+
+# Before the first RoBIOS call, time.sleep is still the wall clock's.
+child = subprocess.Popen([os.path.join(os.path.dirname(os.path.abspath(__file__)), "forever.exe")])
+deadline = time.monotonic() + 60
+while not os.path.exists("child-running"):
+    if time.monotonic() > deadline or child.poll() is not None:
+        sys.exit(f"forever.exe did not start (exit code {child.poll()})")
+    time.sleep(0.02)
+print(f"child {child.pid} running", flush=True)
+
+from eye import *  # noqa: E402
+
+LCDPrintf("looping\n")
+while True:
+    VWSetSpeed(100, 0)
+    OSWait(100)
