@@ -13,7 +13,10 @@ simulation never waits for a slow reader. Two limits keep one program from sinki
 while a connection has MAX_QUEUED requests waiting or more than READ_PAUSE_BACKLOG bytes of
 replies unread, its socket is not read (TCP holds the sender back); a program that stops reading
 its replies for STALL_TIMEOUT, or lets them pile up beyond MAX_BACKLOG, is disconnected with a
-logged reason, and its buffers are given back."""
+logged reason, and its buffers are given back. A run holds at most MAX_CONNECTIONS connections
+(more are refused, and logged); one that has not sent its handshake within HANDSHAKE_TIMEOUT is
+closed; and when the process runs out of descriptors, accepting rests for a second instead of
+spinning on a listener it cannot serve."""
 
 from __future__ import annotations
 
@@ -34,6 +37,9 @@ READ_PAUSE_BACKLOG = 1 << 20  # bytes of unread replies before a program's reque
 MAX_BACKLOG = 32 << 20  # bytes of unread replies that close the connection (two largest frames)
 READ, WRITE = selectors.EVENT_READ, selectors.EVENT_WRITE
 STALL_TIMEOUT = 30.0  # s a program may leave its replies unread (a debugger's breakpoint) before it is dropped
+MAX_CONNECTIONS = 256  # open program connections of one run (a class's robots are far fewer)
+HANDSHAKE_TIMEOUT = 5.0  # s from connecting to the HELLO before a connection is closed
+ACCEPT_REST = 1.0  # s the listeners rest after the process ran out of file descriptors
 
 
 class ProgramConnection:
@@ -48,6 +54,7 @@ class ProgramConnection:
         self.session = Session(connection=self, peer=peer)
         self._events = READ
         self.backlog_progress = 0.0  # wall time (monotonic) the backlog last began or shrank
+        self.connected_at = time.monotonic()
 
     # -- replies -------------------------------------------------------------------------------
     def send(self, data: bytes) -> None:
@@ -200,6 +207,11 @@ class ProgramSockets:
         self.selector.register(self._wake_read, READ, None)
         self.connections: set[ProgramConnection] = set()
         self._last_stall_check = time.monotonic()
+        self.max_connections = MAX_CONNECTIONS
+        self.handshake_timeout = HANDSHAKE_TIMEOUT
+        self._listeners: set[socket.socket] = set()
+        self._resting_until = 0.0  # the listeners are unregistered until then (no descriptors left)
+        self._refused = 0  # connections refused since the last log line about it
 
     def wake(self) -> None:
         """Any thread: make a waiting `poll` return."""
@@ -209,10 +221,14 @@ class ProgramSockets:
             pass  # already woken (the pair's buffer is full) or shut down
 
     def add_listener(self, listener: socket.socket) -> None:
-        self.selector.register(listener, READ, listener)
+        self._listeners.add(listener)
+        if not self._resting_until:
+            self.selector.register(listener, READ, listener)
 
     def remove_listener(self, listener: socket.socket) -> None:
-        self.selector.unregister(listener)
+        self._listeners.discard(listener)
+        if not self._resting_until:
+            self.selector.unregister(listener)
         listener.close()
 
     def watch(self, file, on_readable) -> None:
@@ -241,9 +257,14 @@ class ProgramSockets:
                 if events & READ and not target.closed:
                     target.read()
         now = time.monotonic()
-        if now - self._last_stall_check >= 1.0:
+        if now - self._last_stall_check >= 1.0 or (self._resting_until and now >= self._resting_until):
             self._last_stall_check = now
             self._drop_stalled(now)
+            self._end_rest(now)
+            if self._refused > 1:
+                log.warning("refused %d more program connection(s): %d are open, the most a run takes",
+                            self._refused - 1, self.max_connections)
+            self._refused = 0
 
     def _drop_stalled(self, now: float) -> None:
         for connection in list(self.connections):
@@ -251,6 +272,26 @@ class ProgramSockets:
                 log.warning("%s: has not read its replies for %.0f s (%d bytes waiting); closing the connection",
                             connection.session.name, now - connection.backlog_progress, connection.backlog.size)
                 connection.close()
+            elif connection.session.robot is None and now - connection.connected_at > self.handshake_timeout:
+                log.warning("%s: sent no handshake within %g s; closing the connection",
+                            connection.session.peer, self.handshake_timeout)
+                connection.close()
+
+    def _rest(self) -> None:
+        """Out of file descriptors: stop watching the listeners for ACCEPT_REST (the kernel keeps
+        new connections in its backlog), rather than wake at once, again and again."""
+        if not self._resting_until:
+            log.warning("out of file descriptors (%d program connections open); not accepting programs for %g s",
+                        len(self.connections), ACCEPT_REST)
+            for listener in self._listeners:
+                self.selector.unregister(listener)
+        self._resting_until = time.monotonic() + ACCEPT_REST
+
+    def _end_rest(self, now: float) -> None:
+        if self._resting_until and now >= self._resting_until:
+            self._resting_until = 0.0
+            for listener in self._listeners:
+                self.selector.register(listener, READ, listener)
 
     def _drain_wake(self) -> None:
         try:
@@ -262,7 +303,18 @@ class ProgramSockets:
     def _accept(self, listener: socket.socket) -> None:
         try:
             sock, address = listener.accept()
-        except (BlockingIOError, OSError):
+        except BlockingIOError:
+            return
+        except OSError as error:
+            if error.errno in (errno.EMFILE, errno.ENFILE, errno.ENOBUFS, errno.ENOMEM):
+                self._rest()
+            return
+        if len(self.connections) >= self.max_connections:
+            self._refused += 1
+            if self._refused == 1:  # the first of a burst now, the rest counted once a second
+                log.warning("refused a program connection from %s:%s: %d are open, the most a run takes",
+                            address[0], address[1], self.max_connections)
+            sock.close()
             return
         sock.setblocking(False)
         sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
