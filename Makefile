@@ -33,9 +33,9 @@ $(INSTALLED): $(BIN)/python $(SOURCES)
 	$(BIN)/pip install --quiet ".[test]"
 	touch $@
 
-build/demo: examples/programs/demo.c $(INSTALLED)
+build/demo: src/eyesim/examples/programs/demo.c $(INSTALLED)
 	mkdir -p build
-	$(BIN)/eyesim cc -O2 -Wall -Wextra examples/programs/demo.c -o $@
+	$(BIN)/eyesim cc -O2 -Wall -Wextra src/eyesim/examples/programs/demo.c -o $@
 
 # Debian packages the tests need, installed when missing (needs root): headless Chromium for the
 # browser tests, software OpenGL (EGL and OSMesa) for the cameras' OpenGL renderer, and bubblewrap

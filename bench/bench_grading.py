@@ -29,9 +29,10 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from common import eyesim, print_table, write_results  # noqa: E402
+from eyesim.paths import EXAMPLES_DIR  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
-GRADING = ROOT / "examples" / "grading"
+GRADING = EXAMPLES_DIR / "grading"
 
 
 def lab_module():
@@ -43,7 +44,7 @@ def lab_module():
 
 def stretched_spec(directory: Path, seconds: float) -> Path:
     text = (GRADING / "wall_follow_lab.toml").read_text()
-    text = text.replace('"../scenes/wall_follow.sim"', f'"{ROOT / "examples" / "scenes" / "wall_follow.sim"}"')
+    text = text.replace('"../scenes/wall_follow.sim"', f'"{EXAMPLES_DIR / "scenes" / "wall_follow.sim"}"')
     text = text.replace("time = 20 ", f"time = {seconds:g} ").replace("at = 17,", f"at = {seconds - 5:g},")
     path = directory / "lab.toml"
     path.write_text(text)
@@ -82,9 +83,9 @@ def main() -> None:
 
         # Baseline: the correct submission's case alone, as `eyesim run` runs it.
         good = tmp / "good"
-        subprocess.run(eyesim("cc", "-O2", str(ROOT / "examples" / "programs" / "wall_follow.c"), "-o", str(good)),
+        subprocess.run(eyesim("cc", "-O2", str(EXAMPLES_DIR / "programs" / "wall_follow.c"), "-o", str(good)),
                        check=True, cwd=tmp)
-        alone = min(timed(eyesim("run", "--headless", "--port", "0", str(ROOT / "examples" / "scenes" / "wall_follow.sim"),
+        alone = min(timed(eyesim("run", "--headless", "--port", "0", str(EXAMPLES_DIR / "scenes" / "wall_follow.sim"),
                                  "--program", f"1={good}", "--key", f"1:KEY4@{args.seconds - 5:g}"), tmp)
                     for _ in range(3))  # ends when the program does, as the grader's case does
 

@@ -10,6 +10,7 @@ from pathlib import Path
 PACKAGE_DIR = Path(__file__).resolve().parent
 DATA_DIR = PACKAGE_DIR / "data"
 STATIC_DIR = PACKAGE_DIR / "web" / "static"
+EXAMPLES_DIR = PACKAGE_DIR / "examples"  # example scenes, programs (C and Python) and a grading lab
 
 
 # What a program named without an extension may be (EyeSim's scene files name `drive` for drive.c).

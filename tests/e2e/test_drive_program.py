@@ -13,6 +13,7 @@ from PIL import Image
 from support.programs import build, eyesim_command, read_trajectory, run_headless
 
 from eyesim.robot.components.lcd import CELL_HEIGHT, HEIGHT, MENU_HEIGHT
+from eyesim.paths import EXAMPLES_DIR
 
 
 def heading(row) -> float:
@@ -111,7 +112,7 @@ def test_program_output_reaches_the_console_line_by_line(tmp_path):
 
 
 def test_the_bundled_demo_explores_and_ends_on_key4(tmp_path):
-    demo = Path(__file__).resolve().parents[2] / "examples" / "programs" / "demo.c"
+    demo = EXAMPLES_DIR / "programs" / "demo.c"
     output = tmp_path / "demo"
     built = subprocess.run(eyesim_command("cc", "-Wall", "-Wextra", "-Werror", str(demo), "-o", str(output)),
                            capture_output=True, text=True)

@@ -10,8 +10,9 @@ from PIL import Image
 from support.programs import eyesim_command, read_trajectory, run_headless
 
 from eyesim.robot.components.lcd import CELL_HEIGHT, HEIGHT, MENU_HEIGHT
+from eyesim.paths import EXAMPLES_DIR
 
-DEMO = Path(__file__).resolve().parents[2] / "examples" / "programs" / "menu_demo.c"
+DEMO = EXAMPLES_DIR / "programs" / "menu_demo.c"
 LOG_ROW = 12  # as in the program
 
 

@@ -18,17 +18,19 @@ import os
 import re
 import shlex
 import shutil
+import subprocess
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 import pytest
 from PIL import Image
-from support.programs import read_trajectory, run_headless
+from support.programs import eyesim_command, read_trajectory, run_headless
 
 from eyesim.robot.components.lcd import Lcd
+from eyesim.paths import EXAMPLES_DIR
 
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples"  # the examples folder: the one place that says where
+EXAMPLES = EXAMPLES_DIR  # the examples folder: the one place that says where
 
 COMMAND_LINE = re.compile(r"^\s*(?:#|\*)\s+(eyesim run\b.*?)\s*$")
 EXAMPLE_FILES = (".c", ".cpp", ".py", ".sim")
@@ -127,10 +129,13 @@ class ExampleRun:
 
 @pytest.fixture(scope="session")
 def run_example(tmp_path_factory):
-    """run_example(command) -> ExampleRun: the documented command, from a copy of the examples
-    folder, headless with its BOUNDS, recording the robots' paths and LCDs; once per session."""
+    """run_example(command) -> ExampleRun: the documented command, from the copy of the examples
+    that `eyesim examples` makes, as a student does, headless with its BOUNDS, recording the robots'
+    paths and LCDs; once per session."""
     folder = tmp_path_factory.mktemp("student") / "examples"
-    shutil.copytree(EXAMPLES, folder)
+    copied = subprocess.run(eyesim_command("examples", str(folder)), capture_output=True, text=True)
+    assert copied.returncode == 0, copied.stderr
+    assert "Try: cd" in copied.stdout
     env = {**os.environ, "EYESIM_CACHE_DIR": str(tmp_path_factory.mktemp("cache"))}
     runs: dict[str, ExampleRun] = {}
 
@@ -328,3 +333,14 @@ def test_radio_commands_drive_the_other_robot(run_example, command):
     assert near(driver[-1], 1300, 1100) < 20 and abs(abs(heading(driver[-1])) - 180) < 2  # where it was told to go
     assert near(commander[-1], 500, 500) < 5  # the commander stays put
     assert run.lcd_shows(1, 13, "all 6 commands done") and run.lcd_shows(2, 7, "stopped")
+
+
+def test_eyesim_examples_copies_them_and_will_not_overwrite(tmp_path):
+    target = tmp_path / "ex"
+    done = subprocess.run(eyesim_command("examples", str(target)), capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    copied = sorted(p.relative_to(target) for p in target.rglob("*") if p.is_file())
+    shipped = sorted(p.relative_to(EXAMPLES) for p in EXAMPLES.rglob("*") if p.is_file() and "__pycache__" not in p.parts)
+    assert copied == shipped and Path("scenes/wall_follow.sim") in copied
+    again = subprocess.run(eyesim_command("examples", str(target)), capture_output=True, text=True)
+    assert again.returncode == 2 and "already exists and is not an empty folder" in again.stderr

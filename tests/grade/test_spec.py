@@ -10,9 +10,10 @@ import pytest
 from support.programs import eyesim_command
 
 from eyesim.grade.spec import SCHEMA_PATH, SpecError, load_spec
+from eyesim.paths import EXAMPLES_DIR
 
 ROOT = Path(__file__).resolve().parents[2]
-SCENE = ROOT / "examples" / "scenes" / "wall_follow.sim"
+SCENE = EXAMPLES_DIR / "scenes" / "wall_follow.sim"
 
 GOOD = f'''title = "t"
 [programs.follower]

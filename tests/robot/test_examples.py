@@ -8,8 +8,9 @@ from pathlib import Path
 import pytest
 from support.programs import eyesim_command, read_trajectory, run_headless
 from support.rooms import Run
+from eyesim.paths import EXAMPLES_DIR
 
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+EXAMPLES = EXAMPLES_DIR
 
 
 def run_example(tmp_path: Path, scene: str, *programs: str) -> tuple[Run, dict]:

@@ -8,8 +8,9 @@ from pathlib import Path
 import numpy as np
 from PIL import Image
 from support.programs import eyesim_command, read_trajectory, run_headless
+from eyesim.paths import EXAMPLES_DIR
 
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+EXAMPLES = EXAMPLES_DIR
 # The sensor lab (examples/scenes/sensor_lab.wld): wall centre lines (mm) and their thickness.
 ROOM = [((0, 0), (2500, 0)), ((2500, 0), (2500, 2000)), ((2500, 2000), (0, 2000)), ((0, 2000), (0, 0))]
 BLOCK = [((650, 550), (950, 550)), ((950, 550), (950, 850)), ((950, 850), (650, 850)), ((650, 850), (650, 550))]

@@ -7,8 +7,9 @@ import subprocess
 from pathlib import Path
 
 from support.programs import eyesim_command
+from eyesim.paths import EXAMPLES_DIR
 
-GRADING = Path(__file__).resolve().parents[2] / "examples" / "grading"
+GRADING = EXAMPLES_DIR / "grading"
 LAB_SPEC = GRADING / "wall_follow_lab.toml"
 
 

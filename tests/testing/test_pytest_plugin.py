@@ -8,7 +8,9 @@ import sys
 import textwrap
 from pathlib import Path
 
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+from eyesim.paths import EXAMPLES_DIR
+
+EXAMPLES = EXAMPLES_DIR
 
 STUDENT_TESTS = f'''
 import pytest

@@ -12,9 +12,10 @@ from support.scenes import arena
 import eyesim
 from eyesim.testing import SimulationError
 from eyesim.testing.contacts import Thing
+from eyesim.paths import EXAMPLES_DIR
 
 PROGRAMS = Path(__file__).resolve().parent / "programs"
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+EXAMPLES = EXAMPLES_DIR
 
 
 def drive_ahead(robot):

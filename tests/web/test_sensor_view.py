@@ -10,9 +10,10 @@ from browser import open_viewer, robot_panel, save_screenshot
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.programs import eyesim_command, simulator_with_viewer  # noqa: E402
+from eyesim.paths import EXAMPLES_DIR  # noqa: E402
 
 pytestmark = pytest.mark.browser
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+EXAMPLES = EXAMPLES_DIR
 
 
 @pytest.fixture

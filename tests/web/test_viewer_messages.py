@@ -20,8 +20,9 @@ from support.viewer import run_async, viewer_simulation
 
 from eyesim.protocol.channel_schema import command_problem, server_message_problems
 from eyesim.scene import builtins, load_scene
+from eyesim.paths import EXAMPLES_DIR
 
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+EXAMPLES = EXAMPLES_DIR
 WATCH_SECONDS = 3.0
 
 

@@ -13,6 +13,7 @@ SUBCOMMAND_MODULES = (
     "eyesim.scene.cli",
     "eyesim.app.record_cli",
     "eyesim.grade.cli",
+    "eyesim.app.examples",
 )
 
 

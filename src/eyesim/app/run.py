@@ -295,14 +295,16 @@ def _wall_limit(sim, seconds: float | None) -> _WallLimit | None:
 
 def scene_workspace(sim, launcher, args):
     """The viewer's scene browser and editor over the scene roots: the current folder, the
-    bundled examples (read-only) and every --scenes folder."""
+    examples and the bundled scenes (read-only), and every --scenes folder."""
     from pathlib import Path
 
+    from eyesim.paths import EXAMPLES_DIR
     from eyesim.scene.builtins import SCENES_DIR
     from eyesim.web.scene_files import SceneRoots
     from eyesim.web.scene_workspace import SceneWorkspace
 
-    folders = [("current folder", Path.cwd(), True), ("examples", SCENES_DIR, False)]
+    folders = [("current folder", Path.cwd(), True), ("examples", EXAMPLES_DIR, False),
+               ("bundled scenes", SCENES_DIR, False)]
     for folder in args.scenes:
         if not Path(folder).is_dir():
             raise UsageError(f"--scenes {folder}: no such folder")
