@@ -13,6 +13,10 @@ STATIC_DIR = PACKAGE_DIR / "web" / "static"
 EXAMPLES_DIR = PACKAGE_DIR / "examples"  # example scenes, programs (C and Python) and a grading lab
 
 
+# A graded case's recording, beside its result: OUT/cases/<student>/<case>/case.mcap (eyesim grade
+# --keep-recordings writes it, eyesim replay REPORT_FOLDER serves it).
+CASE_RECORDING = "case.mcap"
+
 # What a program named without an extension may be (EyeSim's scene files name `drive` for drive.c).
 PROGRAM_SOURCE_SUFFIXES = (".c", ".cpp", ".cc", ".cxx", ".py")
 

@@ -284,6 +284,12 @@ def is_executable(path: Path) -> bool:
     return path.is_file() and os.access(path, os.X_OK)
 
 
+def has_display() -> bool:
+    """Whether a browser window can be opened here (`--open`): always on Windows and macOS, on other
+    systems only with an X or Wayland display."""
+    return WINDOWS or MACOS or bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
+
+
 # ---- Why a program ended ----------------------------------------------------------------------------
 
 # Windows exception codes (NTSTATUS) a crashed program exits with, in words.

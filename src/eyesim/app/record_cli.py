@@ -5,7 +5,6 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from eyesim.grade.store import RECORDING
 
 
 def register(subparsers) -> None:
@@ -74,50 +73,11 @@ def export_main(args) -> int:
 
 
 def replay_main(args) -> int:
+    from eyesim.web.replay_server import serve_until_interrupted
+
     report = Path(args.recording) if Path(args.recording).is_dir() else None
-    if report is not None:
-        recordings = sorted(report.glob(f"cases/*/*/{RECORDING}"))
-        if not recordings:
-            print(f"eyesim replay: {report} holds no recorded case (cases/*/*/{RECORDING}); grade with "
-                  f"--keep-recordings all, or failed (the default) when a case failed", file=sys.stderr)
-            return 2
-        args.recording = str(recordings[0])
-    return serve_replay(args.recording, args.host, args.viewer_port, args.open, report, not args.no_token)
-
-
-def serve_replay(path: str, host: str, port: int, open_browser: bool, report: Path | None = None,
-                 require_token: bool = True) -> int:
-    """Serve the viewer over a recording (and a grading report) until Ctrl-C."""
-    import asyncio
-    import webbrowser
-
-    from eyesim.app.run import _has_display
-    from eyesim.web.replay_server import serve
-
-    recording = open_recording(path, "replay")
-    if recording is None:
-        return 2
-
-    def ready(server) -> None:
-        if report is not None:
-            print(f"EyeSim grading report with replays: {server.report_url}", flush=True)
-        print(f"EyeSim replay of {recording.path.name} ({recording.duration_s:.1f} s): {server.url}", flush=True)
-        if open_browser and _has_display():
-            webbrowser.open(server.report_url if report is not None else server.url)
-
-    with recording:
-        try:
-            asyncio.run(serve(recording, host, port, ready, report_dir=report, require_token=require_token))
-        except ValueError as error:  # --no-token on an address other machines reach
-            print(f"eyesim replay: {error}", file=sys.stderr)
-            return 2
-        except OSError as error:
-            print(f"eyesim replay: cannot serve on port {port}: {error.strerror} (try --viewer-port 0)",
-                  file=sys.stderr)
-            return 2
-        except KeyboardInterrupt:
-            pass
-    return 0
+    return serve_until_interrupted(args.recording, args.host, args.viewer_port, args.open, report,
+                                   not args.no_token)
 
 
 def render_main(args) -> int:

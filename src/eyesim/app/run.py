@@ -9,6 +9,7 @@ import sys
 import threading
 import webbrowser
 
+from eyesim import platform
 from eyesim.app import scripted_input
 from eyesim.app.robot_log import RobotLog
 from eyesim.core.clock import DETERMINISTIC, MAX_SPEED, REALTIME, Clock
@@ -210,7 +211,7 @@ def simulate(args) -> int:
         if viewer.access.token and not viewer.access.loopback:
             print("EyeSim: the viewer is reachable from other machines; open it with the URL above "
                   "(it carries the access token)", flush=True)
-        if args.open and _has_display():
+        if args.open and platform.has_display():
             webbrowser.open(viewer.url)
     print(f"EyeSim: {len(sim.robots)} robot(s), programs connect to {args.host}:{server.port} "
           f"({mode} clock{'' if speed == 1 else f', speed {args.speed}'})", flush=True)
@@ -343,5 +344,3 @@ def start_recorders(sim, args) -> list:
     return recorders
 
 
-def _has_display() -> bool:
-    return sys.platform in ("darwin", "win32") or bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))

@@ -149,7 +149,7 @@ def run_case(task: dict, directory: Path) -> dict:
     """The case's result (a dict of plain data, `artifacts` holding file contents)."""
     from eyesim.core.stalls import hung_status
     from eyesim.grade.checks import judge
-    from eyesim.grade.store import RECORDING
+    from eyesim.paths import CASE_RECORDING as RECORDING
     from eyesim.testing.assertions import describe_exit
 
     case, programs = task["case"], task["programs"]

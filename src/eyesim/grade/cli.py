@@ -98,10 +98,9 @@ def main(args) -> int:
     print(f"eyesim grade: {run.ran} case(s) graded, {run.reused} reused; report: {out / 'index.html'}, "
           f"{out / 'report.json'}, {out / 'junit.xml'}")
     if args.serve:
-        from eyesim.app.record_cli import replay_main
+        from eyesim.web.replay_server import serve_until_interrupted
 
-        args.recording, args.host, args.open, args.no_token = str(out), "127.0.0.1", False, False
-        replay_main(args)
+        serve_until_interrupted(str(out), "127.0.0.1", args.viewer_port, False, report=out)
     if args.require_pass:
         failed = [(s["name"], c["case"], check) for s in summary["students"] for c in s["cases"]
                   for check in c["checks"] if not check["passed"]]

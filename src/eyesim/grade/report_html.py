@@ -9,7 +9,7 @@ import json
 from html import escape
 from pathlib import Path
 
-from eyesim.grade.store import RECORDING
+from eyesim.paths import CASE_RECORDING as RECORDING
 
 STYLE = """
 body { font-family: system-ui, sans-serif; margin: 2em; color: #222; }

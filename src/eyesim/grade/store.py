@@ -13,9 +13,6 @@ import os
 from pathlib import Path
 
 
-RECORDING = "case.mcap"  # a case's MCAP recording among its files (eyesim grade --keep-recordings)
-
-
 def _write_atomically(path: Path, data: bytes) -> None:
     path.parent.mkdir(parents=True, exist_ok=True)
     temporary = path.with_name(path.name + ".partial")

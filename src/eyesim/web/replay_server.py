@@ -16,12 +16,15 @@ import asyncio
 import json
 import logging
 import reprlib
+import secrets
 import shutil
+import sys
 import tempfile
 from pathlib import Path
 
 from aiohttp import WSMsgType, web
 
+from eyesim.paths import CASE_RECORDING as RECORDING
 from eyesim.protocol import channel_schema
 from eyesim.record.recording import Recording, RecordingError
 from eyesim.viewer import messages
@@ -38,7 +41,7 @@ class ReplayServer:
                  report_dir: Path | None = None, require_token: bool = True):
         self.recording = recording
         self.report_dir = None if report_dir is None else Path(report_dir).resolve()
-        self.source = timeline.RecordingTimeline(recording)
+        self.source = timeline.RecordingTimeline(recording, secrets.token_hex(4))
         self.host = host
         self.port = port
         self.access = AccessPolicy(host, token, require_token)
@@ -99,7 +102,7 @@ class ReplayServer:
         (and deleted, when it was uploaded)."""
         previous, self.recording = self.recording, recording
         previous_owned, self._owned = self._owned, owned
-        self.source = timeline.RecordingTimeline(recording)
+        self.source = timeline.RecordingTimeline(recording, secrets.token_hex(4))
         if previous_owned:
             previous.close()
             if previous.path.parent.parent == Path(self._uploads.name):
@@ -134,13 +137,24 @@ class ReplayServer:
     async def _introduce(self, ws: web.WebSocketResponse, cursor: timeline.FrameCursor) -> None:
         """The scene, the timeline and the first frame of the recording shown now."""
         source = self.source
-        await ws.send_str(json.dumps(self.recording.scene))
+        segment = source.segment_at(source.start_us)
+        cursor.segment = segment.index
+        await ws.send_str(json.dumps(source.scene_message(segment)))
         await ws.send_str(json.dumps(messages.timeline("replay", self.recording.path.name, source.start_us / 1e6,
                                                        source.end_us / 1e6)))
         await ws.send_str(await cursor.frame(source, source.start_us))
 
+    @staticmethod
+    def _attachment_name(request: web.Request, name: str) -> str | None:
+        """The attachment of the recording's scene the URL names (`?v=N`: the scene after N edits)."""
+        segment = request.query.get("v", "0")
+        if not (segment.isascii() and segment.isdigit() and len(segment) <= 9):
+            return None
+        return name if int(segment) == 0 else f"{name}@{int(segment)}"
+
     async def _floor_texture(self, request: web.Request) -> web.StreamResponse:
-        data = self.recording.attachment("floor-texture")
+        name = self._attachment_name(request, "floor-texture")
+        data = self.recording.attachment(name) if name else None
         kind = _image_kind(data) if data else None
         if kind is None:
             raise web.HTTPNotFound()
@@ -150,7 +164,8 @@ class ReplayServer:
         kind, number = request.match_info["kind"], request.match_info["id"]
         if kind not in ("robot", "object") or not (number.isascii() and number.isdigit() and len(number) <= 9):
             raise web.HTTPNotFound()
-        data = self.recording.attachment(f"mesh/{kind}/{int(number)}")
+        name = self._attachment_name(request, f"mesh/{kind}/{int(number)}")
+        data = self.recording.attachment(name) if name else None
         if data is None:
             raise web.HTTPNotFound()
         return web.Response(body=data, content_type="application/json")
@@ -214,3 +229,46 @@ async def serve(recording, host: str, port: int, on_ready, report_dir: Path | No
         await asyncio.Event().wait()
     finally:
         await server.stop()
+
+
+def serve_until_interrupted(path: str, host: str, port: int, open_browser: bool, report: Path | None = None,
+                            require_token: bool = True) -> int:
+    """`eyesim replay` (and `eyesim grade --serve`): the viewer over a recording, or over a grading
+    report's recorded cases (`report`, its folder), until Ctrl-C; the command's exit status."""
+    import webbrowser
+
+    from eyesim import platform
+
+    if report is not None:
+        recordings = sorted(report.glob(f"cases/*/*/{RECORDING}"))
+        if not recordings:
+            print(f"eyesim replay: {report} holds no recorded case (cases/*/*/{RECORDING}); grade with "
+                  f"--keep-recordings all, or failed (the default) when a case failed", file=sys.stderr)
+            return 2
+        path = str(recordings[0])
+    try:
+        recording = Recording(path)
+    except RecordingError as error:
+        print(f"eyesim replay: {error}", file=sys.stderr)
+        return 2
+
+    def ready(server) -> None:
+        if report is not None:
+            print(f"EyeSim grading report with replays: {server.report_url}", flush=True)
+        print(f"EyeSim replay of {recording.path.name} ({recording.duration_s:.1f} s): {server.url}", flush=True)
+        if open_browser and platform.has_display():
+            webbrowser.open(server.report_url if report is not None else server.url)
+
+    with recording:
+        try:
+            asyncio.run(serve(recording, host, port, ready, report_dir=report, require_token=require_token))
+        except ValueError as error:  # --no-token on an address other machines reach
+            print(f"eyesim replay: {error}", file=sys.stderr)
+            return 2
+        except OSError as error:
+            print(f"eyesim replay: cannot serve on port {port}: {error.strerror} (try --viewer-port 0)",
+                  file=sys.stderr)
+            return 2
+        except KeyboardInterrupt:
+            pass
+    return 0
