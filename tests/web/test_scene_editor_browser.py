@@ -80,7 +80,8 @@ def test_open_build_edit_undo_save_and_reopen(browser_context, simulator, worksp
     page.wait_for_function("() => window.eyesimEditor.browser.listings >= 1")
     assert viewer.state("robotIds") == [1]
     listed = page.locator("#scene-files button").all_inner_texts()
-    assert "current folder / labs/obstacles4k.sim" in listed and "examples / default.sim" in listed
+    assert "current folder / labs/obstacles4k.sim" in listed and "bundled scenes / default.sim" in listed
+    assert "examples / scenes/maze.sim" in listed  # the examples that come with EyeSim
     shot(page, "1-browser")
 
     # A broken file: its error with file:line, and the arena keeps running.
