@@ -18,6 +18,7 @@ from eyesim.core.stalls import StallWatch
 from eyesim.net.program_server import ProgramServer
 from eyesim.programs.launcher import Launcher
 from eyesim.protocol import generated as g
+from eyesim.scene import SceneError
 from eyesim.scene.sim import MAX_CALL_TIME_MS
 
 DEFAULT_VIEWER_PORT = 8080
@@ -164,7 +165,12 @@ def simulate(args) -> int:
         raise UsageError(f"--wall-limit {args.wall_limit:g}: expected a positive number of seconds")
     mode = args.clock or (DETERMINISTIC if args.headless else REALTIME)
     scene = with_settings(load(args.scene), args)
-    sim = Simulation(scene, Clock(mode, speed))
+    try:
+        sim = Simulation(scene, Clock(mode, speed))
+    except SceneError as error:  # a limit only the built world shows (the models' triangles together)
+        for diagnostic in error.diagnostics:
+            print(diagnostic, file=sys.stderr)
+        raise UsageError(f"cannot build the world of {args.scene or 'the scene'}") from None
     programs: dict[int, str] = {}
     for robot, placement in zip(sim.robots, scene.robots):
         if placement.program:

@@ -4,12 +4,18 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from eyesim.physics.meshes import model_mesh
 from eyesim.physics.objects import SceneObject, add_object
 from eyesim.physics.water import Water, WaterForces, object_water_forces, water_of
 from eyesim.physics.world import Floor, PhysicsWorld, add_floor, add_marker, add_wall, floor_of, new_spec
 from eyesim.robot.build import add_robot
 from eyesim.robot.robot import Robot
-from eyesim.scene.description import Scene
+from eyesim.scene.description import Diagnostic, Location, Scene
+from eyesim.scene.diagnostics import SceneError
+
+# Triangles of all the scene's models together: each placement of a model is drawn (and held by
+# MuJoCo) again, so 50 placements of a million-triangle model took 24 GB. Far above real scenes.
+MAX_SCENE_TRIANGLES = 2_000_000
 
 
 @dataclass
@@ -23,7 +29,9 @@ class BuiltWorld:
 
 
 def build_world(scene: Scene, timestep: float) -> BuiltWorld:
-    """Robots are numbered 1..n and objects 1..m in scene order (the SIM functions' ids)."""
+    """Robots are numbered 1..n and objects 1..m in scene order (the SIM functions' ids). SceneError
+    when the scene's models hold more than MAX_SCENE_TRIANGLES triangles together."""
+    _check_triangles(scene)
     spec = new_spec(timestep)
     floor = floor_of(scene)
     water = water_of(scene)
@@ -47,6 +55,24 @@ def build_world(scene: Scene, timestep: float) -> BuiltWorld:
     for forces in floating:
         forces.bind(world)
     return BuiltWorld(world, floor, water, robots, objects, floating)
+
+
+def _check_triangles(scene: Scene) -> None:
+    """Refuse, at the placement that passes it, a scene whose models are too detailed together."""
+    total = 0
+    placements = [(p, scene.object_types[p.type_name]) for p in scene.objects] + \
+                 [(p, scene.robot_types[p.type_name]) for p in scene.robots]
+    for placement, kind in placements:
+        mesh = model_mesh(kind.model)
+        if mesh is None:
+            continue
+        total += sum(len(part.triangles) for part in mesh.parts)
+        if total > MAX_SCENE_TRIANGLES:
+            times = sum(1 for p, k in placements if k.model == kind.model)
+            where = placement.location or Location(scene.source or "the scene")
+            raise SceneError([Diagnostic("error", where, f"the scene's models have more than {MAX_SCENE_TRIANGLES} "
+                                         f"triangles together, the limit for a scene: {kind.model} is placed "
+                                         f"{times} time(s); use a simpler model or fewer of them", "limit")])
 
 
 def _floating(world: PhysicsWorld, thing: SceneObject) -> WaterForces:
