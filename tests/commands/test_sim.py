@@ -54,3 +54,15 @@ def test_a_scene_without_objects_says_so():
         assert client.call("SIM_GET_OBJECT_COUNT") == (0,)
         with pytest.raises(RemoteError, match="no object 1 .the scene has none."):
             client.call("SIM_GET_OBJECT", 1)
+
+
+@pytest.mark.parametrize("z", [-10_000_000, -50])
+def test_a_place_below_the_floor_is_on_the_floor(z):
+    """A robot or object set 10 km below the floor used to be flung out (z = 309 km a second later)."""
+    with connected_program(scene()) as (sim, client):
+        assert client.call("SIM_SET_ROBOT", 0, 800, 800, z, 0) == (0,)
+        assert client.call("SIM_SET_OBJECT", 1, 1200, 700, z, 0) == (0,)
+        client.call("OS_WAIT", 1000)
+        robot, can = client.call("SIM_GET_ROBOT", 0), client.call("SIM_GET_OBJECT", 1)
+        assert robot[1:3] == (800, 800) and 0 <= robot[3] <= 5
+        assert can[1:3] == (1200, 700) and 0 <= can[3] <= 5

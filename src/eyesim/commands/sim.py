@@ -34,8 +34,10 @@ def _pose(target) -> tuple:
 
 
 def _place(target, x: int, y: int, z: int, phi: int) -> tuple:
+    """z is the height above the floor: a place below it is on it (the floor would otherwise push
+    a body buried 10 km deep out at an absurd speed)."""
     try:
-        target.set_pose(mm(x), mm(y), mm(z), math.radians(phi))
+        target.set_pose(mm(x), mm(y), mm(max(z, 0)), math.radians(phi))
     except (FixedObjectError, MountedRobotError) as error:
         raise CommandError(str(error)) from None
     return (0,)
