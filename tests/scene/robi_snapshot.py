@@ -11,8 +11,10 @@ import json
 import sys
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # tests/, also when run as a script
+from support.corpus import CORPUS  # noqa: E402
+
 HERE = Path(__file__).resolve().parent
-CORPUS = HERE.parents[2] / "shared" / "corpus"
 BUILTIN_ROBOTS = HERE.parents[1] / "src" / "eyesim" / "data" / "robots"
 
 
