@@ -117,7 +117,7 @@ def test_a_program_stopped_at_until_leaves_no_process_behind(windows, tmp_path, 
     token = tmp_path.name  # in the command lines of the program and of forever.exe
     with no_process_left(token):
         result = windows.run("run", "--headless", "--until", "3", "--port", "0", "--program",
-                             f"1={Path(program).name}", cwd=tmp_path)
+                             f"1={Path(program).name}", cwd=tmp_path, timeout=90)
         assert result.returncode == 0, result.stdout + result.stderr
         assert "running" in result.stdout and (tmp_path / "child-running").exists(), result.stdout
         assert "t=3.000" in result.stdout, result.stdout

@@ -78,8 +78,14 @@ class WindowsEyeSim:
             ) -> subprocess.CompletedProcess:
         """`eyesim ARGS` under Wine to its end. Its standard handles are pipes and NUL: Wine 8 gives
         python.exe an invalid handle for a regular file as stdin/stdout/stderr, and it cannot start."""
-        return subprocess.run(self.command(*args), cwd=cwd, env=env or self.env.environment(), stdin=subprocess.DEVNULL,
-                              capture_output=True, text=True, errors="replace", timeout=timeout)
+        try:
+            return subprocess.run(self.command(*args), cwd=cwd, env=env or self.env.environment(),
+                                  stdin=subprocess.DEVNULL, capture_output=True, text=True, errors="replace",
+                                  timeout=timeout)
+        except subprocess.TimeoutExpired as expired:
+            output = b"".join(part or b"" for part in (expired.stdout, expired.stderr)).decode(errors="replace")
+            raise AssertionError(f"`eyesim {' '.join(args)}` did not end within {timeout} s; its output:\n"
+                                 f"{output}") from None
 
     def start(self, *args: str, cwd: Path, env: dict[str, str] | None = None) -> subprocess.Popen:
         """`eyesim ARGS` under Wine, running; stdout and stderr merged into one text pipe."""
@@ -145,15 +151,16 @@ class OutputReader:
         return "".join(self.lines)
 
     def wait_for(self, pattern: str, timeout: float) -> re.Match:
-        """The first match of `pattern` in the output, waiting up to `timeout` s (and failing with the
-        output so far, early when the process has ended its output)."""
-        def found():
+        """The first match of `pattern` in the output, waiting up to `timeout` s; fails with the output
+        so far (at once when the output has ended without it)."""
+        deadline = time.monotonic() + timeout
+        while True:
+            ended = not self._thread.is_alive()
             match = re.search(pattern, self.text())
-            if match is None and not self._thread.is_alive():
+            if match:
+                return match
+            if ended:
                 raise AssertionError(f"the output ended without {pattern!r}:\n{self.text()}")
-            return match
-
-        try:
-            return wait_until(found, timeout, f"{pattern!r} in the output")
-        except AssertionError as error:
-            raise AssertionError(f"{error}\n{self.text()}") from None
+            if time.monotonic() > deadline:
+                raise AssertionError(f"no {pattern!r} in the output within {timeout} s:\n{self.text()}")
+            time.sleep(0.05)
