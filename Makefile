@@ -9,7 +9,7 @@ BIN := $(VENV)/bin
 SOURCES := $(shell find src robios protocol -type f -not -path '*/__pycache__/*' 2>/dev/null) pyproject.toml
 INSTALLED := $(VENV)/.installed
 
-.PHONY: demo test install wheels viewer protocol schemas bench clean
+.PHONY: demo test install lint wheels viewer protocol schemas bench clean
 
 # `make demo PORT=9800 VIEWER_PORT=8081` when the default ports are taken (0: any free port).
 PORT ?= 9797
@@ -18,7 +18,7 @@ VIEWER_PORT ?= 8080
 demo: $(INSTALLED) build/demo
 	$(BIN)/eyesim run --program 1=build/demo --port $(PORT) --viewer-port $(VIEWER_PORT) --open
 
-test: $(INSTALLED) system-packages
+test: $(INSTALLED) system-packages lint
 	$(BIN)/pytest -q
 
 install: $(INSTALLED)
@@ -76,6 +76,10 @@ wheels: $(VENV)/.ziglang
 $(VENV)/.ziglang: $(BIN)/python
 	$(BIN)/pip install --quiet "ziglang>=0.13"
 	touch $@
+
+# Pyflakes-level checks of the Python code (pyproject.toml [tool.ruff]): unused or undefined names.
+lint: $(INSTALLED)
+	$(BIN)/ruff check src tests bench tools protocol
 
 # Rebuild the browser bundle committed in src/eyesim/web/static (needs Node.js and npm).
 viewer:

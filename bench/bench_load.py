@@ -19,7 +19,6 @@ import os
 import socket
 import subprocess
 import sys
-import time
 
 from common import BENCH, build_c, print_table, start_simulator, stop, write_results
 

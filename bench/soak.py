@@ -22,7 +22,6 @@ import json
 import os
 import random
 import re
-import socket
 import struct
 import subprocess
 import sys
@@ -37,7 +36,7 @@ sys.path.insert(0, str(BENCH.parent / "tests"))
 from support.client import ProgramClient, RemoteError  # noqa: E402
 from support.memory import rss_mb  # noqa: E402
 
-from eyesim.protocol import FrameDecoder, encode_frame, encode_payload, generated as g  # noqa: E402
+from eyesim.protocol import encode_frame, encode_payload, generated as g  # noqa: E402
 
 BUILD = BENCH / "results" / "build"
 HOST = "127.0.0.1"

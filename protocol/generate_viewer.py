@@ -12,7 +12,6 @@ Used by protocol/generate.py (`make protocol`; `--check` reports stale outputs).
 from __future__ import annotations
 
 import json
-import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent

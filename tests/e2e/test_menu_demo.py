@@ -3,7 +3,6 @@ soft keys say: drive, turn, beep, end; its LCD shows the title, the sensors, the
 
 import math
 import subprocess
-from pathlib import Path
 
 import numpy as np
 from PIL import Image

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import logging
 import os
-import socket
 import struct
 import time
 
@@ -23,7 +22,7 @@ from support.memory import rss_mb
 from support.simulator import running_simulation
 from support.worlds import arena_scene, example_robot
 
-from eyesim.protocol import FrameDecoder, encode_frame, encode_payload, generated as g
+from eyesim.protocol import encode_frame, encode_payload, generated as g
 from eyesim.scene.description import Wall
 
 INT_MAX, INT_MIN, U32_MAX = 2**31 - 1, -(2**31), 2**32 - 1

@@ -3,7 +3,6 @@ tracking with the camera (examples/programs, examples/scenes), built and run as 
 
 import math
 import subprocess
-from pathlib import Path
 
 import numpy as np
 from PIL import Image

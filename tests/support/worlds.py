@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from pathlib import Path
 
 from eyesim.scene import builtins, load_object_type, load_robot_type
 from eyesim.scene.description import ObjectPlacement, Pose, RobotPlacement, RobotType, Scene, Wall, World

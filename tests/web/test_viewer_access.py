@@ -11,7 +11,6 @@ import time
 from pathlib import Path
 
 import aiohttp
-import numpy as np
 import pytest
 from PIL import Image
 

@@ -9,7 +9,7 @@ from eye._library import C
 from eye._printf import printf
 from eye._values import Buffer, c_format, input_buffer
 from eye.constants import CAM1MP, CAM1MP_X, CAM1MP_Y, CAM5MP, CAM5MP_X, CAM5MP_Y, CAMHD, CAMHD_X, CAMHD_Y, \
-    CUSTOM, QQVGA, QQVGA_X, QQVGA_Y, QVGA, QVGA_X, QVGA_Y, VGA, VGA_X, VGA_Y
+    QQVGA, QQVGA_X, QQVGA_Y, QVGA, QVGA_X, QVGA_Y, VGA, VGA_X, VGA_Y
 
 __all__ = ["LCDPrintf", "LCDSetPrintf", "LCDGetPos", "LCDImageSize", "LCDImageStart", "LCDImage", "LCDImageGray",
            "LCDImageBinary"]
