@@ -64,7 +64,7 @@ def simulator(tmp_path):
     (tmp_path / "crash.c").write_text(CRASH)
     (tmp_path / "src").mkdir()
     (tmp_path / "src" / "broken.c").write_text(BROKEN)
-    (tmp_path / "traceback.py").write_text("print('before')\nraise RuntimeError('the program gave up')\n")
+    (tmp_path / "traceback.py").write_text("from eye import *\nprint('before')\nraise RuntimeError('the program gave up')\n")
     with simulator_with_viewer(cwd=tmp_path) as (process, url):
         yield url, tmp_path
 

@@ -15,24 +15,57 @@ def executable(path, text="#!/bin/sh\n"):
     return path
 
 
-def test_the_listing_holds_programs_and_sources_and_skips_the_rest(tmp_path):
-    executable(tmp_path / "drive")
-    (tmp_path / "demo.py").write_text("print(1)\n")
+ROBOT_PY = "from eye import *\nLCDPrintf('hello')\n"
+ROBOT_C = '#include "eyebot.h"\nint main(void) { return 0; }\n'
+
+
+def test_the_listing_holds_robot_programs_and_sources_and_skips_the_rest(tmp_path):
+    """What a student would run: robot programs, their sources and compiled ones; not the libraries,
+    tests, scripts, build output, caches and environments of a source tree started in."""
+    (tmp_path / "drive").write_bytes(b"\x7fELF\x02\x01\x01" + b"\0" * 64 + b"libeyesim.so\0")
+    (tmp_path / "drive").chmod(0o755)
+    (tmp_path / "demo.py").write_text(ROBOT_PY)
+    executable(tmp_path / "run_me.py", "#!/usr/bin/env python3\nimport eye\n")
     (tmp_path / "src").mkdir()
-    (tmp_path / "src" / "wall.c").write_text("int main(void) { return 0; }\n")
+    (tmp_path / "src" / "wall.c").write_text(ROBOT_C)
     (tmp_path / "src" / "arm.cpp").write_text("int main() { return 0; }\n")
+    (tmp_path / "src" / "helpers.c").write_text('#include "eyebot.h"\nint twice(int x) { return 2 * x; }\n')
+    (tmp_path / "helper.py").write_text("def twice(x):\n    return 2 * x\n")  # imported, not run
     (tmp_path / "notes.txt").write_text("not a program\n")
+    executable(tmp_path / "tool.sh")  # a shell script drives no robot
+    executable(tmp_path / "other").write_bytes(b"\x7fELF" + b"\0" * 64)  # not linked with RoBIOS
     executable(tmp_path / "libthing.so")
-    executable(tmp_path / ".hidden" / "secret")
-    executable(tmp_path / ".venv" / "bin" / "python")
-    executable(tmp_path / "__pycache__" / "x")
-    executable(tmp_path / "a" / "b" / "c" / "d" / "deep")  # four folders down: listed
-    executable(tmp_path / "a" / "b" / "c" / "d" / "e" / "deeper")  # five: not
+    for name in ("test_drive.py", "drive_test.py", "conftest.py"):
+        (tmp_path / "tests").mkdir(exist_ok=True)
+        (tmp_path / "tests" / name).write_text(ROBOT_PY)
+    (tmp_path / "tests" / "programs").mkdir()
+    (tmp_path / "tests" / "programs" / "square.c").write_text(ROBOT_C)
+    for folder in (".hidden", "build", "dist", "__pycache__", "node_modules", "venv", "target",
+                   "thing.egg-info", "CMakeFiles"):
+        (tmp_path / folder).mkdir()
+        (tmp_path / folder / "robot.py").write_text(ROBOT_PY)
+    (tmp_path / "pkg").mkdir()  # a Python package: a library
+    (tmp_path / "pkg" / "__init__.py").write_text("")
+    (tmp_path / "pkg" / "robot.py").write_text(ROBOT_PY)
+    (tmp_path / "env2").mkdir()  # a virtual environment under another name
+    (tmp_path / "env2" / "pyvenv.cfg").write_text("home = /usr\n")
+    (tmp_path / "env2" / "robot.py").write_text(ROBOT_PY)
+    (tmp_path / "a" / "b" / "c" / "d").mkdir(parents=True)
+    (tmp_path / "a" / "b" / "c" / "d" / "deep.py").write_text(ROBOT_PY)  # four folders down: listed
+    (tmp_path / "a" / "b" / "c" / "d" / "e").mkdir()
+    (tmp_path / "a" / "b" / "c" / "d" / "e" / "deeper.py").write_text(ROBOT_PY)  # five: not
     listed = program_files.list_files([Root("run folder", tmp_path)])
-    assert {(f["path"], f["kind"]) for f in listed} == {
-        ("drive", "executable"), ("demo.py", "python"), ("src/wall.c", "c"), ("src/arm.cpp", "c++"),
-        ("a/b/c/d/deep", "executable")}
+    assert [(f["path"], f["kind"]) for f in listed] == [
+        ("demo.py", "python"), ("drive", "executable"), ("run_me.py", "python"), ("a/b/c/d/deep.py", "python"),
+        ("src/arm.cpp", "c++"), ("src/wall.c", "c"), ("tests/programs/square.c", "c")]
     assert all(f["root"] == 0 for f in listed)
+
+
+def test_the_listing_is_capped(tmp_path, monkeypatch):
+    monkeypatch.setattr(program_files, "MAX_FILES", 5)
+    for n in range(8):
+        (tmp_path / f"robot{n}.py").write_text(ROBOT_PY)
+    assert len(program_files.list_files([Root("run folder", tmp_path)])) == 5
 
 
 def test_resolve_names_a_file_inside_its_root_or_says_why_not(tmp_path):

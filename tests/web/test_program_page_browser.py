@@ -51,7 +51,7 @@ def folder(tmp_path):
     (tmp_path / "drive.c").write_text(DRIVE)
     (tmp_path / "broken.c").write_text(BROKEN)
     (tmp_path / "crash.c").write_text(CRASH)
-    (tmp_path / "give_up.py").write_text("print('thinking')\nraise RuntimeError('the program gave up')\n")
+    (tmp_path / "give_up.py").write_text("from eye import *\nprint('thinking')\nraise RuntimeError('the program gave up')\n")
     return tmp_path
 
 
