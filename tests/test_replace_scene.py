@@ -42,7 +42,7 @@ def test_a_new_scene_replaces_robots_disconnects_programs_and_time_goes_on():
         on_sim_thread(sim, lambda s: s.replace_scene(bigger))
         assert [r.id for r in sim.robots] == [1, 2] and sim.floor.width == pytest.approx(3.0)
         assert sim.scene is bigger and sim.time_us >= before
-        assert {"type": "new-scene"} in events
+        assert {"type": "new-scene", "opened": True} in events
         assert not sim.sessions
         with pytest.raises((ConnectionError, OSError)):
             client.call("OS_GET_COUNT")

@@ -76,7 +76,8 @@ def test_scene_builds(viewer):
     }
     assert viewer.state("robotIds") == [ROBOT_ID]
     assert robot_panel(viewer.page, ROBOT_ID).locator(".robot-name").text_content() == ROBOT_NAME
-    assert viewer.page.locator(".world-labels .robot-label").all_text_contents() == [ROBOT_NAME]
+    # labelled with its id and the program it runs (the fake server says demo.py started)
+    assert viewer.page.locator(".world-labels .robot-label").all_text_contents() == [f"{ROBOT_ID} · demo.py"]
 
 
 def test_robot_pose_follows_snapshots(viewer):

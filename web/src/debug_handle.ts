@@ -74,6 +74,16 @@ export interface EyesimViewerDebug {
   framesShown(): number;
   /** what the plot panel draws: signal ids and their number of points */
   plotted(): { id: string; points: number }[];
+  /** the plot's legend entries and its hover readout, as they show, and the signals drawn as steps */
+  plotShown(): { legend: string[]; readout: string; stepped: string[] };
+  /** where a time is on the plot (page CSS pixels, the chart's middle height); null with no chart */
+  plotPosition(time: number): { x: number; y: number } | null;
+  /** the floor image's URL (null: none) and whether it has loaded */
+  floorTexture(): { url: string | null; loaded: boolean };
+  /** each robot's label in the 3D view, by id */
+  robotLabels(): Record<number, string>;
+  /** how many robot panels are open side by side */
+  panelColumns(): number;
   /** the plot panel's note on why a click in the 3D view added nothing ("" if none) */
   plotNotice(): string;
   /** the last video made with the Video button: its size in bytes, or null */
@@ -148,6 +158,11 @@ export function installDebugHandle(viewer: Viewer): void {
     timeline: () => viewer.timeline.current,
     framesShown: () => viewer.framesShown,
     plotted: () => viewer.plots.plottedSeries(),
+    plotShown: () => viewer.plots.shown(),
+    plotPosition: (time) => viewer.plots.pagePosition(time),
+    robotLabels: () => viewer.world.robotLabels(),
+    floorTexture: () => ({ ...viewer.world.floorTexture }),
+    panelColumns: () => viewer.panels.columns,
     plotNotice: () => viewer.plots.noticeText(),
     lastVideoSize: () => viewer.video.last?.size ?? null,
     lastVideo: async () => {

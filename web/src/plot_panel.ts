@@ -1,23 +1,61 @@
 // Plots of recorded or live signals (pose, odometry, speeds, encoders, battery, PSD readings) against
 // simulation time, drawn with uPlot; a line marks the timeline's time. Signals come from the server
 // (`signals`, `series`); pick them from the list or by clicking a robot or a PSD beam in the 3D view.
+// The legend sits above the chart (never clipped); hovering reads out the time and every signal's
+// value there; a click moves the timeline to that time; the plot exports as PNG and CSV. Readings a
+// program took now and then (PSDs) and other sparse signals are drawn as steps: a value holds until
+// the next one, rather than a slope that was never measured.
 
 import uPlot from "uplot";
 import "uplot/dist/uPlot.min.css";
 import { element } from "./dom";
 import type { BrowserCommand, Series, SignalInfo } from "./protocol";
+import { download, timedName } from "./snapshot_files";
 
 const COLORS = ["#1e63c8", "#e53935", "#2e9e44", "#f39c12", "#8e44ad", "#16a085", "#d35400", "#2c3e50"];
 /** While following a live run the plotted series are fetched again this often (ms). */
 const LIVE_REFRESH_MS = 1000;
 const CURSOR_COLOR = "#c0392b";
+/** A series whose samples are further apart than this (s, median) is drawn as steps. */
+const SPARSE_INTERVAL = 0.1;
+/** A press and release this close (CSS px) is a click (it moves the timeline), not a zoom drag. */
+const CLICK_SLOP = 4;
+
+/** The value a series has at time t: its last sample at or before t (null before its first). */
+function valueAt(series: Series, t: number): number | null {
+  const { times, values } = series;
+  let low = 0;
+  let high = times.length - 1;
+  if (high < 0 || times[0] > t) return null;
+  while (low < high) {
+    const middle = (low + high + 1) >> 1;
+    if (times[middle] <= t) low = middle;
+    else high = middle - 1;
+  }
+  return values[low];
+}
+
+function median(numbers: number[]): number {
+  if (numbers.length === 0) return 0;
+  const sorted = [...numbers].sort((a, b) => a - b);
+  return sorted[sorted.length >> 1];
+}
+
+function formatValue(value: number): string {
+  const size = Math.abs(value);
+  return size >= 1000 || size === 0 ? value.toFixed(0) : size >= 10 ? value.toFixed(1) : value.toFixed(3);
+}
 
 export class PlotPanel {
   private readonly list = element("div", "plot-signals");
   private readonly chartBox = element("div", "plot-chart");
-  private readonly hint = element("p", "plot-hint", "Pick signals below, or click a robot or a PSD beam in the 3D view.");
+  private readonly legend = element("div", "plot-legend");
+  private readonly readout = element("div", "plot-readout");
+  private readonly hint = element("p", "plot-hint", "Pick signals on the right, or click a robot or a PSD beam in the 3D view.");
   /** why a click in the 3D view added nothing */
   private readonly notice = element("span", "plot-notice");
+  private readonly pngButton = element("button", "plot-png", "PNG");
+  private readonly csvButton = element("button", "plot-csv", "CSV");
   private signals: SignalInfo[] = [];
   private readonly selected = new Set<string>();
   private plot: uPlot | null = null;
@@ -25,6 +63,8 @@ export class PlotPanel {
   private time = 0;
   private refresh: number | null = null;
   private requested = false;
+  private readonly seekListeners: ((time: number) => void)[] = [];
+  private pressedAt: { x: number; y: number } | null = null;
 
   constructor(
     private readonly root: HTMLElement,
@@ -32,20 +72,39 @@ export class PlotPanel {
   ) {
     const header = element("header", "plot-header");
     const clear = element("button", "plot-clear", "Clear");
-    clear.type = "button";
+    clear.type = this.pngButton.type = this.csvButton.type = "button";
+    clear.title = "Remove every signal from the plot";
+    this.pngButton.title = "Download the plot as a PNG image";
+    this.csvButton.title = "Download the plotted values as CSV (time, then one column per signal)";
     clear.addEventListener("click", () => {
       this.selected.clear();
       this.showList();
       this.fetch();
     });
-    header.append(element("h2", "plot-title", "Plots"), clear, this.notice);
+    this.pngButton.addEventListener("click", () => {
+      const png = this.png();
+      if (png) download(png, timedName("plot", this.time, "png"));
+    });
+    this.csvButton.addEventListener("click", () => {
+      download(new Blob([this.csv()], { type: "text/csv" }), timedName("plot", this.time, "csv"));
+    });
+    header.append(element("h2", "plot-title", "Plots"), clear, this.pngButton, this.csvButton, this.notice);
+    const main = element("div", "plot-main");
+    this.readout.setAttribute("aria-live", "off");
+    main.append(this.legend, this.chartBox, this.readout);
     this.chartBox.append(this.hint);
-    root.append(header, this.chartBox, this.list);
+    root.append(header, main, this.list);
     new ResizeObserver(() => this.resize()).observe(this.chartBox);
+    this.showButtons();
   }
 
   get visible(): boolean {
     return !this.root.hidden;
+  }
+
+  /** `listener(time)` when a click on the chart asks to show that time. */
+  onSeek(listener: (time: number) => void): void {
+    this.seekListeners.push(listener);
   }
 
   /** Opens or closes the panel; opening asks for the signals there are. */
@@ -53,6 +112,11 @@ export class PlotPanel {
     this.root.hidden = !open;
     if (open && !this.requested) this.requested = this.send({ type: "signals" });
     if (open) this.resize();
+  }
+
+  /** The list's boxes ask the simulator for series: off while it is away. */
+  setEnabled(enabled: boolean): void {
+    for (const box of this.list.querySelectorAll("input")) box.disabled = !enabled;
   }
 
   /** Keeps fetching the series while a live run goes on (false: a recording, nothing changes). */
@@ -123,6 +187,76 @@ export class PlotPanel {
     return this.plotted.map((s) => ({ id: s.id, points: s.times.length }));
   }
 
+  /** The legend's entries, the hover readout, and the ids of the series drawn as steps (for tests). */
+  shown(): { legend: string[]; readout: string; stepped: string[] } {
+    const legend = [...this.legend.querySelectorAll(".u-series")]
+      .map((entry) => entry.querySelector(".u-label")?.textContent ?? "")
+      .filter((label) => label !== "t (s)");
+    const stepped = this.plotted.filter((s) => this.stepped(s)).map((s) => s.id);
+    return { legend, readout: this.readout.textContent ?? "", stepped };
+  }
+
+  /** Where a time is on the page, in CSS pixels: (x, y of the chart's middle); null with no chart. */
+  pagePosition(time: number): { x: number; y: number } | null {
+    if (!this.plot) return null;
+    const over = this.plot.over.getBoundingClientRect();
+    return { x: over.left + this.plot.valToPos(time, "x"), y: over.top + over.height / 2 };
+  }
+
+  /** The plotted values as CSV: a time column, then one column per signal (its label and unit),
+   * a row for every time any of them has a sample; empty where a signal has none. */
+  csv(): string {
+    const times = [...new Set(this.plotted.flatMap((s) => s.times))].sort((a, b) => a - b);
+    const quote = (text: string) => (/[",\n]/.test(text) ? `"${text.replaceAll('"', '""')}"` : text);
+    const header = ["t (s)", ...this.plotted.map((s) => {
+      const info = this.info(s.id);
+      return `${info?.label ?? s.id} (${info?.unit ?? ""})`;
+    })];
+    const indices = this.plotted.map((s) => new Map(s.times.map((t, i) => [t, s.values[i]])));
+    const rows = times.map((t) => [String(t), ...indices.map((index) => (index.has(t) ? String(index.get(t)) : ""))]);
+    return [header.map(quote), ...rows].map((row) => row.join(",")).join("\n") + "\n";
+  }
+
+  /** The chart with its legend as a PNG data URL, or null with nothing plotted. */
+  png(): string | null {
+    if (!this.plot) return null;
+    const chart = this.plot.ctx.canvas;
+    const ratio = chart.width / Math.max(1, this.plot.width);
+    const legendHeight = Math.round(24 * ratio);
+    const canvas = document.createElement("canvas");
+    canvas.width = chart.width;
+    canvas.height = chart.height + legendHeight;
+    const context = canvas.getContext("2d");
+    if (!context) return null;
+    context.fillStyle = "#ffffff";
+    context.fillRect(0, 0, canvas.width, canvas.height);
+    context.font = `${Math.round(13 * ratio)}px system-ui, sans-serif`;
+    context.textBaseline = "middle";
+    let x = 8 * ratio;
+    this.plotted.forEach((s, i) => {
+      context.fillStyle = COLORS[i % COLORS.length];
+      context.fillRect(x, legendHeight / 2 - 2 * ratio, 14 * ratio, 4 * ratio);
+      x += 18 * ratio;
+      context.fillStyle = "#1f2933";
+      const label = `${this.info(s.id)?.label ?? s.id} (${this.info(s.id)?.unit ?? ""})`;
+      context.fillText(label, x, legendHeight / 2);
+      x += context.measureText(label).width + 16 * ratio;
+    });
+    context.drawImage(chart, 0, legendHeight);
+    return canvas.toDataURL("image/png");
+  }
+
+  private info(id: string): SignalInfo | undefined {
+    return this.signals.find((s) => s.id === id);
+  }
+
+  /** Readings taken now and then (a PSD read by the program) or samples far apart: steps. */
+  private stepped(series: Series): boolean {
+    if (/\/psd\.\d+$/.test(series.id)) return true;
+    const gaps = series.times.slice(1).map((t, i) => t - series.times[i]);
+    return median(gaps) > SPARSE_INTERVAL;
+  }
+
   private fetch(): void {
     if (this.signals.length === 0) return; // showSignals fetches once the list is in
     if (this.selected.size === 0) {
@@ -159,9 +293,16 @@ export class PlotPanel {
     this.hint.hidden = this.selected.size > 0;
   }
 
+  private showButtons(): void {
+    this.pngButton.disabled = this.csvButton.disabled = this.plotted.length === 0;
+  }
+
   private draw(): void {
     this.plot?.destroy();
     this.plot = null;
+    this.legend.replaceChildren();
+    this.readout.textContent = "";
+    this.showButtons();
     if (this.plotted.length === 0 || this.root.hidden) return;
     // uPlot wants one time axis: the union of the series' times, with gaps where one has no sample.
     const times = [...new Set(this.plotted.flatMap((s) => s.times))].sort((a, b) => a - b);
@@ -171,11 +312,10 @@ export class PlotPanel {
       s.times.forEach((t, i) => (column[index.get(t)!] = s.values[i]));
       return column;
     });
-    const info = (id: string) => this.signals.find((s) => s.id === id);
-    const units = [...new Set(this.plotted.map((s) => info(s.id)?.unit ?? ""))];
+    const units = [...new Set(this.plotted.map((s) => this.info(s.id)?.unit ?? ""))];
+    const steps = uPlot.paths.stepped!({ align: 1 });
     const options: uPlot.Options = {
-      width: Math.max(200, this.chartBox.clientWidth),
-      height: Math.max(120, this.chartBox.clientHeight),
+      ...this.size(),
       scales: { x: { time: false } },
       axes: [
         { label: "t (s)" },
@@ -184,16 +324,52 @@ export class PlotPanel {
       series: [
         { label: "t (s)" },
         ...this.plotted.map((s, i) => ({
-          label: info(s.id)?.label ?? s.id,
-          scale: info(s.id)?.unit ?? "",
+          label: `${this.info(s.id)?.label ?? s.id} (${this.info(s.id)?.unit ?? ""})`,
+          scale: this.info(s.id)?.unit ?? "",
           stroke: COLORS[i % COLORS.length],
+          width: 1.5,
           spanGaps: true,
           points: { show: false },
+          ...(this.stepped(s) ? { paths: steps } : {}),
         })),
       ],
-      hooks: { draw: [(u: uPlot) => this.drawCursor(u)] },
+      // The legend names the signals above the chart; the readout below says the values at the pointer.
+      legend: { show: true, live: false, mount: (_: uPlot, legend: HTMLElement) => this.legend.append(legend) },
+      hooks: {
+        draw: [(u: uPlot) => this.drawCursor(u)],
+        setCursor: [(u: uPlot) => this.showReadout(u)],
+      },
     };
     this.plot = new uPlot(options, [times, ...columns] as uPlot.AlignedData, this.chartBox);
+    this.plot.over.addEventListener("pointerdown", (event) => (this.pressedAt = { x: event.clientX, y: event.clientY }));
+    this.plot.over.addEventListener("pointerup", (event) => this.clicked(event));
+    this.plot.over.addEventListener("pointerleave", () => (this.readout.textContent = ""));
+    this.plot.over.title = "Click to show this time";
+  }
+
+  /** The time and every plotted signal's value under the pointer. */
+  private showReadout(u: uPlot): void {
+    const left = u.cursor.left;
+    if (left === undefined || left < 0) {
+      this.readout.textContent = "";
+      return;
+    }
+    const t = u.posToVal(left, "x");
+    const parts = this.plotted.map((s) => {
+      const value = valueAt(s, t);
+      const info = this.info(s.id);
+      return `${info?.label ?? s.id} ${value === null ? "–" : formatValue(value)} ${info?.unit ?? ""}`.trim();
+    });
+    this.readout.textContent = [`t ${t.toFixed(2)} s`, ...parts].join("   ");
+  }
+
+  private clicked(event: PointerEvent): void {
+    const pressed = this.pressedAt;
+    this.pressedAt = null;
+    if (!this.plot || !pressed || Math.hypot(event.clientX - pressed.x, event.clientY - pressed.y) > CLICK_SLOP) return;
+    const over = this.plot.over.getBoundingClientRect();
+    const time = this.plot.posToVal(event.clientX - over.left, "x");
+    if (Number.isFinite(time)) for (const listener of this.seekListeners) listener(time);
   }
 
   private drawCursor(u: uPlot): void {
@@ -211,8 +387,12 @@ export class PlotPanel {
     context.restore();
   }
 
+  private size(): { width: number; height: number } {
+    return { width: Math.max(200, this.chartBox.clientWidth), height: Math.max(100, this.chartBox.clientHeight) };
+  }
+
   private resize(): void {
     if (!this.plot || this.root.hidden) return;
-    this.plot.setSize({ width: Math.max(200, this.chartBox.clientWidth), height: Math.max(120, this.chartBox.clientHeight) });
+    this.plot.setSize(this.size());
   }
 }

@@ -39,6 +39,11 @@ export class ProgramCatalog {
     this.listeners.add(listener);
   }
 
+  /** Another scene: its robots' programs are not known until the list is read again. */
+  forgetRobots(): void {
+    this.overview = { ...this.overview, robots: [] };
+  }
+
   /** Reads the list again (after a compile, a new scene, or on request). */
   refresh(): Promise<void> {
     this.loading ??= call("GET /api/programs")
@@ -71,6 +76,8 @@ export class ProgramControls {
   private readonly compilerOutput = element("div", "compiler-output");
   private enabled = true;
   private running = false;
+  /** a file chosen in the list by hand (else the list shows the robot's own program) */
+  private chosen = false;
 
   constructor(
     private readonly robot: number,
@@ -92,7 +99,10 @@ export class ProgramControls {
     this.element.append(row, buttons, this.message, this.compilerOutput);
     this.compilerOutput.hidden = true;
 
-    this.choice.addEventListener("change", () => this.updateButtons());
+    this.choice.addEventListener("change", () => {
+      this.chosen = this.choice.value !== "";
+      this.updateButtons();
+    });
     this.refreshButton.addEventListener("click", () => void catalog.refresh());
     this.startButton.addEventListener("click", () => void this.act("start"));
     this.stopButton.addEventListener("click", () => void this.act("stop"));
@@ -129,6 +139,7 @@ export class ProgramControls {
     const option = [...this.choice.options].find((o) => o.dataset.path === path);
     if (!option) return false;
     this.choice.value = option.value;
+    this.chosen = true;
     this.updateButtons();
     return true;
   }
@@ -139,7 +150,7 @@ export class ProgramControls {
 
   private showFiles(): void {
     this.element.hidden = !this.catalog.available;
-    const previous = this.choice.value || this.currentProgramKey();
+    const previous = (this.chosen && this.choice.value) || this.currentProgramKey();
     const groups = this.catalog.roots.map((root, index) => {
       const group = element("optgroup");
       group.label = `${root.name}: ${root.path}`;

@@ -30,6 +30,8 @@ export class RobotIoView {
   private readonly analogInputs: HTMLInputElement[] = [];
   private readonly battery = element("span", "battery");
   private io: IoMessage | null = null;
+  private readonly remoteBox = element("div", "ir-remote");
+  private enabled = true;
 
   constructor(private readonly send: (command: RobotCommand) => void) {
     const summary = element("summary", "", "Remote, serial, I/O");
@@ -62,6 +64,17 @@ export class RobotIoView {
     });
   }
 
+  /** Off while disconnected or replaying: the buttons and fields would send nowhere. */
+  setEnabled(enabled: boolean): void {
+    for (const control of this.element.querySelectorAll<HTMLButtonElement | HTMLInputElement>(
+      ".ir-button, .serial-input, .digital-line, .analog-channel input",
+    )) {
+      control.disabled = !enabled;
+    }
+    this.remoteBox.tabIndex = enabled ? 0 : -1;
+    this.enabled = enabled;
+  }
+
   showBattery(volts: number): void {
     this.battery.textContent = `battery ${volts.toFixed(2)} V`;
   }
@@ -75,7 +88,7 @@ export class RobotIoView {
   }
 
   private remote(): HTMLElement {
-    const box = element("div", "ir-remote");
+    const box = this.remoteBox;
     box.tabIndex = 0;
     box.title = "IR remote: click the buttons, or focus here and type 0-9, arrows, Enter (OK), R G Y B, P";
     for (const [code, label] of REMOTE) {
@@ -86,6 +99,7 @@ export class RobotIoView {
       box.append(button);
     }
     box.addEventListener("keydown", (event) => {
+      if (!this.enabled) return;
       const code = /^[0-9]$/.test(event.key) ? event.key : KEYBOARD[event.key] ?? KEYBOARD[event.key.toLowerCase()];
       if (!code) return;
       event.preventDefault();

@@ -87,6 +87,13 @@ export class RobotPanel {
     this.showProgram(null);
   }
 
+  /** Keys, touches, the remote, serial and I/O, and the program controls: only while connected live. */
+  setEnabled(enabled: boolean): void {
+    this.lcd.setEnabled(enabled);
+    this.programs.setEnabled(enabled);
+    this.io.setEnabled(enabled);
+  }
+
   /** Open (everything shows) or folded to its header, as one line of a long list. */
   setExpanded(expanded: boolean): void {
     this.element.classList.toggle("expanded", expanded);

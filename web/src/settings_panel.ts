@@ -76,6 +76,11 @@ export class SettingsPanel {
     this.element.hidden = true;
   }
 
+  /** Apply needs the simulator: off while it is away. */
+  setEnabled(enabled: boolean): void {
+    this.apply.disabled = !enabled;
+  }
+
   private show(settings: RunSettings): void {
     this.shown = settings;
     this.vis.checked = settings.vis;

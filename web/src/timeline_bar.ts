@@ -1,5 +1,6 @@
 // The timeline: play, pause, step and scrub through a recording, or back over the live run's recent
-// history (the server keeps it); the state at the chosen time arrives as a `frame`.
+// history (the server keeps it); the state at the chosen time arrives as a `frame`. Live, Step ›
+// runs the simulation itself on by one physics step (Shift: 10 ms) and pauses it.
 
 import type { BrowserCommand, FrameMessage, StatusMessage, TimelineMessage } from "./protocol";
 
@@ -24,6 +25,8 @@ function find<T extends HTMLElement>(root: HTMLElement, selector: string): T {
 /** The step buttons move by this (s); with Shift by STEP_LONG. */
 const STEP = 0.05;
 const STEP_LONG = 1;
+/** Live, Step › with Shift runs the simulation on by this (s); without, one physics step. */
+const LIVE_STEP_LONG = 0.01;
 const SLIDER_STEPS = 10000;
 
 export class TimelineBar {
@@ -60,7 +63,7 @@ export class TimelineBar {
 
     this.play.addEventListener("click", () => this.togglePlay());
     this.back.addEventListener("click", (event) => this.step(event.shiftKey ? -STEP_LONG : -STEP));
-    this.forward.addEventListener("click", (event) => this.step(event.shiftKey ? STEP_LONG : STEP));
+    this.forward.addEventListener("click", (event) => this.stepForward(event.shiftKey));
     this.speedSelect.addEventListener("change", () => (this.state.speed = Number(this.speedSelect.value) || 1));
     this.slider.addEventListener("input", () => {
       this.dragging = true;
@@ -162,6 +165,15 @@ export class TimelineBar {
     this.setPlaying(!this.state.playing);
   }
 
+  /** Live: one physics step of the simulation (Shift: 10 ms), which then pauses; else 0.05 s (1 s) on. */
+  private stepForward(long: boolean): void {
+    if (this.state.mode !== "live") {
+      this.step(long ? STEP_LONG : STEP);
+      return;
+    }
+    this.send(long ? { type: "step", seconds: LIVE_STEP_LONG } : { type: "step" });
+  }
+
   private step(seconds: number): void {
     this.state.playing = false;
     this.seek(this.state.time + seconds);
@@ -195,6 +207,10 @@ export class TimelineBar {
     this.play.textContent = mode === "live" ? "Look back" : playing ? "Pause" : "Play";
     this.live.hidden = mode === "replay";
     this.live.classList.toggle("active", mode === "live");
+    this.forward.title = mode === "live"
+      ? "Run the simulation one physics step on, then pause it (Shift: 10 ms)"
+      : "Step forward 0.05 s (Shift: 1 s)";
+    this.back.title = mode === "live" ? "Look back 0.05 s (Shift: 1 s)" : "Step back 0.05 s (Shift: 1 s)";
     const span = end - start;
     if (!this.dragging) this.slider.value = String(span > 0 ? Math.round(((time - start) / span) * SLIDER_STEPS) : 0);
     this.label.textContent = `${time.toFixed(2)} s / ${end.toFixed(2)} s`;

@@ -1,4 +1,5 @@
-// The toolbar: pause/resume, speed and reset, the simulation's clock, and the connection state.
+// The toolbar: the scene's name, pause/resume, speed and reset, the simulation's clock, and the
+// connection state.
 
 import type { ConnectionState } from "./connection";
 import type { BrowserCommand, StatusMessage } from "./protocol";
@@ -23,7 +24,11 @@ export class Toolbar {
   private readonly rate: HTMLElement;
   private readonly clock: HTMLElement;
   private readonly connection: HTMLElement;
+  private readonly sceneName: HTMLElement;
+  /** what only a live run has: hidden in a replay */
+  private readonly liveOnly: HTMLElement[];
   private replay = false;
+  private state: ConnectionState = "connecting";
   /** Shows a speed the server reports that is not one of the choices (e.g. "max"). */
   private readonly otherSpeed = document.createElement("option");
   private paused = false;
@@ -36,6 +41,9 @@ export class Toolbar {
     this.rate = find(root, "#real-time-factor");
     this.clock = find(root, "#clock");
     this.connection = find(root, "#connection");
+    this.sceneName = find(root, "#scene-name");
+    this.liveOnly = [this.pause.parentElement ?? this.pause, this.time, this.rate,
+      find(root, "#settings-toggle"), find(root, "#robot-editor-link")];
     this.otherSpeed.disabled = true;
 
     this.pause.addEventListener("click", () => send({ type: this.paused ? "resume" : "pause" }));
@@ -63,18 +71,24 @@ export class Toolbar {
   }
 
   showConnection(state: ConnectionState): void {
+    this.state = state;
     this.connection.textContent = CONNECTION_TEXT[state];
     this.connection.dataset.state = state;
     for (const control of [this.pause, this.speed, this.reset]) control.disabled = state !== "open" || this.replay;
   }
 
-  /** A replay has no simulation to pause, speed up or reset: those controls go. */
+  /** The running scene's file name (a replay: the recording's scene). */
+  showSceneName(name: string | undefined): void {
+    this.sceneName.textContent = name ?? "";
+    this.sceneName.title = name ? `Scene: ${name}` : "";
+  }
+
+  /** A replay has no simulation to pause, speed up, reset or set up, nor a robot editor: those go. */
   setReplay(replay: boolean, name?: string): void {
     this.replay = replay;
-    for (const control of [this.pause, this.speed.parentElement ?? this.speed, this.reset, this.time, this.rate]) {
-      control.hidden = replay;
-    }
+    for (const control of this.liveOnly) control.hidden = replay;
     this.clock.textContent = replay ? `replay${name ? ` of ${name}` : ""}` : this.clock.textContent;
+    this.showConnection(this.state);
   }
 
   private showSpeed(speed: number | "max"): void {

@@ -57,6 +57,13 @@ export class Viewer {
   readonly pickWatchers: ((target: PickTarget) => void)[] = [];
   /** Called with every new scene. */
   readonly sceneWatchers: ((scene: SceneMessage) => void)[] = [];
+  /** Called once, when the simulator has said whether this is a live run or a replay. */
+  private readonly modeWatchers: ((mode: "live" | "replay") => void)[] = [];
+  private mode: "live" | "replay" | null = null;
+  /** Called with the connection's state: what needs the simulator is off while it is away. */
+  readonly connectionWatchers: ((connected: boolean) => void)[] = [];
+  /** Recording the 3D view of the live run (until Stop video), not a played timeline. */
+  private liveVideo = false;
   private lastScene: SceneMessage | null = null;
   private lastStatus: StatusMessage | null = null;
   private ignored = 0;
@@ -96,12 +103,19 @@ export class Viewer {
     this.timeline = new TimelineBar(elements.timeline, send);
     this.timeline.onChange((state) => this.followTimeline(state));
     this.plots = new PlotPanel(elements.plots, send);
-    this.video = new VideoExport((video) => download(video, timedName("replay", this.timeline.current.time, "webm")));
+    this.video = new VideoExport((video) =>
+      download(video, timedName(this.replay ? "replay" : "video", this.timeline.current.time, "webm")),
+    );
     this.videoButton = elements.timeline.querySelector<HTMLButtonElement>("#tl-video")!;
     this.videoButton.hidden = !VideoExport.supported();
     this.videoButton.addEventListener("click", () => this.toggleVideo());
     this.upload = new RecordingUpload(elements.timeline);
     elements.toolbar.querySelector("#plots-toggle")?.addEventListener("click", () => this.plots.toggle());
+    elements.toolbar.querySelector("#reset-view")?.addEventListener("click", () => {
+      if (viewMode && viewMode.value === "follow") viewMode.value = "free";
+      this.world.resetView();
+    });
+    this.plots.onSeek((time) => this.timeline.seek(time));
     elements.toolbar.querySelector("#shot-3d")?.addEventListener("click", () => {
       const png = this.world.screenshot();
       if (png) download(png, timedName("3d", this.timeline.current.time, "png"));
@@ -128,6 +142,17 @@ export class Viewer {
 
   get scene(): SceneMessage | null {
     return this.lastScene;
+  }
+
+  /** `listener(mode)` once the simulator has said whether it is a live run or a replay (at once if known). */
+  onMode(listener: (mode: "live" | "replay") => void): void {
+    if (this.mode) listener(this.mode);
+    else this.modeWatchers.push(listener);
+  }
+
+  /** Whether the 3D view is being recorded as a video now. */
+  get recordingVideo(): boolean {
+    return this.video.recording;
   }
 
   get status(): StatusMessage | null {
@@ -168,8 +193,10 @@ export class Viewer {
       case "scene":
         this.lastScene = message;
         this.snapshots.clear();
-        this.panels.showRobots(message.robots);
+        this.panels.showRobots(message.robots, message.new_scene);
         this.world.showScene(message);
+        this.toolbar.showSceneName(message.name);
+        this.showLabels();
         this.overlays.reset(message.settings);
         this.warnings.show(message.warnings);
         this.plots.reset();
@@ -191,6 +218,7 @@ export class Viewer {
       case "timeline":
         this.timeline.showTimeline(message);
         this.replay = message.mode === "replay";
+        this.knowMode(message.mode);
         this.upload.setAvailable(this.replay);
         this.toolbar.setReplay(this.replay, message.name);
         this.panels.setEnabled(!this.replay && this.connection.state === "open");
@@ -233,10 +261,29 @@ export class Viewer {
         break;
       case "program":
         this.panelOf(message.robot)?.showProgram(message);
+        this.showLabels();
         break;
       case "error":
         console.warn(`EyeSim viewer: the simulator rejected a command: ${message.message}`);
         break;
+    }
+  }
+
+  /** Live or replay, known from the first `timeline` message: only then is the program list asked for
+   * (a replay has none, and asking would be answered 404). */
+  private knowMode(mode: "live" | "replay"): void {
+    if (this.mode === mode) return;
+    this.mode = mode;
+    this.panels.catalogWanted = mode === "live";
+    if (mode === "live") void this.panels.catalog.refresh();
+    for (const watch of this.modeWatchers.splice(0)) watch(mode);
+  }
+
+  /** Each robot's label in the 3D view: its id and the program it runs (ran), else its name. */
+  private showLabels(): void {
+    for (const robot of this.lastScene?.robots ?? []) {
+      const program = this.panels.find(robot.id)?.programState()?.name;
+      this.world.setRobotLabel(robot.id, `${robot.id} · ${program ?? robot.name}`);
     }
   }
 
@@ -247,6 +294,7 @@ export class Viewer {
       if (message.type === "snapshot") this.snapshots.clear(); // show this moment now, not blended
       this.handle(message);
     }
+    if (frame.clear.length) this.showLabels();
     this.frames++;
     this.timeline.frameArrived(frame);
     this.overlays.cutAt(this.reviewing ? this.timeline.current.time : Infinity);
@@ -259,7 +307,7 @@ export class Viewer {
     this.plots.setTime(state.time);
     if (reviewing && !this.pathsWanted) this.requestPaths();
     if (!reviewing) this.pathsWanted = false;
-    if (this.video.recording && !state.playing) {
+    if (this.video.recording && !this.liveVideo && !state.playing) {
       this.video.stop();
       this.videoButton.textContent = "Record video";
     }
@@ -269,15 +317,29 @@ export class Viewer {
     if (this.lastScene?.settings.trace) this.pathsWanted = this.connection.send({ type: "paths" });
   }
 
-  /** Records the 3D view while the timeline plays (from the start when at the end); again stops. */
+  /** Records the 3D view: live, as the simulation runs, until clicked again; else while the
+   * timeline plays (from the start when at the end), until its end or a click. */
   private toggleVideo(): void {
     if (this.video.recording) {
-      this.timeline.setPlaying(false);
+      if (this.liveVideo) {
+        this.liveVideo = false;
+        this.video.stop();
+        this.videoButton.textContent = "Record video";
+      } else {
+        this.timeline.setPlaying(false);
+      }
       return;
     }
     const canvas = this.world.canvas;
     const state = this.timeline.current;
-    if (!canvas || state.mode === "live") return;
+    if (!canvas) return;
+    if (state.mode === "live") {
+      if (this.video.start(canvas)) {
+        this.liveVideo = true;
+        this.videoButton.textContent = "Stop video";
+      }
+      return;
+    }
     if (state.time >= state.end) this.timeline.seek(state.start);
     if (this.video.start(canvas)) {
       this.videoButton.textContent = "Stop video";
@@ -295,5 +357,8 @@ export class Viewer {
     this.toolbar.showConnection(state);
     this.timeline.setEnabled(state === "open");
     this.panels.setEnabled(state === "open" && !this.replay);
+    this.settings.setEnabled(state === "open");
+    this.plots.setEnabled(state === "open");
+    for (const watch of this.connectionWatchers) watch(state === "open");
   }
 }

@@ -186,10 +186,13 @@ function hiddenUntilPlaced<T extends Object3D>(thing: T): T {
   return thing;
 }
 
-export function buildWorld(scene: SceneMessage, onTextureLoaded: () => void): BuiltWorld {
+export function buildWorld(scene: SceneMessage, onTextureLoaded: () => void, onFloorLoaded: () => void = () => {}): BuiltWorld {
   forgetMeshes();
   const group = new Group();
-  group.add(createFloor(scene.floor, onTextureLoaded));
+  group.add(createFloor(scene.floor, () => {
+    onFloorLoaded();
+    onTextureLoaded();
+  }));
   for (const wall of scene.walls) group.add(createWall(wall));
   for (const marker of scene.markers) group.add(createMarker(marker));
   const robots = new Map<number, Object3D>();

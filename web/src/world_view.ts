@@ -102,6 +102,8 @@ export class WorldView {
   private sceneMessage: SceneMessage | null = null;
   private floor: Floor | null = null;
   private needsRender = true;
+  /** the scene's floor image: its URL, and whether it has loaded (for tests) */
+  floorTexture: { url: string | null; loaded: boolean } = { url: null, loaded: false };
   /** the robot whose name label stands out (the selected one) */
   private highlighted: number | null = null;
 
@@ -173,7 +175,9 @@ export class WorldView {
   showScene(scene: SceneMessage): void {
     if (this.world) disposeWorld(this.world);
     this.dragging?.cancel();
-    this.world = buildWorld(scene, () => (this.needsRender = true));
+    this.floorTexture = { url: scene.floor.texture, loaded: false };
+    const texture = this.floorTexture;
+    this.world = buildWorld(scene, () => (this.needsRender = true), () => (texture.loaded = true));
     this.sceneMessage = scene;
     this.root.add(this.world.group);
     const { width, height } = scene.floor;
@@ -199,6 +203,39 @@ export class WorldView {
       model.traverse((part) => {
         if (part instanceof CSS2DObject) part.element.classList.toggle("selected", id === robot);
       });
+    }
+    this.needsRender = true;
+  }
+
+  /** The text of the robot's label in the 3D view. */
+  setRobotLabel(robot: number, text: string): void {
+    this.world?.robots.get(robot)?.traverse((part) => {
+      if (part instanceof CSS2DObject && part.element.textContent !== text) {
+        part.element.textContent = text;
+        this.needsRender = true;
+      }
+    });
+  }
+
+  /** The labels of the robots as they show now, by robot id (for tests). */
+  robotLabels(): Record<number, string> {
+    const labels: Record<number, string> = {};
+    for (const [id, model] of this.world?.robots ?? []) {
+      model.traverse((part) => {
+        if (part instanceof CSS2DObject) labels[id] = part.element.textContent ?? "";
+      });
+    }
+    return labels;
+  }
+
+  /** Back to the view the page starts with: the whole floor from the south (or straight down in top-down mode). */
+  resetView(): void {
+    if (!this.cameraModes || !this.floor) return;
+    if (this.cameraModes.mode === "top") {
+      this.cameraModes.set("top");
+    } else {
+      this.cameraModes.set("free");
+      this.frameFloor(this.floor);
     }
     this.needsRender = true;
   }

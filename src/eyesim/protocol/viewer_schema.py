@@ -40,6 +40,7 @@ SCHEMA = json.loads(r'''{
         {"$ref": "#/$defs/ResumeCommand"},
         {"$ref": "#/$defs/SpeedCommand"},
         {"$ref": "#/$defs/ResetCommand"},
+        {"$ref": "#/$defs/StepCommand"},
         {"$ref": "#/$defs/TouchCommand"},
         {"$ref": "#/$defs/IrtvCommand"},
         {"$ref": "#/$defs/SerialCommand"},
@@ -54,9 +55,10 @@ SCHEMA = json.loads(r'''{
       ]
     },
     "FrameContent": {
-      "description": "A message a frame may carry.",
+      "description": "A message a frame may carry (a scene: the recording's scene changed by then).",
       "x-discriminator": "type",
       "oneOf": [
+        {"$ref": "#/$defs/SceneMessage"},
         {"$ref": "#/$defs/SnapshotMessage"},
         {"$ref": "#/$defs/LcdMessage"},
         {"$ref": "#/$defs/CameraMessage"},
@@ -79,6 +81,12 @@ SCHEMA = json.loads(r'''{
       "description": "The world to draw: sent first on connect and after a reset or load.",
       "properties": {
         "type": {"const": "scene"},
+        "name": {"description": "the scene's file name, as the toolbar shows it", "type": "string"},
+        "new_scene": {
+          "description": "another scene (opened or edited), not a reset: the robot panels start afresh",
+          "type": "boolean",
+          "default": false
+        },
         "floor": {"$ref": "#/$defs/Floor"},
         "walls": {"type": "array", "items": {"$ref": "#/$defs/Wall"}},
         "robots": {"type": "array", "items": {"$ref": "#/$defs/RobotInfo"}},
@@ -332,6 +340,16 @@ SCHEMA = json.loads(r'''{
     "ResetCommand": {
       "type": "object",
       "properties": {"type": {"const": "reset"}},
+      "required": ["type"],
+      "additionalProperties": false
+    },
+    "StepCommand": {
+      "type": "object",
+      "description": "Simulation time goes on by one physics step (or by seconds, in whole steps), then pauses.",
+      "properties": {
+        "type": {"const": "step"},
+        "seconds": {"description": "how long to run (s); without it one physics step", "type": "number", "exclusiveMinimum": 0, "maximum": 10}
+      },
       "required": ["type"],
       "additionalProperties": false
     },

@@ -77,9 +77,12 @@ class Recorder:
     `pose_rate`: samples per simulated second of every pose and robot state (default 100: the
     CSV's rows); `lcd_rate`: at most this many LCD images per robot and simulated second.
 
-    A file describes one scene. When another scene replaces the running one (the viewer's scene
-    browser or editor), this file is finished and the recording goes on in the next one,
-    `<name>-2.mcap`, `<name>-3.mcap` ... (`paths` lists them)."""
+    A file holds one run of one scene file. The viewer's scene editor changes the scene (robots
+    added, moved, deleted ...): each edited scene is written into the same file, as another
+    message on /scene at that time, with channels for robots it adds (eyesim.record.Recording
+    reads the file as segments, one per scene). When another scene is *opened* (Scenes…, a new
+    scene), this file is finished and the recording goes on in the next one, `<name>-2.mcap`,
+    `<name>-3.mcap` ... (`paths` lists them)."""
 
     wants_lcd = False  # LCDs are sampled on simulation time, not at the viewer's publish ticks
 
@@ -101,6 +104,8 @@ class Recorder:
         self._file = open(self.path, "wb")
         self._writer = Writer(self._file, compression=CompressionType.ZSTD)
         self._channels: dict[str, int] = {}
+        self._schema_ids: dict[str, int] = {}
+        self._segment = 0  # scenes written into this file before the current one (edits)
         self._sequence: dict[int, int] = {}
         self._lcd_versions: dict[int, int] = {}
         self._next_lcd_us = self.sim.time_us
@@ -133,31 +138,59 @@ class Recorder:
     def _start_file(self) -> None:
         sim = self.sim
         self._writer.start(profile=schemas.PROFILE, library=f"{schemas.LIBRARY} {__version__}")
-        schema_ids = {name: self._writer.register_schema(name, "jsonschema", schemas.schema_bytes(name))
-                      for name in schemas.SCHEMAS}
-        topics = [schemas.SCENE, schemas.TRANSFORMS, schemas.EVENTS, schemas.LOG, schemas.EDITS]
-        if sim.scene.settings.vis:
-            topics.append(schemas.RAYS)
-        topics += [schemas.robot_topic(r.id, c) for r in sim.robots for c in schemas.ROBOT_CHANNELS]
-        for topic in topics:
-            self._channels[topic] = self._writer.register_channel(topic, "json", schema_ids[schemas.schema_of(topic)])
+        self._schema_ids = {name: self._writer.register_schema(name, "jsonschema", schemas.schema_bytes(name))
+                            for name in schemas.SCHEMAS}
+        self._register([schemas.SCENE, schemas.TRANSFORMS, schemas.EVENTS, schemas.LOG, schemas.EDITS])
         self._writer.add_metadata("eyesim", {
             "version": __version__, "start_time_s": repr(sim.time), "step_s": repr(sim.step_us / 1e6),
             "pose_rate_hz": repr(1e6 / self.pose_period_us), "lcd_rate_hz": repr(1e6 / self.lcd_period_us),
             "clock": sim.clock.mode})
+        self._write_scene(*self._scene_parts())
+
+    def _scene_parts(self) -> tuple:
+        """What the file needs of the scene as it is now (on the simulation thread): its channels,
+        attachments (floor texture, models; named for the segment after the first) and /scene message."""
+        sim, segment = self.sim, self._segment
+        suffix = "" if segment == 0 else f"@{segment}"
+        query = "" if segment == 0 else f"?v={segment}"  # replay_server serves the segment's attachments
+        # the rays' channel also without VIS: the settings panel may turn it on during the run
+        topics = [schemas.RAYS] + [schemas.robot_topic(r.id, c) for r in sim.robots for c in schemas.ROBOT_CHANNELS]
+        attachments = []
         texture = sim.scene.world.floor_texture
         has_texture = bool(texture) and Path(texture).is_file()
         if has_texture:
-            self._writer.add_attachment(0, sim.time_us * 1000, FLOOR_TEXTURE, "image/" + Path(texture).suffix[1:].lower(),
-                                        Path(texture).read_bytes())
+            attachments.append((FLOOR_TEXTURE + suffix, "image/" + Path(texture).suffix[1:].lower(),
+                                Path(texture).read_bytes()))
         for kind, things in (("robot", sim.robots), ("object", sim.objects)):
             for thing in things:
                 if mesh_message.has_mesh(sim, thing.body):
-                    self._writer.add_attachment(0, sim.time_us * 1000, f"mesh/{kind}/{thing.id}", "application/json",
-                                                _json(mesh_message.mesh_message(sim.world.model, thing.body)))
-        viewer_scene = messages.scene(sim, "/scene/floor-texture" if has_texture else None)
+                    attachments.append((f"mesh/{kind}/{thing.id}{suffix}", "application/json",
+                                        _json(mesh_message.mesh_message(sim.world.model, thing.body))))
+        viewer_scene = messages.scene(sim, "/scene/floor-texture" + query if has_texture else None,
+                                      version=str(segment) if segment else None, new_scene=segment > 0)
         description = json.loads(json.dumps(dataclasses.asdict(sim.scene), default=str))
-        self._add(schemas.SCENE, sim.time_us, _json({"viewer": viewer_scene, "description": description}))
+        return sim.time_us, topics, attachments, _json({"viewer": viewer_scene, "description": description})
+
+    def _register(self, topics: list[str]) -> None:
+        for topic in topics:
+            if topic not in self._channels:
+                self._channels[topic] = self._writer.register_channel(topic, "json",
+                                                                      self._schema_ids[schemas.schema_of(topic)])
+
+    def _write_scene(self, time_us: int, topics: list[str], attachments: list[tuple], scene: bytes) -> None:
+        """Channels, attachments and the /scene message of a scene (on the thread that writes)."""
+        self._register(topics)
+        for name, media_type, data in attachments:
+            self._writer.add_attachment(0, time_us * 1000, name, media_type, data)
+        self._add(schemas.SCENE, time_us, scene)
+
+    def _scene_edited(self) -> None:
+        """The scene editor changed the scene: the edited one goes into this file (a new segment)."""
+        self._segment += 1
+        parts = self._scene_parts()
+        self._put(None, parts[0], lambda: self._write_scene(*parts))
+        self._lcd_versions.clear()  # the robots are new: each one's LCD as it is now
+        self._sample_lcds(self.sim)
 
     # -- observers, on the simulation thread --------------------------------------------------------
     def __call__(self, sim) -> None:
@@ -216,7 +249,10 @@ class Recorder:
     def on_event(self, message: dict) -> None:
         kind, now = message["type"], self.sim.time_us
         if kind == "new-scene":
-            self._next_scene()
+            if message.get("opened", True):
+                self._next_scene()
+            else:
+                self._scene_edited()
             return
         if kind == "input":
             values = {k: v for k, v in message.items() if k != "type"}
@@ -264,8 +300,9 @@ class Recorder:
             raise OSError(f"writing {self.path} failed: {self._failure}") from self._failure
 
     # -- writing ------------------------------------------------------------------------------------
-    def _put(self, topic: str, time_us: int, payload) -> None:
-        """Queue a message: `payload` is bytes, or a function that makes them on the writer thread."""
+    def _put(self, topic: str | None, time_us: int, payload) -> None:
+        """Queue a message: `payload` is bytes, or a function that makes them on the writer thread
+        (topic None: a function that writes something itself there, such as a scene)."""
         if self._failure is None:
             self._queue.put((topic, time_us, payload))
 
@@ -275,6 +312,9 @@ class Recorder:
                 continue  # drain, so the simulation never blocks on a full queue
             topic, time_us, payload = item
             try:
+                if topic is None:
+                    payload()
+                    continue
                 self._add(topic, time_us, payload if isinstance(payload, bytes) else payload())
             except Exception as error:  # a full disk: reported by close(), the run goes on
                 self._failure = error

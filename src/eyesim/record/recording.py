@@ -3,13 +3,18 @@
 Opening reads the small messages once (poses, robot state, events) into arrays and lists; LCD and
 camera images stay in the file and are fetched by time through the MCAP chunk index, so seeking
 anywhere costs one chunk read. Anything wrong with the file raises RecordingError with a sentence
-that says what."""
+that says what.
+
+A run whose scene was edited in the viewer holds one /scene message per scene (mcap_recorder.py):
+the file is read as segments, each from its scene's time on (`segments`, `segment_at`). Edits
+happen while paused, so several scenes may share a time: the last one is the one that ran."""
 
 from __future__ import annotations
 
 import bisect
 import json
 from collections import defaultdict
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -24,6 +29,23 @@ IMAGE_CHANNELS = ("lcd", "camera")
 
 class RecordingError(Exception):
     """The file is missing, not a recording, damaged or truncated: the message says which."""
+
+
+@dataclass
+class Segment:
+    """One scene of a recording: from `start_us` on (until the next segment), with the viewer's
+    `scene` message and the scene description; `first_event` is the index in `Recording.events` of
+    its first event (events at the same time as a scene change belong to the scene they came in)."""
+
+    index: int
+    start_us: int
+    scene: dict
+    description: dict
+    first_event: int
+
+    @property
+    def robot_ids(self) -> list[int]:
+        return [r["id"] for r in self.scene["robots"]]
 
 
 class Recording:
@@ -61,8 +83,9 @@ class Recording:
         if schemas.SCENE not in topics:
             raise RecordingError(f"{self.path} is an MCAP file but not an EyeSim recording (it has no {schemas.SCENE} channel)")
         self.metadata = {m.name: dict(m.metadata) for m in self._reader.iter_metadata()}
-        self.scene: dict | None = None
+        self.scene: dict | None = None  # the first scene's (see segments)
         self.description: dict | None = None
+        self.segments: list[Segment] = []
         self.pose_times: list[int] = []
         self._frames: dict[str, int] = {}
         poses: list[list[float]] = []
@@ -86,8 +109,9 @@ class Recording:
                 self.lidar[int(parts[2])].append(time_us)
                 continue
             data = _decode(self.path, topic, time_us, message.data)
-            if topic == schemas.SCENE and self.scene is None:
-                self.scene, self.description = data["viewer"], data["description"]
+            if topic == schemas.SCENE:
+                self.segments.append(Segment(len(self.segments), time_us, data["viewer"], data["description"],
+                                             len(self.events)))
             elif topic == schemas.TRANSFORMS:
                 poses.append(self._pose_row(data))
                 self.pose_times.append(time_us)
@@ -105,25 +129,36 @@ class Recording:
                 self.commands.append((time_us, data))
             elif robot_channel == "input":
                 self.inputs.append((time_us, data))
-        if self.scene is None:
+        if not self.segments:
             raise RecordingError(f"{self.path} is an MCAP file but not an EyeSim recording (its {schemas.SCENE} channel is empty)")
+        self.scene, self.description = self.segments[0].scene, self.segments[0].description
+        # Frames that came with an edited scene have no pose before it: NaN there.
+        width = 7 * len(self._frames)
+        poses = [row if len(row) == width else row + [np.nan] * (width - len(row)) for row in poses]
         self.poses = np.array(poses, dtype=np.float64).reshape(len(poses), len(self._frames), 7)
         self._event_times = [t for t, _ in self.events]
         self._ray_times = [t for t, _ in self.rays]
         self.start_us = round(float(self.metadata.get("eyesim", {}).get("start_time_s", "0")) * 1e6)
         self.end_us = max(self.start_us, summary.statistics.message_end_time // 1000)
-        self.robot_ids = [r["id"] for r in self.scene["robots"]]
+        # every robot of every scene, in the order they came (plots and paths cover the whole run)
+        self.robot_ids = list(dict.fromkeys(i for segment in self.segments for i in segment.robot_ids))
+        self._segment_times = [segment.start_us for segment in self.segments]
 
     def _pose_row(self, data: dict) -> list[float]:
-        """One sample's poses as a flat row (x, y, z, qw, qx, qy, qz per frame, frames in a fixed order)."""
-        row = [0.0] * (7 * max(len(self._frames), len(data["transforms"])))
+        """One sample's poses as a flat row (x, y, z, qw, qx, qy, qz per frame, frames in a fixed
+        order; a frame it lacks is NaN, and frames an edited scene adds come at the end)."""
         for transform in data["transforms"]:
-            index = self._frames.setdefault(transform["child_frame_id"], len(self._frames))
-            if 7 * index >= len(row):
-                raise RecordingError(f"{self.path}: the frames of {schemas.TRANSFORMS} change during the recording")
+            self._frames.setdefault(transform["child_frame_id"], len(self._frames))
+        row = [np.nan] * (7 * len(self._frames))
+        for transform in data["transforms"]:
+            index = self._frames[transform["child_frame_id"]]
             t, q = transform["translation"], transform["rotation"]
             row[7 * index:7 * index + 7] = [t["x"], t["y"], t["z"], q["w"], q["x"], q["y"], q["z"]]
         return row
+
+    def segment_at(self, time_us: int) -> Segment:
+        """The scene that ran at `time_us` (the last of those that start then; the first before any)."""
+        return self.segments[max(0, bisect.bisect_right(self._segment_times, time_us) - 1)]
 
     # -- poses --------------------------------------------------------------------------------------
     @property
@@ -142,12 +177,17 @@ class Recording:
         if column is None:
             return None
         values = self.poses[index, column]
+        if np.isnan(values[0]):
+            return None
         return values[:3].tolist(), values[3:].tolist()
 
     def robot_track(self, robot_id: int) -> tuple[list[int], np.ndarray]:
         """Sample times and (N, 7) poses of a robot over the whole recording: x, y, z, qw, qx, qy, qz."""
         column = self._frames.get(schemas.robot_frame(robot_id))
-        return (self.pose_times, self.poses[:, column]) if column is not None else ([], np.zeros((0, 7)))
+        if column is None:
+            return [], np.zeros((0, 7))
+        known = ~np.isnan(self.poses[:, column, 0])  # not before an edit added it, nor after one removed it
+        return [t for t, k in zip(self.pose_times, known) if k], self.poses[known, column]
 
     def snapshot_at(self, time_us: int) -> dict | None:
         """The viewer's `snapshot` message as it was at `time_us`, or None before any pose sample."""
@@ -155,18 +195,19 @@ class Recording:
         if index is None:
             return None
         sample_us = self.pose_times[index]
+        scene = self.segment_at(time_us).scene
         robots = []
-        for robot_id in self.robot_ids:
+        for robot_id in (r["id"] for r in scene["robots"]):
             pose = self.pose(schemas.robot_frame(robot_id), index)
             if pose is not None:
                 state = self._latest(self.states.get(robot_id, ()), sample_us)
                 robots.append(messages.pose(robot_id, pose[0], pose[1], state.get("battery") if state else None))
-        objects = [messages.pose(o["id"], p[0], p[1]) for o in self.scene["objects"]
+        objects = [messages.pose(o["id"], p[0], p[1]) for o in scene["objects"]
                    if (p := self.pose(schemas.object_frame(o["id"]), index)) is not None]
-        bodies = [messages.pose(b["id"], p[0], p[1]) for b in self.scene["bodies"]
+        bodies = [messages.pose(b["id"], p[0], p[1]) for b in scene["bodies"]
                   if (p := self.pose(schemas.body_frame(b["id"]), index)) is not None]
         rays = None
-        if self.scene["settings"].get("vis"):
+        if scene["settings"].get("vis"):
             at = bisect.bisect_right(self._ray_times, time_us) - 1
             rays = self.rays[at][1] if at >= 0 else []
         return messages.snapshot_of(time_us / 1e6, robots, objects, bodies, rays)

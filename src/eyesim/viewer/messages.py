@@ -9,6 +9,7 @@ from __future__ import annotations
 import base64
 import io
 import json
+from pathlib import Path
 
 import numpy as np
 from PIL import Image
@@ -29,8 +30,11 @@ CAMERA_VIEW_WIDTH = 320  # pixels: larger camera images are sent to the viewer s
 
 
 # -- the world -------------------------------------------------------------------------------------
-def scene(sim, texture_url: str | None) -> dict:
+def scene(sim, texture_url: str | None, version: str | None = None, new_scene: bool = False) -> dict:
+    """`version` goes into the models' URLs (`?v=`), so that another scene's are other URLs;
+    `new_scene`: another scene replaced the running one (the robot panels start afresh)."""
     scene = sim.scene
+    query = "" if version is None else f"?v={version}"
     walls = [{"x1": mm(w.x1), "y1": mm(w.y1), "x2": mm(w.x2), "y2": mm(w.y2), "thickness": mm(w.thickness),
               "height": mm(w.height), "color": list(w.color)} for w in scene.world.walls]
     robots = []
@@ -43,7 +47,7 @@ def scene(sim, texture_url: str | None) -> dict:
                        "wheel_diameter": mm(wheels.diameter) if wheels else 0.0,
                        "track": mm(wheels.track) if wheels else 0.0})
         if has_mesh(sim, robot.body):  # its .obj model, drawn instead of the box (mesh_message.py)
-            robots[-1]["mesh"] = mesh_url("robot", robot.id)
+            robots[-1]["mesh"] = mesh_url("robot", robot.id) + query
     markers = [{"x": mm(m.x), "y": mm(m.y), "color": list(m.color)} for m in scene.markers]
     model = sim.world.model
     objects = []
@@ -53,11 +57,12 @@ def scene(sim, texture_url: str | None) -> dict:
             objects.append({"id": thing.id, "type": thing.type.name, "color": list(thing.type.color),
                             "shape": parts[0]["shape"], "size": parts[0]["size"], "parts": parts})
             if thing.mesh_geoms:
-                objects[-1]["mesh"] = mesh_url("object", thing.id)
+                objects[-1]["mesh"] = mesh_url("object", thing.id) + query
     bodies = [{"id": body, "robot": robot.id, "parts": _shapes(model, _geoms(model, body), colored=True)}
               for robot in sim.robots for body in robot.shown_parts]
     water = {"surface": sim.water.surface} if sim.water is not None else None
-    return {"type": "scene", "floor": {"width": sim.floor.width, "height": sim.floor.height, "texture": texture_url},
+    return {"type": "scene", "name": Path(scene.source).name, "new_scene": new_scene,
+            "floor": {"width": sim.floor.width, "height": sim.floor.height, "texture": texture_url},
             "walls": walls, "robots": robots, "objects": objects, "markers": markers, "bodies": bodies,
             "water": water,
             "warnings": [_warning(d) for d in scene.warnings],

@@ -125,7 +125,7 @@ class SceneWorkspace:
             await self._set_editing(True)
             self.undo_stack.clear()
             self.redo_stack.clear()
-            return await self._take(draft, self.undo_stack, clear_redo=True)
+            return await self._take(draft, self.undo_stack, clear_redo=True, opened=True)
 
     def _untitled(self) -> Path:
         """Where a new scene resolves its references from: the first writable root."""
@@ -194,8 +194,9 @@ class SceneWorkspace:
             return web.json_response(dict(self.state(), saved=[self._shown(p) for p in files]))
 
     # -- doing it -----------------------------------------------------------------------------
-    async def _take(self, draft: Draft, stack: list[Draft], clear_redo: bool) -> web.Response:
-        """Make `draft` the scene (the current one goes onto `stack`), or refuse it."""
+    async def _take(self, draft: Draft, stack: list[Draft], clear_redo: bool, opened: bool = False) -> web.Response:
+        """Make `draft` the scene (the current one goes onto `stack`), or refuse it. `opened`: a new
+        scene rather than an edit of this one (a recording goes on in another file)."""
         draft = self._with_live_settings(draft)
         try:
             scene = await _in_thread(draft.scene)
@@ -203,7 +204,7 @@ class SceneWorkspace:
             return _refused("the edit makes a scene the loader refuses", error.diagnostics)
         if not self.editing:
             await self._set_editing(True)
-        await self._replace(scene, start_programs=False)
+        await self._replace(scene, start_programs=False, opened=opened)
         stack.append(self.draft)
         del stack[:-MAX_UNDO]
         if clear_redo:
@@ -225,9 +226,9 @@ class SceneWorkspace:
             paused = self._paused_before
             await self._on_sim(lambda sim: sim.clock.set_paused(paused, sim.time_us))
 
-    async def _replace(self, scene, start_programs: bool) -> None:
+    async def _replace(self, scene, start_programs: bool, opened: bool = True) -> None:
         await _in_thread(self.launcher.stop_all, 1.0)
-        await self._on_sim(lambda sim: sim.replace_scene(scene))
+        await self._on_sim(lambda sim: sim.replace_scene(scene, opened))
         if start_programs:
             self._start_programs()
 

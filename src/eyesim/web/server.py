@@ -11,6 +11,7 @@ import asyncio
 import json
 import logging
 import math
+import secrets
 import socket
 import time
 from collections import deque
@@ -100,6 +101,9 @@ class ViewerHub:
         self.latest_status: str | None = None
         self._rate = (time.perf_counter(), 0.0, 1.0)  # wall, sim time, real-time factor
         self.history = LiveHistory([r.id for r in sim.robots])
+        # In the URLs of the scene's floor texture and models: another scene has other URLs, so a
+        # browser never shows the last scene's image from its cache (the routes stay the same).
+        self.scene_version = secrets.token_hex(4)
 
     # -- Listener interface, called on the simulation thread --------------------------------
     @property
@@ -141,11 +145,12 @@ class ViewerHub:
             message = dict(message, text=message["text"][-PANEL_CHARACTERS:])  # 16 MiB once cost 330 MB here
         if kind == "new-scene":  # another scene replaced the running one (scene browser, editor)
             self._forget_scene()
-            message = messages.scene(self.sim, self._texture_url())
+            self.scene_version = secrets.token_hex(4)
+            message = self._scene_message(new_scene=True)
             kind = "reset"
             self.sim.call(_publish_io)
         elif kind == "reset":
-            message = messages.scene(self.sim, self._texture_url())
+            message = self._scene_message()
             self.sim.call(_publish_io)
         else:
             self.history.add_event(time_us, message)
@@ -193,12 +198,13 @@ class ViewerHub:
                 browser.set_snapshot(text)
             browser.add_event(status_text, coalesce_key=("status",))
 
-    def _texture_url(self) -> str | None:
+    def _scene_message(self, new_scene: bool = False) -> dict:
         texture = self.sim.scene.world.floor_texture
-        return "/scene/floor-texture" if texture and Path(texture).is_file() else None
+        url = f"/scene/floor-texture?v={self.scene_version}" if texture and Path(texture).is_file() else None
+        return messages.scene(self.sim, url, version=self.scene_version, new_scene=new_scene)
 
     async def attach(self, browser: Browser) -> None:
-        browser.add_event(json.dumps(messages.scene(self.sim, self._texture_url())))
+        browser.add_event(json.dumps(self._scene_message()))
         browser.add_event(json.dumps(messages.timeline("live")))
         self._present(browser)
         first = not self.browsers
@@ -276,6 +282,9 @@ class ViewerHub:
             self.sim.call(lambda sim: sim.clock.set_speed(value, sim.time_us))
         elif kind == "reset":
             self.sim.call(lambda sim: sim.reset())
+        elif kind == "step":  # running: it pauses after the step
+            duration_us = round(message.get("seconds", 0) * 1e6)
+            self.sim.call(lambda sim: sim.step_for(duration_us))
         else:  # in the schema but not handled here: say so in the log (see command_text)
             raise NotImplementedError(f"no handler for the viewer command {kind!r}")
         return None
@@ -415,7 +424,8 @@ class ViewerServer:
         content_type = _image_type(Path(texture)) if texture else None
         if content_type is None:
             raise web.HTTPNotFound()
-        return web.FileResponse(texture, headers={"Content-Type": content_type})
+        # The URL names the scene (?v=): the browser may keep it, but asks whether it changed.
+        return web.FileResponse(texture, headers={"Content-Type": content_type, "Cache-Control": "no-cache"})
 
     async def _mesh(self, request: web.Request) -> web.StreamResponse:
         """A robot's or object's .obj model as JSON triangles (mesh_message.py); 404 without one."""

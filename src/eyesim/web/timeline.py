@@ -3,7 +3,9 @@ or of the live run's recent history, sent as a `frame` of ordinary viewer messag
 
 A source (RecordingTimeline here, LiveHistory for a live run) answers what things were like at a
 time; a FrameCursor per browser remembers what that browser was sent, so playing forward sends
-only what changed and a jump back starts the robot panels afresh."""
+only what changed and a jump back starts the robot panels afresh. A recording of a run whose scene
+was edited has segments, one per scene (eyesim.record.recording): a frame in another segment than
+the last one sent brings that segment's `scene` first, and its robot panels start afresh."""
 
 from __future__ import annotations
 
@@ -66,17 +68,47 @@ class EventIndex:
 
 
 class RecordingTimeline:
-    """A recording (eyesim.record.Recording) as a timeline source."""
+    """A recording (eyesim.record.Recording) as a timeline source. `key` goes into the URLs of the
+    floor texture and models of its scenes (`r=`), so that a page never shows another recording's
+    from its cache."""
 
-    def __init__(self, recording):
+    def __init__(self, recording, key: str | None = None):
         self.recording = recording
+        self.key = key
         self.robot_ids = recording.robot_ids
         self.start_us, self.end_us = recording.start_us, recording.end_us
         self.states, self.psd = recording.states, recording.psd
         self.events = EventIndex()
         for time_us, message in recording.events:
             self.events.add(time_us, message)
+        self._segment_events = []
+        bounds = [segment.first_event for segment in recording.segments] + [len(recording.events)]
+        for first, end in zip(bounds, bounds[1:]):
+            index = EventIndex()
+            for time_us, message in recording.events[first:end]:
+                index.add(time_us, message)
+            self._segment_events.append(index)
         self._images: dict[tuple, str] = {}
+
+    def segment_at(self, time_us: int):
+        return self.recording.segment_at(time_us)
+
+    def segment_events(self, segment) -> EventIndex:
+        """The viewer events of one segment (a scene of the recording)."""
+        return self._segment_events[segment.index]
+
+    def scene_message(self, segment, new_scene: bool = False) -> dict:
+        """The segment's `scene` message, with this timeline's key in its URLs."""
+        scene = json.loads(json.dumps(segment.scene))
+        if new_scene:
+            scene["new_scene"] = True
+        if self.key is not None:
+            if scene["floor"].get("texture"):
+                scene["floor"]["texture"] = _with_key(scene["floor"]["texture"], self.key)
+            for thing in scene["robots"] + scene.get("objects", []):
+                if "mesh" in thing:
+                    thing["mesh"] = _with_key(thing["mesh"], self.key)
+        return scene
 
     def snapshot_at(self, time_us: int) -> dict | None:
         return self.recording.snapshot_at(time_us)
@@ -108,35 +140,48 @@ class FrameCursor:
     def __init__(self):
         self.time_us: int | None = None
         self.sent: dict[tuple[str, int], object] = {}
+        self.segment: int | None = None  # the recording's scene the browser shows (None: the first)
 
     async def frame(self, source, time_us: int) -> str:
         """The `frame` message for `time_us` (clamped to the source's range)."""
         time_us = min(max(time_us, source.start_us), source.end_us)
+        segment = source.segment_at(time_us) if hasattr(source, "segment_at") else None
+        messages: list[str] = []
+        robot_ids, events = source.robot_ids, source.events
+        if segment is not None:
+            robot_ids, events = segment.robot_ids, source.segment_events(segment)
+            if segment.index != (self.segment or 0):  # another scene: the world and the panels anew
+                messages.append(json.dumps(source.scene_message(segment, new_scene=True)))
+                self.time_us = None
+            self.segment = segment.index
         afresh = self.time_us is None or time_us < self.time_us
         if afresh:
             self.sent.clear()
         after_us = -math.inf if afresh else self.time_us
+        since_us = segment.start_us if segment is not None else -math.inf
         self.time_us = time_us
-        messages: list[str] = []
-        for robot_id in source.robot_ids:
-            await self._robot(source, robot_id, after_us, time_us, messages)
+        for robot_id in robot_ids:
+            await self._robot(source, events, robot_id, after_us, since_us, time_us, messages)
         snapshot = source.snapshot_at(time_us)
         if snapshot is not None:
             messages.append(json.dumps(snapshot))
-        return viewer_messages.frame_text(time_us / 1e6, list(source.robot_ids) if afresh else [], messages,
+        return viewer_messages.frame_text(time_us / 1e6, list(robot_ids) if afresh else [], messages,
                                           source.start_us / 1e6, source.end_us / 1e6)
 
-    async def _robot(self, source, robot_id: int, after_us: float, time_us: int, messages: list[str]) -> None:
+    async def _robot(self, source, events, robot_id: int, after_us: float, since_us: float, time_us: int,
+                     messages: list[str]) -> None:
         for kind in LATEST_KINDS:  # a panel that starts afresh (`clear`) has none of these
-            event = source.events.latest(kind, robot_id, time_us)
+            event = events.latest(kind, robot_id, time_us)
             if event is not None and self.sent.get((kind, robot_id)) is not event:
                 self.sent[(kind, robot_id)] = event
                 messages.append(json.dumps(event))
         for kind in STREAM_KINDS:
-            chunks = source.events.stream(kind, robot_id, after_us, time_us)
+            chunks = events.stream(kind, robot_id, after_us, time_us)
             messages.extend(json.dumps(chunk) for chunk in chunks[-STREAM_BACKLOG:])
         for kind in ("lcd", "camera"):
             shown = source.image_time(robot_id, kind, time_us)
+            if shown is not None and shown < since_us:  # the image of a robot of an earlier scene
+                shown = None
             if shown is not None and self.sent.get((kind, robot_id)) != shown:
                 self.sent[(kind, robot_id)] = shown
                 text = source.image_message(robot_id, kind, shown)
@@ -184,6 +229,10 @@ async def answer(source, cursor: FrameCursor, message: dict) -> str:
     if kind == "paths":
         return json.dumps(paths(source))
     raise ValueError(f"unknown message type {kind!r}")
+
+
+def _with_key(url: str, key: str) -> str:
+    return f"{url}{'&' if '?' in url else '?'}r={key}"
 
 
 def _finite(number) -> bool:

@@ -46,6 +46,7 @@ export class SceneEditor {
   private dragged: Extract<BrowserCommand, { type: "place" }> | null = null;
   private busy: Promise<unknown> = Promise.resolve();
   private edits = 0;
+  private live = false;
 
   constructor(viewer: Viewer, toolbar: HTMLElement, layout: HTMLElement, worldElement: HTMLElement) {
     this.browser = new SceneBrowser((state) => this.show(state));
@@ -136,8 +137,21 @@ export class SceneEditor {
     // The 3D view keeps its pointerup to itself and sends the final pose on it: look right after.
     window.addEventListener("pointerup", () => window.setTimeout(() => this.dropped()), { capture: true });
     viewer.pickWatchers.push((target) => this.picked(target));
-    viewer.sceneWatchers.push(() => void this.refresh());
-    void this.start();
+    // A replay has no scenes to open or edit: nothing is asked for until the run is known to be live.
+    viewer.onMode((mode) => {
+      this.live = mode === "live";
+      if (this.live) void this.start();
+    });
+    viewer.sceneWatchers.push(() => this.live && void this.refresh());
+    viewer.connectionWatchers.push((connected) => {
+      openButton.disabled = this.editButton.disabled = !connected;
+      for (const control of this.panel.querySelectorAll<HTMLButtonElement | HTMLSelectElement | HTMLInputElement>(
+        "button, select, input",
+      )) {
+        control.disabled = !connected || (control.id === "editor-undo" && !this.state?.can_undo) ||
+          (control.id === "editor-redo" && !this.state?.can_redo);
+      }
+    });
   }
 
   /** Edits answered so far (tests wait for it). */
@@ -262,6 +276,8 @@ export class SceneEditor {
     const state = this.state;
     if (!state) return;
     this.panel.hidden = !state.editing;
+    // While editing, the editor takes the robot panels' place beside the 3D view (style.css).
+    document.body.classList.toggle("editing", state.editing);
     this.editButton.textContent = state.editing ? "Done editing" : "Edit scene";
     this.editButton.classList.toggle("paused", state.editing);
     element(this.panel, "#editor-file").textContent = basename(state.file);

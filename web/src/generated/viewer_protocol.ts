@@ -119,7 +119,7 @@ export function parseServerMessage(value: unknown, what: string): ServerMessage 
 }
 
 /** A command from the browser to the simulator (WebSocket). */
-export type BrowserCommand = KeyCommand | PauseCommand | ResumeCommand | SpeedCommand | ResetCommand | TouchCommand | IrtvCommand | SerialCommand | DigitalCommand | AnalogCommand | PlaceCommand | SeekCommand | LiveCommand | SignalsCommand | SeriesCommand | PathsCommand;
+export type BrowserCommand = KeyCommand | PauseCommand | ResumeCommand | SpeedCommand | ResetCommand | StepCommand | TouchCommand | IrtvCommand | SerialCommand | DigitalCommand | AnalogCommand | PlaceCommand | SeekCommand | LiveCommand | SignalsCommand | SeriesCommand | PathsCommand;
 
 export function parseBrowserCommand(value: unknown, what: string): BrowserCommand {
   const fields = record(value, what);
@@ -129,6 +129,7 @@ export function parseBrowserCommand(value: unknown, what: string): BrowserComman
     case "resume": return parseResumeCommand(fields, what);
     case "speed": return parseSpeedCommand(fields, what);
     case "reset": return parseResetCommand(fields, what);
+    case "step": return parseStepCommand(fields, what);
     case "touch": return parseTouchCommand(fields, what);
     case "irtv": return parseIrtvCommand(fields, what);
     case "serial": return parseSerialCommand(fields, what);
@@ -144,12 +145,13 @@ export function parseBrowserCommand(value: unknown, what: string): BrowserComman
   }
 }
 
-/** A message a frame may carry. */
-export type FrameContent = SnapshotMessage | LcdMessage | CameraMessage | MenuMessage | ProgramMessage | ConsoleMessage | SerialMessage | IoMessage;
+/** A message a frame may carry (a scene: the recording's scene changed by then). */
+export type FrameContent = SceneMessage | SnapshotMessage | LcdMessage | CameraMessage | MenuMessage | ProgramMessage | ConsoleMessage | SerialMessage | IoMessage;
 
 export function parseFrameContent(value: unknown, what: string): FrameContent {
   const fields = record(value, what);
   switch (fields.type) {
+    case "scene": return parseSceneMessage(fields, what);
     case "snapshot": return parseSnapshotMessage(fields, what);
     case "lcd": return parseLcdMessage(fields, what);
     case "camera": return parseCameraMessage(fields, what);
@@ -174,6 +176,10 @@ export function parseMeshBody(value: unknown, what: string): MeshBody {
 /** The world to draw: sent first on connect and after a reset or load. */
 export interface SceneMessage {
   type: "scene";
+  /** the scene's file name, as the toolbar shows it */
+  name?: string;
+  /** another scene (opened or edited), not a reset: the robot panels start afresh */
+  new_scene: boolean;
   floor: Floor;
   walls: Wall[];
   robots: RobotInfo[];
@@ -187,7 +193,7 @@ export interface SceneMessage {
 }
 
 export function parseSceneMessage(value: unknown, what: string): SceneMessage {
-  return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => literal(v, ["scene"] as const, w), true, undefined], floor: [parseFloor, true, undefined], walls: [(v: unknown, w: string) => list(v, w, parseWall, true, undefined, undefined) as Wall[], true, undefined], robots: [(v: unknown, w: string) => list(v, w, parseRobotInfo, true, undefined, undefined) as RobotInfo[], true, undefined], objects: [(v: unknown, w: string) => list(v, w, parseObjectInfo, true, undefined, undefined) as ObjectInfo[], false, []], markers: [(v: unknown, w: string) => list(v, w, parseMarker, true, undefined, undefined) as Marker[], false, []], bodies: [(v: unknown, w: string) => list(v, w, parseRobotBody, true, undefined, undefined) as RobotBody[], false, []], water: [(v: unknown, w: string): Water | null => either<Water | null>(v, w, [parseWater, (v: unknown, w: string) => literal(v, [null] as const, w)], "Water or null"), false, null], settings: [parseSceneSettings, false, {}], warnings: [(v: unknown, w: string) => list(v, w, parseSceneWarning, true, undefined, undefined) as SceneWarning[], false, []]}) as unknown as SceneMessage;
+  return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => literal(v, ["scene"] as const, w), true, undefined], name: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined], new_scene: [bool, false, false], floor: [parseFloor, true, undefined], walls: [(v: unknown, w: string) => list(v, w, parseWall, true, undefined, undefined) as Wall[], true, undefined], robots: [(v: unknown, w: string) => list(v, w, parseRobotInfo, true, undefined, undefined) as RobotInfo[], true, undefined], objects: [(v: unknown, w: string) => list(v, w, parseObjectInfo, true, undefined, undefined) as ObjectInfo[], false, []], markers: [(v: unknown, w: string) => list(v, w, parseMarker, true, undefined, undefined) as Marker[], false, []], bodies: [(v: unknown, w: string) => list(v, w, parseRobotBody, true, undefined, undefined) as RobotBody[], false, []], water: [(v: unknown, w: string): Water | null => either<Water | null>(v, w, [parseWater, (v: unknown, w: string) => literal(v, [null] as const, w)], "Water or null"), false, null], settings: [parseSceneSettings, false, {}], warnings: [(v: unknown, w: string) => list(v, w, parseSceneWarning, true, undefined, undefined) as SceneWarning[], false, []]}) as unknown as SceneMessage;
 }
 
 /** Where everything is now (only the latest matters). */
@@ -442,6 +448,17 @@ export interface ResetCommand {
 
 export function parseResetCommand(value: unknown, what: string): ResetCommand {
   return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => literal(v, ["reset"] as const, w), true, undefined]}) as unknown as ResetCommand;
+}
+
+/** Simulation time goes on by one physics step (or by seconds, in whole steps), then pauses. */
+export interface StepCommand {
+  type: "step";
+  /** how long to run (s); without it one physics step */
+  seconds?: number;
+}
+
+export function parseStepCommand(value: unknown, what: string): StepCommand {
+  return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => literal(v, ["step"] as const, w), true, undefined], seconds: [(v: unknown, w: string) => num(v, w, false, 0, 10, true, false), false, undefined]}) as unknown as StepCommand;
 }
 
 export interface TouchCommand {
