@@ -193,7 +193,8 @@ export class PlotPanel {
       .map((entry) => entry.querySelector(".u-label")?.textContent ?? "")
       .filter((label) => label !== "t (s)");
     const stepped = this.plotted.filter((s) => this.stepped(s)).map((s) => s.id);
-    return { legend, readout: this.readout.textContent ?? "", stepped };
+    const readout = [...this.readout.children].map((part) => part.textContent ?? "").join("   ");
+    return { legend, readout, stepped };
   }
 
   /** Where a time is on the page, in CSS pixels: (x, y of the chart's middle); null with no chart. */
@@ -333,7 +334,7 @@ export class PlotPanel {
           ...(this.stepped(s) ? { paths: steps } : {}),
         })),
       ],
-      // The legend names the signals above the chart; the readout below says the values at the pointer.
+      // The legend names the signals above the chart; the readout over it says the values at the pointer.
       legend: { show: true, live: false, mount: (_: uPlot, legend: HTMLElement) => this.legend.append(legend) },
       hooks: {
         draw: [(u: uPlot) => this.drawCursor(u)],
@@ -360,7 +361,7 @@ export class PlotPanel {
       const info = this.info(s.id);
       return `${info?.label ?? s.id} ${value === null ? "–" : formatValue(value)} ${info?.unit ?? ""}`.trim();
     });
-    this.readout.textContent = [`t ${t.toFixed(2)} s`, ...parts].join("   ");
+    this.readout.replaceChildren(...[`t ${t.toFixed(2)} s`, ...parts].map((text) => element("span", "", text)));
   }
 
   private clicked(event: PointerEvent): void {

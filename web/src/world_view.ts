@@ -230,7 +230,12 @@ export class WorldView {
 
   /** Back to the view the page starts with: the whole floor from the south (or straight down in top-down mode). */
   resetView(): void {
-    if (!this.cameraModes || !this.floor) return;
+    if (!this.cameraModes || !this.floor || !this.display) return;
+    // What the mouse set going (damped orbit, zoom, pan) stops first, so it cannot carry the camera off again.
+    const { controls } = this.display;
+    controls.enableDamping = false;
+    controls.update();
+    controls.enableDamping = true;
     if (this.cameraModes.mode === "top") {
       this.cameraModes.set("top");
     } else {
