@@ -21,7 +21,7 @@ TOP_LEVEL_SOURCES = (
 def source_files(web_dir: Path = WEB_DIR) -> list[Path]:
     """Every file the bundle is built from, sorted by its path inside `web_dir`."""
     files = [web_dir / name for name in TOP_LEVEL_SOURCES]
-    files += [path for path in (web_dir / "src").rglob("*") if path.is_file()]
+    files += [path for folder in ("src", "public") for path in (web_dir / folder).rglob("*") if path.is_file()]
     return sorted(files, key=lambda path: path.relative_to(web_dir).as_posix())
 
 

@@ -65,6 +65,8 @@ export class PlotPanel {
   private requested = false;
   private readonly seekListeners: ((time: number) => void)[] = [];
   private pressedAt: { x: number; y: number } | null = null;
+  /** what the chart draws (signals and how), to know when new data can go into the same chart */
+  private shape = "";
 
   constructor(
     private readonly root: HTMLElement,
@@ -299,12 +301,7 @@ export class PlotPanel {
   }
 
   private draw(): void {
-    this.plot?.destroy();
-    this.plot = null;
-    this.legend.replaceChildren();
-    this.readout.textContent = "";
     this.showButtons();
-    if (this.plotted.length === 0 || this.root.hidden) return;
     // uPlot wants one time axis: the union of the series' times, with gaps where one has no sample.
     const times = [...new Set(this.plotted.flatMap((s) => s.times))].sort((a, b) => a - b);
     const index = new Map(times.map((t, i) => [t, i]));
@@ -313,6 +310,19 @@ export class PlotPanel {
       s.times.forEach((t, i) => (column[index.get(t)!] = s.values[i]));
       return column;
     });
+    const data = [times, ...columns] as uPlot.AlignedData;
+    // The same signals drawn the same way (a live run's refresh): new data, the pointer's readout stays.
+    const shape = JSON.stringify(this.plotted.map((s) => [s.id, this.stepped(s)]));
+    if (this.plot && shape === this.shape && !this.root.hidden) {
+      this.plot.setData(data);
+      return;
+    }
+    this.plot?.destroy();
+    this.plot = null;
+    this.shape = shape;
+    this.legend.replaceChildren();
+    this.readout.textContent = "";
+    if (this.plotted.length === 0 || this.root.hidden) return;
     const units = [...new Set(this.plotted.map((s) => this.info(s.id)?.unit ?? ""))];
     const steps = uPlot.paths.stepped!({ align: 1 });
     const options: uPlot.Options = {
@@ -341,7 +351,7 @@ export class PlotPanel {
         setCursor: [(u: uPlot) => this.showReadout(u)],
       },
     };
-    this.plot = new uPlot(options, [times, ...columns] as uPlot.AlignedData, this.chartBox);
+    this.plot = new uPlot(options, data, this.chartBox);
     this.plot.over.addEventListener("pointerdown", (event) => (this.pressedAt = { x: event.clientX, y: event.clientY }));
     this.plot.over.addEventListener("pointerup", (event) => this.clicked(event));
     this.plot.over.addEventListener("pointerleave", () => (this.readout.textContent = ""));

@@ -37,6 +37,10 @@ class EncodedSamples:
         self.times.append(time_us)
         self.texts.append(json.dumps(message, separators=(",", ":")))
 
+    def drop_last(self) -> None:
+        self.times.pop()
+        self.texts.pop()
+
     def forget_before(self, time_us: int) -> None:
         cut = bisect.bisect_left(self.times, time_us)
         del self.times[:cut], self.texts[:cut]
@@ -80,6 +84,8 @@ class LiveHistory:
         time_us = round(snapshot["time"] * 1e6)
         if self.times and time_us < self.times[-1]:
             self.clear()  # time went back: a new simulation
+        if self.times and time_us == self.times[-1]:
+            self._drop_last()  # paused: one sample per time, the latest (a robot dragged meanwhile)
         self.times.append(time_us)
         self.snapshots.append(json.dumps(snapshot, separators=(",", ":")))
         for robot in snapshot["robots"]:
@@ -92,6 +98,17 @@ class LiveHistory:
         self._added += 1
         if self._added % TRIM_EVERY == 0:
             self._trim()
+
+    def _drop_last(self) -> None:
+        time_us = self.times.pop()
+        self.snapshots.pop()
+        for times, poses in self.tracks.values():
+            if times and times[-1] == time_us:
+                times.pop()
+                del poses[-POSE:]
+        for samples in self.states.values():
+            if samples.times and samples.times[-1] == time_us:
+                samples.drop_last()
 
     def add_event(self, time_us: int, message: dict) -> None:
         self.events.add(time_us, message)
