@@ -245,6 +245,7 @@ class _PipeRelay:
             except OSError:
                 pass
             self.inside.close()
+            self.pipe.close()
 
     def fileno(self) -> int:
         return self.outside.fileno()
@@ -258,8 +259,10 @@ class _PipeRelay:
             return b""
 
     def close(self) -> None:
+        """Stop relaying. The pipe itself is left to the thread, which closes it at its end: a
+        child of the program may hold it open for ever, and closing a BufferedReader that a thread
+        is reading from waits for that read (a blocking ReadFile cannot be interrupted)."""
         self.outside.close()
-        self.pipe.close()
 
 
 # ---- Finding libeyesim ----------------------------------------------------------------------------

@@ -4,6 +4,7 @@ writes into a buffer or hands over to be freed."""
 from __future__ import annotations
 
 import ctypes
+import sys
 
 from eye._library import C, lib
 from eye._values import text
@@ -12,7 +13,9 @@ __all__ = ["OSExecute", "OSVersion", "OSVersionIO", "OSMachineName"]
 
 TEXT_SIZE = 1024  # room for the strings OSVersion and friends write
 
-_free = lib.free  # the C library's free(), found through libeyesim's own dependencies
+# The C library's free(): on Linux and macOS found through libeyesim's own dependencies; a Windows
+# DLL shows only its own exports, and eyesim.dll's malloc is the Universal C Runtime's.
+_free = ctypes.CDLL("ucrtbase").free if sys.platform == "win32" else lib.free
 _free.argtypes, _free.restype = [ctypes.c_void_p], None
 
 

@@ -130,7 +130,9 @@ class _Checker:
     def spec(self) -> GradingSpec:
         import jsonschema
 
-        validator = jsonschema.Draft202012Validator(schema())
+        from eyesim.scene.json_format import local_refs
+
+        validator = jsonschema.Draft202012Validator(local_refs(schema()))
         for error in sorted(validator.iter_errors(self.document), key=lambda e: [str(p) for p in e.absolute_path]):
             self.problem(tuple(error.absolute_path), self._schema_message(error))
         # On with the scene checks even after schema errors, so one pass reports everything; what

@@ -6,6 +6,7 @@ import os
 import subprocess
 import sys
 import threading
+import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -14,6 +15,9 @@ from eyesim.programs import sources
 from eyesim.programs.program_output import ProgramOutput
 
 OUTPUT_LIMIT = 1 << 20  # characters of a program's output kept per stream (a runaway printf loop)
+# Seconds a program whose connection to the simulator has closed gets to exit when the run ends
+# (`--until` came while it was exiting): its own exit code, not "still running (stopped)".
+ENDING_GRACE = 3.0
 
 
 @dataclass(frozen=True)
@@ -24,9 +28,9 @@ class ProgramOptions:
     None gives it no input. `cwd` defaults to the program's directory; `env` adds to (and
     overrides) the environment. `cpu_seconds` and `memory_bytes` are resource limits of the
     program's process (RLIMIT_CPU, RLIMIT_AS; a Job Object's limits on Windows). With `own_group`
-    the program gets a process group (Windows: a job) of its own, so that stopping it also stops
-    the processes it started; without, it stays in ours (the grader kills a case's whole group at
-    once)."""
+    (the default) the program gets a process group (Windows: a job) of its own, so that stopping it
+    also stops the processes it started; without, it stays in ours (a graded case's programs: its
+    sandbox ends them all at once)."""
 
     args: tuple[str, ...] = ()
     stdin: str | bytes | None = None
@@ -34,7 +38,7 @@ class ProgramOptions:
     env: dict[str, str] = field(default_factory=dict)
     cpu_seconds: float | None = None
     memory_bytes: int | None = None
-    own_group: bool = False
+    own_group: bool = True
     processes: int | None = None  # RLIMIT_NPROC (platform.Limits says what it counts)
     file_bytes: int | None = None  # RLIMIT_FSIZE: the largest file the program may write
 
@@ -176,19 +180,30 @@ class Launcher:
         return True
 
     def settle(self, wait: float = 0.0) -> None:
-        """Let programs that are ending finish (up to `wait` s each), then take in everything
-        the ended ones printed and their exit codes."""
+        """Let programs that are ending finish (up to `wait` s, and ENDING_GRACE for those whose
+        connection has closed), then take in everything the ended ones printed and their exit codes."""
+        self._let_finish(wait)
         for run in self.runs:
-            if run.process is None:
-                continue
-            if wait > 0:
-                try:
-                    run.process.wait(timeout=wait)
-                except subprocess.TimeoutExpired:
-                    continue
-            if run.process.poll() is not None:
+            if run.process is not None and run.process.poll() is not None:
                 self._waiters[id(run)].join(timeout=2.0)
                 self._take_output(run)
+
+    def _let_finish(self, seconds: float) -> None:
+        """Wait up to `seconds` in all for programs to end by themselves, and up to ENDING_GRACE for
+        those whose connection to the simulator has closed: they are exiting, and their exit code
+        is what ended them. Waited for, not polled: while the waiter thread waits for a process,
+        poll() cannot tell that it has just ended."""
+        start = time.monotonic()
+        for run in self.runs:
+            if run.process is None or run.exit_code is not None:
+                continue
+            closed = run.process.pid in self.sim.disconnected_pids
+            remaining = start + max(seconds, ENDING_GRACE if closed else 0.0) - time.monotonic()
+            if remaining > 0:
+                try:
+                    run.process.wait(timeout=remaining)
+                except subprocess.TimeoutExpired:
+                    pass
 
     def _feed(self, run: ProgramRun) -> None:
         data = run.options.stdin
@@ -281,13 +296,9 @@ class Launcher:
         """Stop programs still running (the run is over) and wait for their output to drain.
 
         `let_finish`: seconds to wait first for programs that are ending by themselves (the run
-        ended because they closed their connections)."""
-        for run in self.runs:
-            if run.process is not None and let_finish > 0:
-                try:
-                    run.process.wait(timeout=let_finish)
-                except subprocess.TimeoutExpired:
-                    pass
+        ended because they closed their connections); a program whose connection has closed gets
+        ENDING_GRACE in any case, so its exit code is not lost to a run that ended meanwhile."""
+        self._let_finish(let_finish)
         for run in self.runs:
             if run.process is not None and run.process.poll() is None:
                 run.stopped_by_us = True

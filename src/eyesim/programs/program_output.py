@@ -72,6 +72,7 @@ class ProgramOutput:
                 self._close(stream)
 
     def _show(self, stream: str, data: bytes) -> None:
+        data = data.replace(b"\r\n", b"\n")  # Windows programs end lines with \r\n; a lone \r stays
         start = 0
         while start < len(data):  # lines end at \n only, as a program's own line buffering does
             end = data.find(b"\n", start) + 1 or len(data)

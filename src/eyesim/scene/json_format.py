@@ -43,6 +43,13 @@ def schema(kind: str) -> dict:
     return json.loads((SCHEMA_DIR / f"{kind}.schema.json").read_text(encoding="utf-8"))
 
 
+def local_refs(schema: dict) -> dict:
+    """The schema to validate with: without its `$id`, so that `#/$defs/...` references resolve
+    within the document itself. jsonschema 4.17 (the last without a Rust extension, which Windows
+    under Wine needs) joins them to a `urn:` id through urllib, which gives '' and a failed fetch."""
+    return {key: value for key, value in schema.items() if key != "$id"}
+
+
 def schema_text(kind: str) -> str:
     """The schema as published in docs/schemas/<kind>.schema.json."""
     return json.dumps(schema(kind), indent=2) + "\n"
@@ -170,7 +177,7 @@ def parse_json(text: str, source: str, diagnostics: Diagnostics, expected: tuple
     positions = _Positions(text, source)
     import jsonschema  # here, not at the top: a run of a .sim scene does not need it (start-up time)
 
-    validator = jsonschema.Draft202012Validator(schema(kind))
+    validator = jsonschema.Draft202012Validator(local_refs(schema(kind)))
     errors = sorted(validator.iter_errors(data), key=lambda e: list(e.absolute_path))
     for error in errors:
         _report(error, positions, diagnostics)
