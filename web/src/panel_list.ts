@@ -1,6 +1,6 @@
 // The robot panels, kept in step with the robots of the current scene. As many panels are open as
-// there are columns for them beside the 3D view (one below 1850 px or so; a wide screen shows two
-// or three robots side by side); the others are folded to one line each.
+// there are columns for them beside the 3D view (one below 1830 px; a wide screen shows two or
+// three robots side by side); the others are folded to one line each.
 
 import { ProgramCatalog } from "./program_controls";
 import type { BrowserCommand, RobotInfo } from "./protocol";
