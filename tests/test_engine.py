@@ -26,27 +26,55 @@ def test_deterministic_time_stands_still_while_a_program_computes():
         assert sim.time_us - before <= sim.call_time_us + sim.step_us
 
 
-def test_deterministic_calls_cost_the_call_time():
+def test_deterministic_device_calls_cost_the_call_time():
     with running_simulation(arena(), "deterministic") as (sim, port):
         assert sim.call_time_us == DEFAULT_CALL_TIME_US  # not the protocol's 0.1 ms
-        assert sim.call_cost_us(g.OPS_BY_NAME["OS_GET_COUNT"]) == DEFAULT_CALL_TIME_US
+        assert sim.call_cost_us(g.OPS_BY_NAME["KEY_READ"]) == DEFAULT_CALL_TIME_US
         client = ProgramClient(port)
         client.hello()
         start = client.call("OS_GET_COUNT")[0]
         calls = 100
-        for _ in range(calls - 1):
-            client.call("OS_GET_COUNT")
+        for _ in range(calls):
+            client.call("KEY_READ")
+        # the clock read itself is local: 10 us, within the millisecond
         assert client.call("OS_GET_COUNT")[0] - start == calls * DEFAULT_CALL_TIME_US // 1000
 
 
+def test_local_calls_cost_only_their_own_microseconds():
+    """LCD drawing and the like are done by the EyeBot itself: the call time does not apply."""
+    pixel = g.OPS_BY_NAME["LCD_PIXEL"]
+    with running_simulation(arena(), "deterministic") as (sim, port):
+        assert pixel.cost == "local" and sim.call_cost_us(pixel) == pixel.cost_us < 100
+        client = ProgramClient(port)
+        client.hello()
+        start = client.call("OS_GET_COUNT")[0]
+        for x in range(1000):
+            client.call("LCD_PIXEL", x % 480, x // 480, 0xFF0000)
+        assert client.call("OS_GET_COUNT")[0] - start == (1000 * pixel.cost_us + g.OPS_BY_NAME["OS_GET_COUNT"].cost_us) // 1000
+
+
+def test_deterministic_clock_reads_never_show_the_same_millisecond_twice():
+    """Time stands still while a program only does local things; a program that polls the clock
+    waiting for time to pass sees it go on a millisecond a read, and sees every millisecond."""
+    with running_simulation(arena(), "deterministic") as (sim, port):
+        client = ProgramClient(port)
+        client.hello()
+        counts = [client.call("OS_GET_COUNT")[0] for _ in range(300)]
+        assert counts == list(range(counts[0], counts[0] + 300))
+        client.call("LCD_PIXEL", 1, 1, 0xFFFFFF)
+        assert client.call("OS_GET_COUNT")[0] == counts[-1] + 1  # a local call in between changes nothing
+        client.call("KEY_READ")  # 4 ms: a later millisecond anyway, read at once
+        assert client.call("OS_GET_COUNT")[0] == counts[-1] + 1 + DEFAULT_CALL_TIME_US // 1000
+
+
 def test_a_call_time_of_0_leaves_the_protocols_own_costs():
-    cost = g.OPS_BY_NAME["OS_GET_COUNT"].cost_us  # 0.1 ms: time must go on even then
+    cost = g.OPS_BY_NAME["KEY_READ"].cost_us  # 0.1 ms: time must go on even then
     with running_simulation(with_call_time(arena(), 0), "deterministic") as (sim, port):
         client = ProgramClient(port)
         client.hello()
         start = client.call("OS_GET_COUNT")[0]
-        for _ in range(99):
-            client.call("OS_GET_COUNT")
+        for _ in range(100):
+            client.call("KEY_READ")
         assert client.call("OS_GET_COUNT")[0] - start == 100 * cost // 1000
 
 
@@ -54,11 +82,10 @@ def test_deterministic_os_wait_costs_exactly_its_milliseconds():
     with running_simulation(arena(), "deterministic") as (sim, port):
         client = ProgramClient(port)
         client.hello()
-        call_ms = sim.call_time_us // 1000  # the OS_GET_COUNT before the wait
         for wait in (1, 7, 100, 333):
-            before = client.call("OS_GET_COUNT")[0]
+            before = client.call("OS_GET_COUNT")[0]  # itself 10 us: within the millisecond
             client.call("OS_WAIT", wait)
-            assert client.call("OS_GET_COUNT")[0] - before == call_ms + wait
+            assert client.call("OS_GET_COUNT")[0] - before == wait
 
 
 def test_realtime_os_wait_follows_the_wall_clock():
@@ -86,7 +113,7 @@ def test_realtime_at_max_speed_a_call_takes_whole_steps():
         client = ProgramClient(port)
         client.hello()
         start = client.call("OS_GET_COUNT")[0]
-        for _ in range(9):
+        for _ in range(10):
             client.call("KEY_READ")
         assert client.call("OS_GET_COUNT")[0] - start >= 10 * 4  # 3 ms rounded up to two 2 ms steps
 
@@ -123,8 +150,13 @@ def test_realtime_calls_without_a_call_time_never_take_a_programs_clock_past_the
         client.hello()
         sim.call(lambda s: s.clock.set_paused(True, s.time_us))
         paused_at = sim.time_us // 1000
-        counts = [client.call("OS_GET_COUNT")[0] for _ in range(200)]
-        assert 200 * g.OPS_BY_NAME["OS_GET_COUNT"].cost_us // 1000 > 2 * sim.step_us // 1000
+
+        def count_after_a_call():
+            client.call("KEY_READ")
+            return client.call("OS_GET_COUNT")[0]
+
+        counts = [count_after_a_call() for _ in range(200)]
+        assert 200 * g.OPS_BY_NAME["KEY_READ"].cost_us // 1000 > 2 * sim.step_us // 1000
         assert paused_at <= counts[0] <= counts[-1] <= paused_at + sim.step_us // 1000
         sim.call(lambda s: s.clock.set_paused(False, s.time_us))
         time.sleep(0.3)

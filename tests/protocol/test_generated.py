@@ -94,7 +94,7 @@ def test_a_new_pass_through_function_is_generated_in_every_layer():
     """docs/developing.md's walk-through: an op and an api entry in protocol.json give the C wrapper,
     the eyebot.h declaration, the ctypes prototype and the Python wrapper."""
     spec = copy.deepcopy(SPEC)
-    spec["ops"].append({"name": "PSD_GET_BOTH", "code": 2099, "group": "psd", "cost_us": 100,
+    spec["ops"].append({"name": "PSD_GET_BOTH", "code": 2099, "group": "psd", "cost": "device", "cost_us": 100,
                         "request": [["psd", "i32"]], "reply": [["result", "i32"], ["mm", "i32"], ["raw", "i32"]]})
     psd = next(g for g in spec["api"] if g["group"] == "psd")
     psd["functions"].append({"name": "PSDGetBoth", "c": "int PSDGetBoth(int psd, int *mm, int *raw)",

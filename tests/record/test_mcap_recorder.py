@@ -54,8 +54,9 @@ def test_the_recording_has_the_documented_channels_and_every_message_fits_its_sc
             jsonschema.validate(json.loads(message.data), json.loads(schema.data))
             counts[channel.topic] = counts.get(channel.topic, 0) + 1
     assert counts["/scene"] == 1
-    # 2.056 s at 100 Hz: four 500 ms waits and the calls' 4 ms call time each (docs/running.md#call-time)
-    assert counts["/tf"] == counts["/robot/1/state"] == 205
+    # 2.036 s at 100 Hz: four 500 ms waits, the 4 ms call time of each of the nine calls that reach the
+    # robot (PSDGet, VWSetSpeed) and 10 us of each LCD call (docs/protocol.md#what-a-call-costs)
+    assert counts["/tf"] == counts["/robot/1/state"] == 203
     assert counts["/robot/1/psd"] == 4 and counts["/robot/1/command"] == 5
     assert counts["/robot/1/lcd"] >= 5  # the start, four steps, "done"
     logs = [json.loads(m.data)["message"] for _, c, m in make_reader(open(recorded / "run.mcap", "rb")).iter_messages(topics=["/log"])]

@@ -102,18 +102,22 @@ def test_a_frame_being_drawn_holds_deterministic_time_at_its_reply(gated):
         caller = threading.Thread(target=keep_calling)
         caller.start()
         try:
-            camera.call("CAM_INIT", CAM5MP)
-            call_ms = sim.call_cost_us(g.OPS_BY_NAME["OS_GET_COUNT"]) // 1000
-            asked_ms = camera.call("OS_GET_COUNT")[0] + call_ms
-            due_ms = asked_ms + sim.call_cost_us(g.OPS_BY_NAME["CAM_GET"]) // 1000
+            camera.call("CAM_INIT", CAM5MP)  # a device call: the clock read below starts a millisecond
+            asked_ms = camera.call("OS_GET_COUNT")[0]  # read on a whole ms; local: CAM_GET follows 10 us later
+            due_us = asked_ms * 1000 + (sim.call_cost_us(g.OPS_BY_NAME["OS_GET_COUNT"]) +
+                                        sim.call_cost_us(g.OPS_BY_NAME["CAM_GET"]))
+            due_ms = due_us // 1000
             frame = camera.send("CAM_GET")
             assert gated.waiting.wait(60)  # the render thread has the frame
-            while answered[-1] + call_ms < due_ms:  # the other program goes on up to the frame's time
+            # The other program's clock reads show every millisecond in turn (deterministic mode);
+            # it goes on up to the frame's time, and its first read after it waits for the frame.
+            last_before_ms = -(-due_us // 1000) - 1
+            while answered[-1] < last_before_ms:
                 threading.Event().wait(0.01)
             waiting = next(s for s in sim.sessions if s.robot is not None and s.robot.id == 2)
-            while not waiting.queued:  # its next call has reached the simulator
+            while not (waiting.queued or waiting.pending):  # its next call has reached the simulator
                 threading.Event().wait(0.01)
-            assert answered[-1] + call_ms >= due_ms > answered[-1]
+            assert answered[-1] == last_before_ms
             assert [t for t in answered if t >= asked_ms]  # answered while the frame was drawn
             assert sim.time_us <= due_ms * 1000 and nothing_received(camera)  # time waits for the frame
             gated.gate.set()

@@ -58,8 +58,8 @@ def test_a_python_callable_drives_into_a_wall_and_the_contact_is_counted_and_tim
     sim = eyesim_sim(arena(robots=((500, 1000, 0),)))
     sim.program(1, drive_ahead)
     end = sim.run(until=20)
-    # 8 s + 1 s of waits and three calls of 4 ms call time (LCDPrintf, two VWSetSpeed)
-    assert end.reason == "programs" and end.time == pytest.approx(9.012, abs=0.003)
+    # 8 s + 1 s of waits, two calls of 4 ms call time (VWSetSpeed) and a local LCDPrintf (10 us)
+    assert end.reason == "programs" and end.time == pytest.approx(9.008, abs=0.003)
     robot = sim.robot(1)
     assert robot.exit_code == 0 and robot.program.value > 0
     assert robot.lcd_text() == ["driving"]

@@ -23,7 +23,21 @@ def os_sleep(sim, robot, request):
 
 
 def os_get_count(sim, robot, request):
-    return (request.time_us // 1000,)
+    """OSGetCount and OSGetTime: milliseconds of simulation time. Reading the clock is something the
+    EyeBot does itself, in microseconds (a local call), so in deterministic mode, where time stands
+    still while a program computes, a program that polls the clock waiting for time to pass would
+    spin for ever in a millisecond. So there a read within the millisecond of the program's
+    previous read waits for the next one: the clock never shows the same value twice in a row,
+    and a polling loop sees time pass at 1 ms a turn (docs/protocol.md#what-a-call-costs)."""
+    ms = request.time_us // 1000
+    session = request.session
+    if sim.clock.deterministic:
+        if ms <= session.last_clock_ms:
+            ms = session.last_clock_ms + 1
+            session.last_clock_ms = ms
+            return Pending.until(ms * 1000, (ms,))
+        session.last_clock_ms = ms
+    return (ms,)
 
 
 def os_machine_name(sim, robot, request):

@@ -10,9 +10,11 @@ the operation's documented cost; physics only steps once every program is either
 pending call or has asked for something at or beyond the next step. Requests are taken in order
 of (time, robot id), so the result does not depend on how the OS schedules the programs.
 
-Every answered call takes the call time (DEFAULT_CALL_TIME_US, the scene's CALLTIME, `--call-time`)
-of simulation time, in both modes: deterministic mode adds it to the program's clock, realtime mode
-holds the reply back until simulation time has gone on by that much since the request came in."""
+Every answered call that reaches the robot's hardware or the world takes the call time
+(DEFAULT_CALL_TIME_US, the scene's CALLTIME, `--call-time`) of simulation time, in both modes:
+deterministic mode adds it to the program's clock, realtime mode holds the reply back until
+simulation time has gone on by that much since the request came in. What the EyeBot does itself
+(LCD drawing, reading the clock) costs only its own few microseconds (protocol.json's cost classes)."""
 
 from __future__ import annotations
 
@@ -32,6 +34,7 @@ from eyesim.core.events import EventBus
 from eyesim.net.program_server import ProgramSockets
 from eyesim.net.session import Deferred, Pending, Request, Session
 from eyesim.protocol import encode_error, encode_message, generated as g
+from eyesim.protocol.ops import DEVICE, LOCAL
 from eyesim.robot.component import Component
 from eyesim.scene.description import Scene
 from eyesim.world.builder import build_world
@@ -435,19 +438,23 @@ class Simulation:
                                 "the result does not fit the reply (a value out of range)")
 
     def call_cost_us(self, op) -> int:
-        """Simulation time an answered call takes: the call time, or the op's own cost when that is
-        larger (camera images). Blocking calls cost only what they wait (OSWait(n) exactly n ms),
-        so waits and timers stay exact; the handshake costs nothing."""
-        if op.blocking or op.group == "session":  # the handshake and the library's notices
-            return op.cost_us
-        return max(op.cost_us, self.call_time_us)
+        """Simulation time an answered call takes, by the op's cost class (protocol.json, docs/
+        protocol.md#what-a-call-costs): a call that reaches the robot's hardware or the world takes
+        the call time, or its own cost when that is larger (camera images); what the EyeBot does
+        itself (LCD, the clock) only its own few microseconds; blocking calls only what they wait
+        (OSWait(n) exactly n ms), so waits and timers stay exact."""
+        if op.cost == DEVICE:
+            return max(op.cost_us, self.call_time_us)
+        return op.cost_us
 
     def _answer(self, request: Request, frame: bytes) -> None:
         """Send the reply to a call answered at once, after the call's cost in simulation time."""
         session = request.session
         cost = self.call_cost_us(request.op)
-        if self.clock.deterministic or not self.call_time_us or cost == 0:
-            session.local_time_us = request.time_us + cost  # deterministic: the program's clock goes on
+        if self.clock.deterministic or not self.call_time_us or cost == 0 or request.op.cost == LOCAL:
+            # Deterministic: the program's clock goes on. Realtime: a local call's few µs (or any call
+            # without a call time) move it on within the step under way (_take_request), nothing is held.
+            session.local_time_us = request.time_us + cost
             self._send(session, frame)
             return
         # Realtime: the reply leaves once simulation time has gone on by the cost since the request.

@@ -99,6 +99,7 @@ class Session:
     free_running: bool = False  # time goes on while its main thread busy-waits (see blocked)
     in_turn: bool = False  # realtime: in the engine's round of programs to serve
     replies_held: int = 0  # realtime: replies waiting for their call time to pass
+    last_clock_ms: int = -1  # deterministic: what its last clock read (OSGetCount, OSGetTime) returned
 
     def note_request(self, now_wall: float) -> None:
         self.last_request_wall = now_wall

@@ -18,7 +18,7 @@ int main(void)
     int hrs, mins, secs, ticks;
     OSGetTime(&hrs, &mins, &secs, &ticks);
     int from_time = ((hrs * 60 + mins) * 60 + secs) * 1000 + ticks;
-    printf("clock difference %d\n", from_time - count); /* one call later: the call time */
+    printf("clock difference %d\n", from_time - count); /* read again at once: the next millisecond */
 
     char *output = OSExecute("echo shell says hi; echo second line");
     printf("execute [%s]\n", output ? output : "(null)");
