@@ -1,5 +1,5 @@
-"""What a person sees at the end of a run: the version, crashes in words, Ctrl-C's status, and
-`make demo` on other ports."""
+"""What a person sees at the end of a run: the version, crashes in words, the exit code of a program
+that was exiting when the run ended, Ctrl-C's status, and `make demo` on other ports."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import signal
 import subprocess
 from pathlib import Path
 
-from support.programs import eyesim_command, run_headless
+from support.programs import build, eyesim_command, run_headless
 
 from eyesim import __version__
 
@@ -37,6 +37,26 @@ def test_a_crash_is_named_in_the_summary(tmp_path):
     assert result.returncode == 1
     assert "program crash: crashed: segmentation fault (SIGSEGV)" in result.stdout
     assert "exit code -11" not in result.stdout
+
+
+def test_a_program_that_closed_its_connection_at_until_is_reported_with_its_exit_code(tmp_path):
+    """slow_exit.c closes its connection, then takes 300 ms of wall time to exit with status 3;
+    --until comes meanwhile (a few ms of wall time later). It is not "still running (stopped)"."""
+    program = build("slow_exit", tmp_path, "-Wall", "-Wextra", "-Werror")
+    result = run_headless("--until", "0.2", "--program", f"1={program}", cwd=tmp_path)
+    assert "[robot 1] last call at 0 ms" in result.stdout
+    assert "EyeSim: stopped at t=0.200 s" in result.stdout
+    assert "program slow_exit: exit code 3" in result.stdout, result.stdout
+    assert result.returncode == 1  # a program that exited non-zero failed
+
+
+def test_the_testing_api_reports_the_exit_code_of_a_program_exiting_at_until(tmp_path, eyesim_sim):
+    program = build("slow_exit", tmp_path, "-Wall", "-Wextra", "-Werror")
+    sim = eyesim_sim()
+    sim.program(1, program)
+    end = sim.run(until=0.2, end_with_programs=False)
+    assert end.reason == "time"
+    assert sim.robot(1).exit_code == 3 and sim.robot(1).stdout == "last call at 0 ms\n"
 
 
 def test_ctrl_c_ends_the_run_with_status_130(tmp_path):

@@ -66,6 +66,9 @@ class Simulation:
         self._running = False
         self.sessions: list[Session] = []
         self.expected_programs: set[int] = set()  # robot ids whose launched program has not connected
+        # Process ids of programs whose connection has closed: they are exiting, and the end of a
+        # run gives them a moment to do so before stopping them (programs/launcher.py).
+        self.disconnected_pids: set[int] = set()
         self.stop_when_programs_done = False  # end the run once no program is connected or expected
         self.time_us = 0
         self.steps = 0
@@ -608,6 +611,8 @@ class Simulation:
         if session in self.sessions:
             self.sessions.remove(session)
             log.info("%s disconnected", session.name)
+            if session.pid:
+                self.disconnected_pids.add(session.pid)
         self.check_programs_done()
 
     def program_gone(self, robot_id: int) -> None:
