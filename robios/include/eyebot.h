@@ -260,14 +260,16 @@ int LCDSetPrintf(int row, int column, const char *format, ...) EYEBOT_PRINTF(3, 
 int LCDClear(void);                                     /* clear to black */
 int LCDMenu(const char *st1, const char *st2, const char *st3, const char *st4); /* soft-key labels */
 int LCDMenuI(int pos, const char *string, COLOR fg, COLOR bg);
-                                                        /* one soft-key label (pos 1..4), its colours */
+                                                        /* one soft-key label in its own colours; pos 0..3
+                                                           is KEY1..KEY4, counted from 0 as EyeSim did; 1
+                                                           if outside */
 int LCDSetPos(int row, int column);                     /* move the text cursor; 1 if outside the text grid */
 int LCDGetPos(int *row, int *column);                   /* the text cursor */
 int LCDSetColor(COLOR fg, COLOR bg);                    /* text colours (default WHITE on BLACK) */
 int LCDSetFont(int font, int variation);                /* HELVETICA/TIMES/COURIER, NORMAL/BOLD/ITALICS (or
                                                            BOLD|ITALICS) */
-int LCDSetFontSize(int fontsize);                       /* 8..24 (default 10: 60 x 21 cells of 8 x 13
-                                                           pixels); 1 if invalid */
+int LCDSetFontSize(int fontsize);                       /* 8..24 (default 10: 80 x 21 cells of 6 x 13
+                                                           pixels, as EyeSim); 1 if invalid */
 int LCDSetMode(int mode);                               /* OR of LCD_* mode flags, e.g. LCD_NOSCROLLING |
                                                            LCD_HIDEMENU */
 int LCDRefresh(void);                                   /* show what was drawn (needed with

@@ -31,7 +31,8 @@ def LCDMenu(st1: str, st2: str, st3: str, st4: str) -> int:
 
 
 def LCDMenuI(pos: int, string: str, fg: int, bg: int) -> int:
-    """One soft-key label (pos 1..4), its colours."""
+    """One soft-key label in its own colours; pos 0..3 is KEY1..KEY4, counted from 0 as EyeSim did; 1 if
+    outside."""
     return C.LCDMenuI(pos, text(string), fg, bg)
 
 
@@ -51,7 +52,7 @@ def LCDSetFont(font: int, variation: int) -> int:
 
 
 def LCDSetFontSize(fontsize: int) -> int:
-    """8..24 (default 10: 60 x 21 cells of 8 x 13 pixels); 1 if invalid."""
+    """8..24 (default 10: 80 x 21 cells of 6 x 13 pixels, as EyeSim); 1 if invalid."""
     return C.LCDSetFontSize(fontsize)
 
 

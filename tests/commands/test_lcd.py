@@ -44,19 +44,23 @@ def ink_rows(image: np.ndarray) -> set[int]:
     return {y // CELL_HEIGHT for y in np.flatnonzero(image[:ROWS * CELL_HEIGHT].any(axis=(1, 2)))}
 
 
-def test_the_default_grid_is_60_columns_by_21_rows_above_the_menu_bar(program):
-    _sim, client = program
-    assert (CELL_WIDTH, CELL_HEIGHT, COLUMNS, ROWS, MENU_HEIGHT) == (8, 13, 60, 21, 38)
+def test_the_default_grid_is_eyesims_80_columns_by_21_rows_above_the_menu_bar(program):
+    """EyeSim's default font is X11's 6x13: 480 / 6 = 80 columns, (320 - 38) / 13 = 21 rows."""
+    sim, client = program
+    assert (CELL_WIDTH, CELL_HEIGHT, COLUMNS, ROWS, MENU_HEIGHT) == (6, 13, 80, 21, 38)
     assert client.call("LCD_GET_SIZE") == (0, 480, 320)
-    client.call("LCD_PRINTF", "x" * 60)
-    assert client.call("LCD_GET_POS") == (0, 0, 60)  # the line is full; the next character wraps
+    client.call("LCD_PRINTF", "x" * 80)
+    assert client.call("LCD_GET_POS") == (0, 0, 80)  # the line is full; the next character wraps
     client.call("LCD_PRINTF", "y")
     assert client.call("LCD_GET_POS") == (0, 1, 1)
-    client.call("LCD_SET_PRINTF", 20, 59, "z")  # the last cell exists
+    assert sim.robots[0].component(Lcd).text_rows() == ["x" * 80, "y"]
+    client.call("LCD_SET_PRINTF", 20, 79, "z")  # the last cell exists
     with pytest.raises(RemoteError, match="row 21 is outside the text rows 0..20"):
         client.call("LCD_SET_POS", 21, 0)
-    with pytest.raises(RemoteError, match="column 60 is outside"):
-        client.call("LCD_SET_POS", 0, 60)
+    with pytest.raises(RemoteError, match="column 80 is outside the text columns 0..79"):
+        client.call("LCD_SET_POS", 0, 80)
+    with pytest.raises(RemoteError, match="column 80 is outside"):
+        client.call("LCD_SET_PRINTF", 0, 80, "a")
 
 
 def test_newlines_tabs_and_carriage_returns_move_the_cursor_like_a_terminal(program):
@@ -95,8 +99,8 @@ def test_without_scrolling_the_text_continues_at_the_top(program):
 def test_without_line_feed_text_beyond_the_last_column_is_cut_off(program):
     sim, client = program
     client.call("LCD_SET_MODE", LCD_NOLINEFEED)
-    client.call("LCD_PRINTF", "x" * 70)
-    assert client.call("LCD_GET_POS") == (0, 0, 60)
+    client.call("LCD_PRINTF", "x" * 90)
+    assert client.call("LCD_GET_POS") == (0, 0, 80)
     assert ink_rows(screen(sim)) == {0}
     client.call("LCD_PRINTF", "\nnext")
     assert client.call("LCD_GET_POS") == (0, 1, 4)
@@ -127,8 +131,8 @@ def test_fonts_and_variations_look_different_and_sizes_change_the_grid(program):
             shapes.add(screen(sim)[:CELL_HEIGHT, :3 * CELL_WIDTH].tobytes())
     assert len(shapes) == 12
     client.call("LCD_CLEAR")
-    client.call("LCD_SET_FONT_SIZE", 24)  # 20 x 32 pixel cells: 24 columns, 8 rows
-    client.call("LCD_PRINTF", "M" * 25)
+    client.call("LCD_SET_FONT_SIZE", 24)  # 15 x 32 pixel cells: 32 columns, 8 rows
+    client.call("LCD_PRINTF", "M" * 33)
     assert client.call("LCD_GET_POS") == (0, 1, 1)
     lit = np.flatnonzero(screen(sim).any(axis=(1, 2)))
     assert lit.max() > 32 and lit.max() < 64
@@ -188,7 +192,7 @@ def test_images_in_colour_gray_and_binary_are_placed_and_scaled(program):
 def test_menu_entries_have_their_colours_and_hiding_the_menu_frees_its_rows(program):
     sim, client = program
     client.call("LCD_MENU", "A", "B", "C", "D")
-    client.call("LCD_MENU_I", 2, "GO", BLACK, GREEN)
+    client.call("LCD_MENU_I", 1, "GO", BLACK, GREEN)  # positions count from 0, as on EyeSim: 1 is KEY2
     bar_top = HEIGHT - MENU_HEIGHT
     assert pixel(client, 125, bar_top + 4) == GREEN  # inside KEY2's button
     assert pixel(client, 5, bar_top + 4) != GREEN
@@ -199,8 +203,20 @@ def test_menu_entries_have_their_colours_and_hiding_the_menu_frees_its_rows(prog
     client.call("LCD_SET_MODE", LCD_SHOWMENU)
     assert pixel(client, 125, bar_top + 4) == GREEN
     assert client.call("LCD_GET_POS")[1] == ROWS - 1  # the cursor stays on the screen's text rows
-    with pytest.raises(RemoteError, match="menu position 5 is not 1..4"):
-        client.call("LCD_MENU_I", 5, "x", WHITE, BLACK)
+    for position in (-1, 4):
+        with pytest.raises(RemoteError, match=rf"menu position {position} is not 0\.\.3 \(0 is KEY1"):
+            client.call("LCD_MENU_I", position, "x", WHITE, BLACK)
+
+
+def test_menu_entries_count_from_0_as_on_eyesim(program):
+    """EyeSim's graphics example labels the four keys with LCDMenuI(0..3): each lands on its key."""
+    sim, client = program
+    colours = (BLUE, WHITE, RED, GREEN)
+    for position, (label, colour) in enumerate(zip(("One", "Two", "Three", "Four"), colours)):
+        assert client.call("LCD_MENU_I", position, label, BLACK, colour) == (0,)
+    assert sim.robots[0].component(Lcd).menu == ["One", "Two", "Three", "Four"]
+    bar_top = HEIGHT - MENU_HEIGHT
+    assert [pixel(client, 120 * key + 5, bar_top + 4) for key in range(4)] == list(colours)
 
 
 def test_without_auto_refresh_the_screen_changes_only_on_refresh(program):

@@ -20,9 +20,11 @@ HELVETICA, TIMES, COURIER = 0, 1, 2
 NORMAL, BOLD, ITALICS = 0, 1, 2
 FONT_NAMES = {HELVETICA: "HELVETICA", TIMES: "TIMES", COURIER: "COURIER"}
 MIN_SIZE, MAX_SIZE = 8, 24
-DEFAULT_SIZE = 10  # gives 8x13-pixel cells: 60 columns x 21 rows above the menu bar
+# The default gives 6x13-pixel cells, the EyeBot's default X11 font "6x13": 80 columns x 21 rows
+# above the menu bar, where EyeSim's text wraps (docs/api/lcd.md#text).
+DEFAULT_SIZE = 10
 DEFAULT_FONT = COURIER  # fixed-width, like the EyeBot's own default LCD font
-CELL_WIDTH_PER_SIZE = 0.8  # cell width = ceil(0.8 * size) pixels
+CELL_WIDTH_PER_SIZE = 0.6  # cell width = ceil(0.6 * size) pixels: a monospaced font's advance
 CELL_HEIGHT_PER_SIZE = 1.3  # cell height = ceil(1.3 * size) pixels
 
 # DejaVu files for (font, variation); variation BOLD | ITALICS = bold italic.

@@ -37,7 +37,7 @@ int main(void)
     check("font times bold", LCDSetFont(TIMES, BOLD), 0);
     check("font size 24", LCDSetFontSize(24), 0);
     check("font size 30", LCDSetFontSize(30), 1);
-    LCDSetPrintf(4, 0, "Big"); /* 20 x 32 cells: row 4 starts at y = 128 */
+    LCDSetPrintf(4, 0, "Big"); /* 15 x 32 cells: row 4 starts at y = 128 */
     LCDSetFont(COURIER, NORMAL);
     LCDSetFontSize(10);
 
@@ -81,7 +81,7 @@ int main(void)
 
     /* The menu, and keys: KEYWait ignores KEY1, KEYGet takes the next key. */
     LCDMenu("A", "B", "C", "END");
-    LCDMenuI(2, "GO", BLACK, GREEN);
+    LCDMenuI(1, "GO", BLACK, GREEN); /* positions count from 0, as on EyeSim: 1 is KEY2 */
     check("key wait", KEYWait(KEY3), KEY3);
     check("key get", KEYGet(), KEY4);
 

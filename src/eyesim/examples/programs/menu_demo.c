@@ -72,7 +72,7 @@ int main(void)
     show_title();
     LCDSetPrintf(2, 0, "Robot %s (id %d). Choose with the keys below.", name, OSMachineID());
     LCDMenu("DRIVE", "TURN", "BEEP", "END");
-    LCDMenuI(4, "END", WHITE, MAROON);
+    LCDMenuI(3, "END", WHITE, MAROON); /* positions count from 0: 3 is KEY4 */
     LCDSetColor(LIGHTGRAY, BLACK);
     LCDSetPrintf(LOG_ROW - 1, 0, "Log:");
     LCDSetColor(WHITE, BLACK);

@@ -16,14 +16,15 @@ from eyesim.robot.lcd_fonts import BOLD, FONT_NAMES, ITALICS, NORMAL, cell_size
 
 WIDTH, HEIGHT = 480, 320
 MENU_HEIGHT = 38  # pixel rows of the soft-key menu bar at the bottom
-CELL_WIDTH, CELL_HEIGHT = cell_size(lcd_fonts.DEFAULT_SIZE)  # 8 x 13 pixels at the default font size
-COLUMNS = WIDTH // CELL_WIDTH  # 60 at the default font size
+CELL_WIDTH, CELL_HEIGHT = cell_size(lcd_fonts.DEFAULT_SIZE)  # 6 x 13 pixels at the default font size
+COLUMNS = WIDTH // CELL_WIDTH  # 80 at the default font size, as EyeSim's 6x13 font
 ROWS = (HEIGHT - MENU_HEIGHT) // CELL_HEIGHT  # 21 at the default font size, with the menu shown
 TAB = 4
 MENU_LABEL_LENGTH = 32  # LCD_MENU_STRLENGTH
 # Characters of one LCDPrintf's text drawn at most, the last ones (docs/api/lcd.md): more than a
-# screen holds, and what keeps one call's drawing within a few ms of the simulation thread.
-MAX_PRINT = 2048
+# screen holds (at size 8 with the menu hidden 29 rows of 96 cells and their line feeds: 2813),
+# and what keeps one call's drawing within a few ms of the simulation thread.
+MAX_PRINT = 4096
 
 WHITE, BLACK = 0xFFFFFF, 0x000000
 MENU_BACKGROUND = 0x303030
@@ -288,7 +289,7 @@ class Lcd(Component):
     def text_rows(self) -> list[str]:
         """The text the LCD shows, one string per text row (trailing blanks removed), from the
         top down to the last row with text. Rows and columns are those of the grid each
-        character was printed in: the default 8x13-pixel cells unless the program changed the
+        character was printed in: the default 6x13-pixel cells unless the program changed the
         font size. Text that a filled area or an image covered is gone; lines and pixels drawn
         over text leave it."""
         cells = self.text if self.shown_text is None else self.shown_text
@@ -308,15 +309,18 @@ class Lcd(Component):
         self._changed()
 
     def set_menu_entry(self, position: int, label: str, foreground: int, background: int) -> None:
-        """LCDMenuI: one soft key's label (position 1..4) in its own colours."""
-        if not 1 <= position <= 4:
-            raise ValueError(f"menu position {position} is not 1..4")
+        """LCDMenuI: one soft key's label in its own colours. Positions count from 0, as EyeSim and the
+        EyeBot's LCD library index their menu entries (0 is KEY1 ... 3 is KEY4; the official
+        graphics example labels the four keys with 0..3), although the headers' comment says 1..4
+        (docs/api/compatibility.md#lcdmenui-positions-count-from-0)."""
+        if not 0 <= position <= 3:
+            raise ValueError(f"menu position {position} is not 0..3 (0 is KEY1 ... 3 is KEY4, as on EyeSim)")
         entry = MenuEntry(label[:MENU_LABEL_LENGTH], check_color(foreground, "foreground"),
                           check_color(background, "background"))
         if self.menu is None:
             self.menu = ["", "", "", ""]
-        self.menu[position - 1] = entry.label
-        self.menu_entries[position - 1] = entry
+        self.menu[position] = entry.label
+        self.menu_entries[position] = entry
         self._draw_menu()
         self._changed()
 
