@@ -308,13 +308,13 @@ class Simulation:
         if self.clock.deterministic:
             self._flush_output(session)
         request = session.queued.popleft()
-        session.connection.resume()  # room in its queue again
         if at_us is None:
             # Realtime: calls answered at once move the program's clock on by their cost within
             # the step under way, never past it (it would run ahead of the simulation).
             at_us = max(self.time_us, min(session.local_time_us, self.time_us + self.step_us))
         request.time_us = at_us
         self._execute(request)
+        session.connection.resume()  # room in its queue again, unless the call now waits (pending)
 
     def _deterministic_round(self) -> None:
         if self.clock.paused:  # nothing goes on; the order of everything is kept for when it does
@@ -589,6 +589,8 @@ class Simulation:
         session.pending = still
         if answered:
             self._answered_later += 1
+            if not session.closed:
+                session.connection.resume()  # room for requests it holds back (program_server.MAX_QUEUED)
         return answered
 
     def _send(self, session: Session, frame: bytes) -> None:

@@ -10,8 +10,8 @@ Every socket is non-blocking. A connection reassembles its own frames, so a clie
 a frame and stalls holds up nobody. Replies go straight into the socket; what the kernel does not
 take at once waits in that connection's backlog, flushed when the socket is writable, so the
 simulation never waits for a slow reader. Two limits keep one program from sinking the rest:
-while a connection has MAX_QUEUED requests waiting or more than READ_PAUSE_BACKLOG bytes of
-replies unread, its socket is not read (TCP holds the sender back); a program that stops reading
+while a connection has MAX_QUEUED requests waiting (queued or in blocking calls) or more than
+READ_PAUSE_BACKLOG bytes of replies unread, its socket is not read (TCP holds the sender back); a program that stops reading
 its replies for STALL_TIMEOUT, or lets them pile up beyond MAX_BACKLOG, is disconnected with a
 logged reason, and its buffers are given back. A run holds at most MAX_CONNECTIONS connections
 (more are refused, and logged); one that has not sent its handshake within HANDSHAKE_TIMEOUT is
@@ -110,7 +110,7 @@ class ProgramConnection:
     def _take(self, data: bytes) -> None:
         """Decode requests up to the queue limit; the rest stays buffered until there is room."""
         try:
-            messages = self.decoder.feed(data, limit=MAX_QUEUED - len(self.session.queued))
+            messages = self.decoder.feed(data, limit=MAX_QUEUED - self._held())
         except ProtocolError as error:
             log.warning("%s: %s; closing the connection", self.session.peer, error)
             self.send(encode_error(0, 0, error.code, str(error)))
@@ -150,8 +150,13 @@ class ProgramConnection:
             self._take(b"")
         self.update_interest()
 
+    def _held(self) -> int:
+        """Requests of this program the simulation holds: queued, and waiting in blocking calls
+        (5,000 pipelined KEYWait requests were once all taken)."""
+        return len(self.session.queued) + len(self.session.pending)
+
     def _has_room(self) -> bool:
-        return len(self.session.queued) < MAX_QUEUED and self.backlog.size < READ_PAUSE_BACKLOG
+        return self._held() < MAX_QUEUED and self.backlog.size < READ_PAUSE_BACKLOG
 
     def update_interest(self) -> None:
         """Read while the program's queue and unread replies are small; write while replies wait."""
