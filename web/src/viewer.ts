@@ -150,11 +150,6 @@ export class Viewer {
     else this.modeWatchers.push(listener);
   }
 
-  /** Whether the 3D view is being recorded as a video now. */
-  get recordingVideo(): boolean {
-    return this.video.recording;
-  }
-
   get status(): StatusMessage | null {
     return this.lastStatus;
   }
