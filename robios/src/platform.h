@@ -6,6 +6,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdio.h>
 
 #if defined(_WIN32)
 /* Windows 7 and later: WSAPoll, WSA_FLAG_NO_HANDLE_INHERIT, AI_NUMERICSERV. */
@@ -95,6 +96,14 @@ bool es_program_threads_alive(bool (*is_library)(long id));
 const char *es_program_name(void);
 
 long es_process_id(void);
+
+/* Opens, for reading, the file where the simulator's run on `port` (digits) keeps its program token
+ * for programs started by hand: program-token-<port> in EyeSim's state folder for this user
+ * (EYESIM_STATE_DIR, else XDG_STATE_HOME/eyesim or ~/.local/state/eyesim on Linux, ~/Library/
+ * Application Support/eyesim on macOS, %LOCALAPPDATA%\eyesim on Windows: as eyesim/paths.py
+ * state_dir). `path` gets the file's name (UTF-8, for messages; "" when there is no state folder).
+ * NULL when the file cannot be opened. */
+FILE *es_open_token_file(const char *port, char *path, size_t path_size);
 
 /* True when stdout is a pipe (the simulator started the program and shows its output live). */
 bool es_stdout_is_pipe(void);

@@ -7,6 +7,7 @@
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <poll.h>
+#include <pwd.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdint.h>
@@ -275,4 +276,40 @@ bool es_stdout_is_pipe(void)
 {
     struct stat info;
     return fstat(STDOUT_FILENO, &info) == 0 && S_ISFIFO(info.st_mode);
+}
+
+FILE *es_open_token_file(const char *port, char *path, size_t path_size)
+{
+    const char *dir = getenv("EYESIM_STATE_DIR");
+    const char *state = getenv("XDG_STATE_HOME");
+    const char *home = getenv("HOME");
+    if (!home || !*home) {
+        struct passwd *user = getpwuid(getuid());
+        home = user ? user->pw_dir : NULL;
+    }
+    int n;
+    if (dir && *dir)
+        n = snprintf(path, path_size, "%s/program-token-%s", dir, port);
+#if defined(__APPLE__)
+    else if (home && *home)
+        n = snprintf(path, path_size, "%s/Library/Application Support/eyesim/program-token-%s", home, port);
+#else
+    else if (state && *state)
+        n = snprintf(path, path_size, "%s/eyesim/program-token-%s", state, port);
+    else if (home && *home)
+        n = snprintf(path, path_size, "%s/.local/state/eyesim/program-token-%s", home, port);
+#endif
+    else
+        n = -1;
+    (void)state;
+    if (n < 0 || (size_t)n >= path_size) {
+        if (path_size)
+            path[0] = '\0';
+        return NULL;
+    }
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    FILE *file = fd < 0 ? NULL : fdopen(fd, "r");
+    if (fd >= 0 && !file)
+        close(fd);
+    return file;
 }

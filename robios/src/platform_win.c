@@ -9,6 +9,7 @@
 #include <pthread.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <wchar.h>
 
@@ -287,4 +288,47 @@ bool es_stdout_is_pipe(void)
 {
     HANDLE out = GetStdHandle(STD_OUTPUT_HANDLE);
     return out && out != INVALID_HANDLE_VALUE && GetFileType(out) == FILE_TYPE_PIPE;
+}
+
+/* Appends UTF-16 text to path (of capacity size); false when it does not fit. */
+static bool append_wide(wchar_t *path, size_t size, const wchar_t *text)
+{
+    size_t used = wcslen(path), more = wcslen(text);
+    if (used + more + 1 > size)
+        return false;
+    memcpy(path + used, text, (more + 1) * sizeof *text);
+    return true;
+}
+
+FILE *es_open_token_file(const char *port, char *path, size_t path_size)
+{
+    wchar_t name[32] = L"\\program-token-";
+    size_t length = wcslen(name);
+    for (const char *c = port; *c && length + 1 < sizeof name / sizeof *name; c++)
+        name[length++] = (wchar_t)(unsigned char)*c; /* digits */
+    name[length] = L'\0';
+
+    wchar_t file[MAX_PATH * 2] = L"";
+    const wchar_t *dir = _wgetenv(L"EYESIM_STATE_DIR");
+    const wchar_t *local = _wgetenv(L"LOCALAPPDATA");
+    const wchar_t *profile = _wgetenv(L"USERPROFILE");
+    size_t size = sizeof file / sizeof *file;
+    bool fits;
+    if (dir && *dir)
+        fits = append_wide(file, size, dir) && append_wide(file, size, name);
+    else if (local && *local)
+        fits = append_wide(file, size, local) && append_wide(file, size, L"\\eyesim") && append_wide(file, size, name);
+    else if (profile && *profile)
+        fits = append_wide(file, size, profile) && append_wide(file, size, L"\\AppData\\Local\\eyesim") &&
+               append_wide(file, size, name);
+    else
+        fits = false;
+    if (path_size)
+        path[0] = '\0';
+    if (!fits)
+        return NULL;
+    int bytes = WideCharToMultiByte(CP_UTF8, 0, file, -1, path, (int)path_size, NULL, NULL);
+    if (bytes <= 0 && path_size)
+        path[0] = '\0';
+    return _wfopen(file, L"rb");
 }

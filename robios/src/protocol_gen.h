@@ -4,7 +4,7 @@
 
 #include <stdint.h>
 
-#define ES_PROTOCOL_VERSION 1u
+#define ES_PROTOCOL_VERSION 2u
 #define ES_DEFAULT_HOST "127.0.0.1"
 #define ES_DEFAULT_PORT 9797
 #define ES_MAX_FRAME 16777216u
@@ -21,6 +21,7 @@
 #define ES_ERR_BAD_ARGUMENT 7
 #define ES_ERR_NO_HANDSHAKE 8
 #define ES_ERR_SHUTDOWN 9
+#define ES_ERR_BAD_TOKEN 10
 
 typedef enum { ES_T_END = 0, ES_T_I32 = 1, ES_T_U32 = 2, ES_T_F64 = 3, ES_T_STR = 4, ES_T_BYTES = 5, ES_T_I32S = 6 } es_type;
 
@@ -137,7 +138,7 @@ typedef struct {
 } es_op_layout;
 
 static const es_op_layout ES_OP_LAYOUTS[] = {
-    {1, "HELLO", 4, {ES_T_U32, ES_T_STR, ES_T_STR, ES_T_U32}, 3, {ES_T_U32, ES_T_I32, ES_T_STR}},
+    {1, "HELLO", 5, {ES_T_U32, ES_T_STR, ES_T_STR, ES_T_U32, ES_T_STR}, 3, {ES_T_U32, ES_T_I32, ES_T_STR}},
     {2, "THREADS", 0, {ES_T_END}, 1, {ES_T_I32}},
     {257, "LCD_PRINTF", 1, {ES_T_STR}, 1, {ES_T_I32}},
     {258, "LCD_SET_PRINTF", 3, {ES_T_I32, ES_T_I32, ES_T_STR}, 1, {ES_T_I32}},
@@ -250,6 +251,7 @@ typedef struct {
     const char *name;
 } es_length_limit;
 static const es_length_limit ES_LENGTH_LIMITS[] = {
+    {1, 4, 1024u, "token"},
     {257, 0, 65536u, "text"},
     {258, 2, 65536u, "text"},
     {260, 0, 1024u, "key1"},
@@ -263,7 +265,7 @@ static const es_length_limit ES_LENGTH_LIMITS[] = {
     {1794, 1, 8388608u, "sound"},
     {3843, 1, 1024u, "message"},
 };
-#define ES_LENGTH_LIMIT_COUNT 12
+#define ES_LENGTH_LIMIT_COUNT 13
 static const es_type ES_ERROR_LAYOUT[] = {ES_T_I32, ES_T_STR};
 
 #endif

@@ -61,7 +61,7 @@ static atomic_long library_tids[LIBRARY_THREADS_MAX]; /* system ids of the libra
 
 _Noreturn void es_fatal(int status, const char *format, ...)
 {
-    char line[1024];
+    char line[3072]; /* a refused handshake's reason and where its token came from */
     va_list ap;
     va_start(ap, format);
     vsnprintf(line, sizeof line, format, ap);
@@ -443,12 +443,46 @@ static es_socket open_connection(const char *host, const char *port, double time
     }
 }
 
-/* HELLO: protocol version, which robot (EYESIM_ROBOT), program name, pid. Refusal ends the program. */
-static void handshake(double timeout)
+#define TOKEN_MAX 1024 /* as protocol.json's HELLO allows */
+
+/* The run's program token (docs/running.md#the-program-token): EYESIM_TOKEN, set for the programs
+ * the simulator starts; else the file its run on `port` wrote for programs started by hand; else ""
+ * (a simulator started with --no-token wants none). `source` says where it came from, for the
+ * message when the simulator refuses it. */
+static void program_token(const char *port, char *token, char *source, size_t source_size)
+{
+    const char *given = getenv("EYESIM_TOKEN");
+    if (given && *given) {
+        snprintf(token, TOKEN_MAX + 1, "%s", given);
+        snprintf(source, source_size, "it sent EYESIM_TOKEN");
+        return;
+    }
+    char path[1024];
+    FILE *file = es_open_token_file(port, path, sizeof path);
+    token[0] = '\0';
+    if (!file) {
+        snprintf(source, source_size, "EYESIM_TOKEN is not set and %s%s", *path ? path : "EyeSim's state folder",
+                 *path ? " cannot be read" : " is not known");
+        return;
+    }
+    if (!fgets(token, TOKEN_MAX + 1, file))
+        token[0] = '\0';
+    fclose(file);
+    size_t length = strlen(token);
+    while (length && (token[length - 1] == '\n' || token[length - 1] == '\r' || token[length - 1] == ' '))
+        token[--length] = '\0';
+    snprintf(source, source_size, "it sent the token in %s", path);
+}
+
+/* HELLO: protocol version, which robot (EYESIM_ROBOT), program name, pid, the run's program token.
+ * Refusal ends the program. */
+static void handshake(const char *port, double timeout)
 {
     const char *robot = getenv("EYESIM_ROBOT");
-    es_value hello[4] = {es_int(ES_PROTOCOL_VERSION), es_text(robot), es_text(es_program_name()),
-                          es_int(es_process_id())};
+    char token[TOKEN_MAX + 1], token_source[1200];
+    program_token(port, token, token_source, sizeof token_source);
+    es_value hello[5] = {es_int(ES_PROTOCOL_VERSION), es_text(robot), es_text(es_program_name()),
+                          es_int(es_process_id()), es_text(token)};
     uint32_t id = new_request_id();
     es_buf frame = {0};
     if (es_encode_message(&frame, ES_OP_HELLO, ES_KIND_REQUEST, id, hello) != ES_CODEC_OK)
@@ -479,6 +513,9 @@ static void handshake(double timeout)
     if (rc || header.op != ES_OP_HELLO || header.request_id != id || header.kind == ES_KIND_REQUEST)
         es_fatal(ES_EXIT_PROTOCOL, "%s sent a malformed handshake reply (%s)", address,
                  rc ? es_codec_error(rc) : "not an answer to HELLO");
+    if (header.kind == ES_KIND_ERROR && fields[0].i == ES_ERR_BAD_TOKEN)
+        es_fatal(ES_EXIT_REFUSED, "the simulator at %s refused this program: %.*s [%s]", address,
+                 (int)fields[1].n, (const char *)fields[1].p, token_source);
     if (header.kind == ES_KIND_ERROR)
         es_fatal(ES_EXIT_REFUSED, "the simulator at %s refused this program: %.*s", address, (int)fields[1].n,
                  (const char *)fields[1].p);
@@ -507,7 +544,7 @@ static void connect_to_simulator(void)
     double timeout = connect_timeout();
     sock = open_connection(host, port, timeout);
     es_socket_configure(sock);
-    handshake(timeout);
+    handshake(port, timeout);
     atexit(note_exit);
     start_library_threads();
     atomic_store(&connected, true);

@@ -4,9 +4,9 @@
 typedef union { int64_t i; double f; const char *s; struct { const uint8_t *p; uint32_t n; } b; struct { const int32_t *p; uint32_t n; } a; } vector_value;
 typedef struct { const char *name; uint16_t op; uint16_t kind; uint32_t request_id; int n_values; vector_value values[8]; const char *hex; } protocol_vector;
 static const protocol_vector PROTOCOL_VECTORS[] = {
-    {"hello request", ES_OP_HELLO, ES_KIND_REQUEST, 1, 4, {{.i = 1}, {.s = "S4"}, {.s = "drive.x"}, {.i = 4242}}, "210000000100000001000000010000000200000053340700000064726976652e7892100000"},
-    {"hello reply", ES_OP_HELLO, ES_KIND_REPLY, 1, 3, {{.i = 1}, {.i = 1}, {.s = "S4"}}, "1600000001000100010000000100000001000000020000005334"},
-    {"hello default robot", ES_OP_HELLO, ES_KIND_REQUEST, 7, 4, {{.i = 1}, {.s = ""}, {.s = ""}, {.i = 0}}, "18000000010000000700000001000000000000000000000000000000"},
+    {"hello request", ES_OP_HELLO, ES_KIND_REQUEST, 1, 5, {{.i = 2}, {.s = "S4"}, {.s = "drive.x"}, {.i = 4242}, {.s = "Zx7-tok"}}, "2c0000000100000001000000020000000200000053340700000064726976652e7892100000070000005a78372d746f6b"},
+    {"hello reply", ES_OP_HELLO, ES_KIND_REPLY, 1, 3, {{.i = 2}, {.i = 1}, {.s = "S4"}}, "1600000001000100010000000200000001000000020000005334"},
+    {"hello default robot", ES_OP_HELLO, ES_KIND_REQUEST, 7, 5, {{.i = 2}, {.s = ""}, {.s = ""}, {.i = 0}, {.s = ""}}, "1c00000001000000070000000200000000000000000000000000000000000000"},
     {"lcd printf utf8", ES_OP_LCD_PRINTF, ES_KIND_REQUEST, 2, 1, {{.s = "Hi \u00e9\n"}}, "12000000010100000200000006000000486920c3a90a"},
     {"lcd set printf", ES_OP_LCD_SET_PRINTF, ES_KIND_REQUEST, 3, 3, {{.i = 20}, {.i = -1}, {.s = "row 20"}}, "1a000000020100000300000014000000ffffffff06000000726f77203230"},
     {"lcd menu", ES_OP_LCD_MENU, ES_KIND_REQUEST, 4, 4, {{.s = "GO"}, {.s = ""}, {.s = "  "}, {.s = "END"}}, "1f000000040100000400000002000000474f0000000002000000202003000000454e44"},

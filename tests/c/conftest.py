@@ -23,7 +23,7 @@ from eyesim.protocol import FrameDecoder, decode_payload, encode_error, encode_f
 ROOT = Path(__file__).resolve().parents[2]
 DEV_PREFIX = ROOT / "build" / "robios"
 DEV_BUILD = ROOT / "build" / "robios-build"
-ENV_NAMES = ("EYESIM_HOST", "EYESIM_PORT", "EYESIM_ROBOT", "EYESIM_CONNECT_TIMEOUT")
+ENV_NAMES = ("EYESIM_HOST", "EYESIM_PORT", "EYESIM_ROBOT", "EYESIM_CONNECT_TIMEOUT", "EYESIM_TOKEN")
 
 
 # ---- The library ------------------------------------------------------------------------------

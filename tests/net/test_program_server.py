@@ -6,7 +6,7 @@ import time
 import pytest
 from support.client import ProgramClient, RemoteError
 from support.scenes import arena
-from support.simulator import running_simulation
+from support.simulator import running_simulation, token_for
 
 from eyesim.protocol import encode_frame, encode_message, generated as g
 
@@ -53,7 +53,7 @@ def test_a_freed_robot_can_be_taken_again(simulation):
 def test_wrong_protocol_version_is_refused_with_a_reason(simulation):
     _, port = simulation
     with pytest.raises(RemoteError) as error:
-        ProgramClient(port).call("HELLO", g.VERSION + 1, "", "old", 0)
+        ProgramClient(port).call("HELLO", g.VERSION + 1, "", "old", 0, "")
     assert error.value.code == g.ERR_VERSION and "eyesim cc" in error.value.message
 
 
@@ -97,7 +97,7 @@ def test_an_oversized_frame_closes_only_that_connection(simulation):
 def test_a_stalled_half_frame_delays_no_other_client(simulation):
     _, port = simulation
     staller = socket.create_connection(("127.0.0.1", port))
-    frame = encode_message(g.OP_HELLO, g.KIND_REQUEST, 1, (g.VERSION, "", "staller", 0))
+    frame = encode_message(g.OP_HELLO, g.KIND_REQUEST, 1, (g.VERSION, "", "staller", 0, token_for(port)))
     staller.sendall(frame[:6])  # the length and half the header, then nothing
     other = ProgramClient(port)
     start = time.perf_counter()
@@ -134,7 +134,7 @@ def test_a_huge_program_name_is_shortened_in_the_log(simulation, caplog):
     _, port = simulation
     client = ProgramClient(port)
     with caplog.at_level("INFO", logger="eyesim"):
-        assert client.call("HELLO", g.VERSION, "", "p" * (1 << 20), 0)[1] == 1
+        assert client.call("HELLO", g.VERSION, "", "p" * (1 << 20), 0, client.token)[1] == 1
         assert client.call("OS_GET_COUNT")[0] >= 0
     (line,) = [r.getMessage() for r in caplog.records if r.getMessage().endswith("connected")]
     assert line.startswith("p" * 97 + "... (robot 1, 127.0.0.1:") and len(line) < 200

@@ -54,7 +54,7 @@ def test_the_worst_request_of_every_operation_is_answered_within_bounded_memory(
         browser = WatchingBrowser(server.port)
         client = ProgramClient(port, timeout=60)
         try:
-            client.call("HELLO", *worst_hello(1))
+            client.call("HELLO", *worst_hello(1, client.token))
             # The camera renderer starts at the first image (OpenGL: libraries and a context, about
             # 150 MB once): part of setting up, not something requests pile up.
             client.call("CAM_INIT", 0)

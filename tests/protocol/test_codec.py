@@ -9,7 +9,7 @@ from eyesim.protocol import (FrameDecoder, ProtocolError, decode_payload, encode
                              generated as g)
 
 FRAMES = [
-    encode_message(g.OP_HELLO, g.KIND_REQUEST, 1, (g.VERSION, "S4", "prog", 7)),
+    encode_message(g.OP_HELLO, g.KIND_REQUEST, 1, (g.VERSION, "S4", "prog", 7, "token")),
     encode_message(g.OP_PSD_GET, g.KIND_REQUEST, 2, (1,)),
     encode_message(g.OP_LCD_PRINTF, g.KIND_REQUEST, 3, ("x" * 5000,)),
     encode_message(g.OP_LCD_CLEAR, g.KIND_REQUEST, 4, ()),

@@ -6,6 +6,8 @@ import socket
 
 from eyesim.protocol import FrameDecoder, decode_payload, encode_message, generated as g
 
+from support.simulator import token_for
+
 
 class RemoteError(Exception):
     def __init__(self, code: int, message: str):
@@ -15,7 +17,11 @@ class RemoteError(Exception):
 
 
 class ProgramClient:
-    def __init__(self, port: int, host: str = "127.0.0.1", timeout: float = 10.0):
+    """`token`: the program token its HELLO sends; by default the one of the in-process simulator
+    on `port` (support.simulator.token_for)."""
+
+    def __init__(self, port: int, host: str = "127.0.0.1", timeout: float = 10.0, token: str | None = None):
+        self.token = token_for(port) if token is None else token
         self.sock = socket.create_connection((host, port), timeout=timeout)
         self.sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
         self.decoder = FrameDecoder()
@@ -23,7 +29,7 @@ class ProgramClient:
         self.inbox = []
 
     def hello(self, robot: str = "", program: str = "test") -> tuple:
-        return self.call("HELLO", g.VERSION, robot, program, 0)
+        return self.call("HELLO", g.VERSION, robot, program, 0, self.token)
 
     def send(self, name: str, *args) -> int:
         self.next_id += 1

@@ -10,16 +10,28 @@ from eyesim.core.engine import Simulation
 from eyesim.net.program_server import ProgramServer
 
 
+_tokens: dict[int, str] = {}  # port -> program token of the simulations running in this process
+
+
+def token_for(port: int) -> str:
+    """The program token of the in-process simulator on `port` ('' for none), which the test
+    clients and programs send in their HELLO."""
+    return _tokens.get(port, "")
+
+
 @contextlib.contextmanager
-def running_simulation(scene, mode: str = "realtime", speed: float = 1.0, expect=()):
-    """Yield (sim, port) with the simulation loop running; stops everything afterwards.
+def running_simulation(scene, mode: str = "realtime", speed: float = 1.0, expect=(), require_token: bool = True):
+    """Yield (sim, port) with the simulation loop running; stops everything afterwards. Programs
+    need the run's program token (token_for(port), sim.program_token) unless not `require_token`.
 
     `expect`: robot ids whose program will connect; deterministic time waits for them, as it
     does for the programs `eyesim run` launches."""
     sim = Simulation(scene, Clock(mode, speed))
     sim.expected_programs.update(expect)
-    server = ProgramServer(sim, "127.0.0.1", 0)
+    server = ProgramServer(sim, "127.0.0.1", 0, require_token=require_token)
     server.start()
+    if server.token is not None:
+        _tokens[server.port] = server.token
     errors = []
 
     def loop():
@@ -37,4 +49,5 @@ def running_simulation(scene, mode: str = "realtime", speed: float = 1.0, expect
         thread.join(timeout=10)
         sim.shutdown_sessions()
         server.stop()
+        _tokens.pop(server.port, None)
     assert not errors, errors

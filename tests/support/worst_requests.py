@@ -158,7 +158,7 @@ def worst_requests(robot_id: int = 1):
         yield name, args() if callable(args) else args
 
 
-def worst_hello(robot_id: int = 1) -> tuple:
+def worst_hello(robot_id: int = 1, token: str = "") -> tuple:
     """HELLO with the robot chosen by number and the longest program name a frame carries."""
     selector = str(robot_id)
-    return (g.VERSION, selector, "p" * (LARGEST - 4 - 4 - len(selector) - 4), U32_MAX)
+    return (g.VERSION, selector, "p" * (LARGEST - 4 - 4 - len(selector) - 4 - 4 - len(token)), U32_MAX, token)

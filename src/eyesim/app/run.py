@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import logging
 import os
@@ -16,6 +17,7 @@ from eyesim.core.clock import DETERMINISTIC, MAX_SPEED, REALTIME, Clock
 from eyesim.core.engine import DEFAULT_CALL_TIME_US, Simulation
 from eyesim.core.stalls import StallWatch
 from eyesim.net.program_server import ProgramServer
+from eyesim.net.program_token import TokenFile
 from eyesim.programs.launcher import Launcher
 from eyesim.protocol import generated as g
 from eyesim.scene import SceneError
@@ -63,8 +65,8 @@ def register(subparsers) -> None:
                              "(besides the current folder and the bundled examples); repeatable")
     parser.add_argument("--open", action="store_true", help="open the viewer in a web browser")
     parser.add_argument("--no-token", action="store_true",
-                        help="serve the viewer without its access token (loopback only; any local user can then "
-                             "use it)")
+                        help="serve the viewer without its access token and let programs connect without the "
+                             "program token (loopback only; any local user can then use both)")
     parser.add_argument("--verbose", "-v", action="store_true", help="log connections and internal events")
     parser.set_defaults(func=main)
 
@@ -153,13 +155,14 @@ def status_line(robot, run) -> str:
 def main(args) -> int:
     logging.basicConfig(level=logging.INFO if args.verbose else logging.WARNING, format="eyesim: %(message)s")
     try:
-        return simulate(args)
+        with contextlib.ExitStack() as cleanup:  # what the run leaves behind, however it ends
+            return simulate(args, cleanup)
     except UsageError as error:
         print(f"eyesim run: {error}", file=sys.stderr)
         return 2
 
 
-def simulate(args) -> int:
+def simulate(args, cleanup: contextlib.ExitStack) -> int:
     speed = parse_speed(args.speed)
     if args.wall_limit is not None and not args.wall_limit > 0:
         raise UsageError(f"--wall-limit {args.wall_limit:g}: expected a positive number of seconds")
@@ -187,9 +190,20 @@ def simulate(args) -> int:
         sim.events.subscribe(robot_log)
 
     io = None  # the viewer's thread; programs are served by the simulation thread itself
-    server = ProgramServer(sim, args.host, args.port)
     try:
-        server.start()
+        server = ProgramServer(sim, args.host, args.port, require_token=not args.no_token)
+    except ValueError as error:  # --no-token on an address other machines reach
+        raise UsageError(str(error)) from None
+    token_file = None
+
+    def before_listening(port: int) -> None:  # the file is there before any program can connect
+        nonlocal token_file
+        token_file = write_token_file(sim, server.token, port)
+        if token_file is not None:
+            cleanup.callback(token_file.remove)
+
+    try:
+        server.start(before_listening)
     except OSError as error:
         raise UsageError(f"cannot listen for programs on {args.host}:{args.port}: {error.strerror} "
                          f"(is another simulator running? try --port 0)") from None
@@ -221,6 +235,8 @@ def simulate(args) -> int:
             webbrowser.open(viewer.url)
     print(f"EyeSim: {len(sim.robots)} robot(s), programs connect to {args.host}:{server.port} "
           f"({mode} clock{'' if speed == 1 else f', speed {args.speed}'})", flush=True)
+    if token_file is not None:
+        print(f"EyeSim: program token for programs started by hand (as this user): {token_file.path}", flush=True)
 
     recorders = start_recorders(sim, args)
     for robot_id, path in sorted(programs.items()):
@@ -269,6 +285,23 @@ def simulate(args) -> int:
     if wall_limit is not None and wall_limit.reached:
         return 1
     return 1 if any(run.failed for run in launcher.runs) else 0
+
+
+def write_token_file(sim, token: str | None, port: int) -> TokenFile | None:
+    """The run's program token in the file programs started by hand read (net/program_token.py);
+    None without a token, or when it cannot be written (said once: such programs then need
+    EYESIM_TOKEN)."""
+    if token is None:
+        return None
+    token_file = TokenFile(token, port)
+    try:
+        token_file.write()
+    except OSError as error:
+        print(f"eyesim: cannot write the program token to {token_file.path} ({error.strerror}); a program "
+              f"started by hand needs EYESIM_TOKEN={token}", file=sys.stderr, flush=True)
+        return None
+    sim.program_token_file = token_file.path
+    return token_file
 
 
 def _say_why_the_run_stands_still(lines: list[str]) -> None:

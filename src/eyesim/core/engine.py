@@ -23,6 +23,7 @@ import itertools
 import logging
 import queue
 import reprlib
+import secrets
 import struct
 import time
 import traceback
@@ -31,7 +32,8 @@ from collections import deque
 from eyesim import commands
 from eyesim.core.clock import Clock
 from eyesim.core.events import EventBus
-from eyesim.net.program_server import ProgramSockets
+from eyesim.net import program_token
+from eyesim.net.program_server import ProgramSockets, version_refusal
 from eyesim.net.session import Deferred, Pending, Request, Session
 from eyesim.protocol import encode_error, encode_message, generated as g
 from eyesim.protocol.ops import DEVICE, LOCAL
@@ -69,6 +71,10 @@ class Simulation:
         # Process ids of programs whose connection has closed: they are exiting, and the end of a
         # run gives them a moment to do so before stopping them (programs/launcher.py).
         self.disconnected_pids: set[int] = set()
+        # The run's program token (net/program_token.py), which every HELLO must carry; None: any
+        # program may connect (no program port, or --no-token on loopback). Set before the run starts.
+        self.program_token: str | None = None
+        self.program_token_file = None  # the Path programs started by hand read it from, if written
         self.stop_when_programs_done = False  # end the run once no program is connected or expected
         self.time_us = 0
         self.steps = 0
@@ -412,6 +418,8 @@ class Simulation:
                 result = commands.HANDLERS[op.code](self, session.robot, request)
         except commands.CommandError as error:
             self._answer(request, encode_error(op.code, request.request_id, error.code, str(error)))
+            if error.code == g.ERR_BAD_TOKEN:  # no second guess on this connection
+                session.connection.close(flush=True)
             return
         except Exception:  # a fault stays with its call: the program gets an error, everyone else goes on
             log.error("handler for %s from %s failed:\n%s", op.name, session.name, traceback.format_exc())
@@ -513,14 +521,16 @@ class Simulation:
             self._take_turn(session)
 
     def _hello(self, request: Request) -> tuple:
-        version, selector, program, pid = request.args
+        version, selector, program, pid, token = request.args
         session = request.session
         if version != g.VERSION:
-            raise commands.CommandError(f"protocol version {version} is not supported; this simulator speaks "
-                                        f"version {g.VERSION} (rebuild the program with this EyeSim's `eyesim cc`)",
-                                        g.ERR_VERSION)
+            raise commands.CommandError(version_refusal(version), g.ERR_VERSION)
         if session.robot is not None:
             raise commands.CommandError("handshake sent twice", g.ERR_BAD_PAYLOAD)
+        if self.program_token is not None and not secrets.compare_digest(token.encode(), self.program_token.encode()):
+            log.warning("refused a program from %s (%s, pid %d): %s program token", session.peer,
+                        reprlib.repr(program), pid, "wrong" if token else "no")
+            raise commands.CommandError(program_token.refusal(token, self.program_token_file), g.ERR_BAD_TOKEN)
         robot = self._choose_robot(selector)
         session.robot, session.program, session.pid = robot, program, pid
         session.local_time_us = self.time_us

@@ -14,18 +14,20 @@ while a connection has MAX_QUEUED requests waiting (queued or in blocking calls)
 READ_PAUSE_BACKLOG bytes of replies unread, its socket is not read (TCP holds the sender back); a program that stops reading
 its replies for STALL_TIMEOUT, or lets them pile up beyond MAX_BACKLOG, is disconnected with a
 logged reason, and its buffers are given back. A run holds at most MAX_CONNECTIONS connections
-(more are refused, and logged); one that has not sent its handshake within HANDSHAKE_TIMEOUT is
-closed; and when the process runs out of descriptors, accepting rests for a second instead of
+(past it, the oldest that has not said HELLO makes room, or the new one is refused, and logged);
+one that has not sent its handshake within HANDSHAKE_TIMEOUT is closed; and when the process runs out of descriptors, accepting rests for a second instead of
 spinning on a listener it cannot serve."""
 
 from __future__ import annotations
 
 import errno
 import logging
+import os
 import selectors
 import socket
 import time
 
+from eyesim.net import program_token
 from eyesim.net.backlog import Backlog
 from eyesim.net.session import Request, Session
 from eyesim.protocol import FrameDecoder, ProtocolError, decode_payload, encode_error, generated as g
@@ -40,6 +42,18 @@ STALL_TIMEOUT = 30.0  # s a program may leave its replies unread (a debugger's b
 MAX_CONNECTIONS = 256  # open program connections of one run (a class's robots are far fewer)
 HANDSHAKE_TIMEOUT = 5.0  # s from connecting to the HELLO before a connection is closed
 ACCEPT_REST = 1.0  # s the listeners rest after the process ran out of file descriptors
+
+
+def version_refusal(version: int) -> str:
+    return (f"protocol version {version} is not supported; this simulator speaks version {g.VERSION} "
+            f"(rebuild the program with this EyeSim's `eyesim cc`)")
+
+
+def hello_version(message) -> int | None:
+    """The protocol version a HELLO starts with (every version's HELLO does), or None."""
+    if message.op != g.OP_HELLO or len(message.payload) < 4:
+        return None
+    return int.from_bytes(bytes(message.payload[:4]), "little")
 
 
 class ProgramConnection:
@@ -133,7 +147,11 @@ class ProgramConnection:
         try:
             args = decode_payload(op.request, message.payload, op.lengths)
         except ProtocolError as error:
-            self.send(encode_error(message.op, message.request_id, error.code, str(error)))
+            code, text = error.code, str(error)
+            version = hello_version(message)
+            if error.code == g.ERR_BAD_PAYLOAD and version not in (None, g.VERSION):  # an older HELLO's fields
+                code, text = g.ERR_VERSION, version_refusal(version)
+            self.send(encode_error(message.op, message.request_id, code, text))
             return
         self.sockets.deliver(Request(self.session, op, message.request_id, args))
 
@@ -282,6 +300,18 @@ class ProgramSockets:
                             connection.session.peer, self.handshake_timeout)
                 connection.close()
 
+    def _evict_silent(self) -> bool:
+        """At the cap, make room by closing the oldest connection that has not said HELLO (so sockets
+        that never will cannot keep real programs out); False when every one has."""
+        silent = [c for c in self.connections if c.session.robot is None]
+        if not silent:
+            return False
+        oldest = min(silent, key=lambda c: c.connected_at)
+        log.warning("%s: closed without a handshake to make room (%d connections open, the most a run takes)",
+                    oldest.session.peer, self.max_connections)
+        oldest.close()
+        return True
+
     def _rest(self) -> None:
         """Out of file descriptors: stop watching the listeners for ACCEPT_REST (the kernel keeps
         new connections in its backlog), rather than wake at once, again and again."""
@@ -314,7 +344,7 @@ class ProgramSockets:
             if error.errno in (errno.EMFILE, errno.ENFILE, errno.ENOBUFS, errno.ENOMEM):
                 self._rest()
             return
-        if len(self.connections) >= self.max_connections:
+        if len(self.connections) >= self.max_connections and not self._evict_silent():
             self._refused += 1
             if self._refused == 1:  # the first of a burst now, the rest counted once a second
                 log.warning("refused a program connection from %s:%s: %d are open, the most a run takes",
@@ -346,17 +376,39 @@ class ProgramSockets:
 
 class ProgramServer:
     """Listens for programs on host:port (port 0 = any free port; see `port` once started). The
-    simulation thread accepts and serves the connections (see ProgramSockets)."""
+    simulation thread accepts and serves the connections (see ProgramSockets).
 
-    def __init__(self, sim, host: str = g.DEFAULT_HOST, port: int = g.DEFAULT_PORT):
+    Every HELLO must carry the run's program token (net/program_token.py): `token`, else a new
+    random one; `require_token=False` lets any program in, on loopback only (NoTokenRefused, a
+    ValueError, for any other host). The token is the simulation's `program_token`."""
+
+    def __init__(self, sim, host: str = g.DEFAULT_HOST, port: int = g.DEFAULT_PORT, *,
+                 require_token: bool = True, token: str | None = None):
+        if not require_token:
+            program_token.check_no_token(host)
         self.sim = sim
         self.host = host
         self.port = port
+        self.token = (token or program_token.new_token()) if require_token else None
+        sim.program_token = self.token  # before the simulation thread serves anyone
         self._listener: socket.socket | None = None
 
-    def start(self) -> None:
-        """Bind and start accepting; raises OSError (e.g. port in use) in the caller's thread."""
-        listener = socket.create_server((self.host, self.port), reuse_port=False)
+    def start(self, before_listening=None) -> None:
+        """Bind and start accepting; raises OSError (e.g. port in use) in the caller's thread.
+        `before_listening(port)` is called once the port is bound (so it is this run's), before
+        any program can connect (eyesim run writes the token file then)."""
+        family = socket.AF_INET6 if ":" in self.host else socket.AF_INET
+        listener = socket.socket(family, socket.SOCK_STREAM)
+        try:
+            if os.name != "nt":  # as socket.create_server: a restarted run may bind at once
+                listener.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+            listener.bind((self.host, self.port))
+            if before_listening is not None:
+                before_listening(listener.getsockname()[1])
+            listener.listen()
+        except BaseException:
+            listener.close()
+            raise
         listener.setblocking(False)
         self._listener = listener
         self.port = listener.getsockname()[1]

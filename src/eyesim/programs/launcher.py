@@ -92,10 +92,14 @@ def command_for(path: Path) -> list[str]:
     return [str(path)]
 
 
-def program_environment(host: str, port: int, robot_id: int) -> dict[str, str]:
-    """Ours plus where the simulator is, and where libeyesim is for programs that load it by name
+def program_environment(host: str, port: int, robot_id: int, token: str | None = None) -> dict[str, str]:
+    """Ours plus where the simulator is, the run's program token (EYESIM_TOKEN; none when the
+    simulator wants none), and where libeyesim is for programs that load it by name
     (platform.library_environment)."""
     env = dict(os.environ, EYESIM_HOST=host, EYESIM_PORT=str(port), EYESIM_ROBOT=str(robot_id))
+    env.pop("EYESIM_TOKEN", None)  # another run's
+    if token is not None:
+        env["EYESIM_TOKEN"] = token
     env.setdefault("PYTHONUNBUFFERED", "1")
     return platform.library_environment(env, paths.robios_lib_dir())
 
@@ -129,7 +133,7 @@ class Launcher:
         run.path = run.path.resolve()
         if sources.is_source(run.path) and not self._build(run):
             return run
-        env = dict(program_environment(self.host, self.port, robot_id), **options.env)
+        env = dict(program_environment(self.host, self.port, robot_id, self.sim.program_token), **options.env)
         robot_id_ = robot_id
         self.sim.call(lambda sim: sim.expected_programs.add(robot_id_))
         try:

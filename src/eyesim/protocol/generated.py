@@ -2,7 +2,7 @@
 
 from eyesim.protocol.ops import OpSpec
 
-VERSION = 1
+VERSION = 2
 DEFAULT_HOST = '127.0.0.1'
 DEFAULT_PORT = 9797
 MAX_FRAME = 16777216
@@ -19,6 +19,7 @@ ERR_NOT_SUPPORTED = 6
 ERR_BAD_ARGUMENT = 7
 ERR_NO_HANDSHAKE = 8
 ERR_SHUTDOWN = 9
+ERR_BAD_TOKEN = 10
 ERROR_PAYLOAD = (('code', 'i32'), ('message', 'str'))
 
 OP_HELLO = 1
@@ -125,7 +126,7 @@ OP_SIM_GET_ROBOT_COUNT = 4101
 OP_SIM_GET_OBJECT_COUNT = 4102
 
 OPS = {
-    1: OpSpec('HELLO', 1, 'session', 0, False, (('version', 'u32'), ('robot', 'str'), ('program', 'str'), ('pid', 'u32')), (('version', 'u32'), ('robot_id', 'i32'), ('robot_name', 'str')), cost='local'),
+    1: OpSpec('HELLO', 1, 'session', 0, False, (('version', 'u32'), ('robot', 'str'), ('program', 'str'), ('pid', 'u32'), ('token', 'str')), (('version', 'u32'), ('robot_id', 'i32'), ('robot_name', 'str')), lengths=((4, 1024),), cost='local'),
     2: OpSpec('THREADS', 2, 'session', 0, False, (), (('result', 'i32'),), cost='local'),
     257: OpSpec('LCD_PRINTF', 257, 'lcd', 10, False, (('text', 'str'),), (('result', 'i32'),), lengths=((0, 65536),), cost='local'),
     258: OpSpec('LCD_SET_PRINTF', 258, 'lcd', 10, False, (('row', 'i32'), ('column', 'i32'), ('text', 'str')), (('result', 'i32'),), lengths=((2, 65536),), cost='local'),

@@ -9,7 +9,8 @@ simulator's program port speaking the same protocol as libeyesim.
 
 RoBIOS functions are called by their C names (`VWSetSpeed`) or by protocol op names
 (`robot.call("VW_SET_SPEED", 200, 0)`); arguments and replies follow protocol/protocol.json
-(one value comes back as itself, several as a tuple)."""
+(one value comes back as itself, several as a tuple). `token`: the run's program token
+(the engine's `program_token`), sent in the HELLO."""
 
 from __future__ import annotations
 
@@ -32,14 +33,15 @@ class RoBIOSError(Exception):
 
 
 class RobotClient:
-    def __init__(self, host: str, port: int, robot: int | str, program: str = "python-callable"):
+    def __init__(self, host: str, port: int, robot: int | str, program: str = "python-callable",
+                 token: str | None = None):
         self._sock = socket.create_connection((host, port))
         self._sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
         self._decoder = FrameDecoder()
         self._inbox: list = []
         self._next_id = 0
         self._lock = threading.Lock()
-        _, self.robot_id, self.robot_name = self.call("HELLO", g.VERSION, str(robot), program, 0)
+        _, self.robot_id, self.robot_name = self.call("HELLO", g.VERSION, str(robot), program, 0, token or "")
 
     def call(self, op_name: str, *args):
         op = g.OPS_BY_NAME[op_name]
@@ -117,7 +119,7 @@ def start_callable(sim, host: str, port: int, robot_id: int, function) -> Callab
 
     def body():
         try:
-            run.client = RobotClient(host, port, robot_id, run.name)
+            run.client = RobotClient(host, port, robot_id, run.name, sim.program_token)
             run.value = function(run.client)
             run.exit_code = 0
         except Exception as error:  # the program's failure, reported like a crash

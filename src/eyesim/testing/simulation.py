@@ -94,6 +94,9 @@ class Simulation:
         self._server = ProgramServer(self.engine, host, 0)  # served by the engine's own thread
         self._server.start()
         self.port = self._server.port
+        # The run's program token: the programs this simulation starts get it (EYESIM_TOKEN); one
+        # connecting by other means sends it in its HELLO (docs/running.md#the-program-token).
+        self.program_token = self._server.token
         self._launcher = Launcher(self.engine, host, self.port, echo=echo)
         self._runs: dict = {}
         self._pending_programs: list = []  # (robot id, path or callable, options) until run() starts them
