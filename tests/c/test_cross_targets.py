@@ -522,8 +522,9 @@ def test_windows_program_against_a_fake_simulator(tmp_path, fake_sim):
     assert done.stdout.splitlines() == ["connected", "timer 1 ticked", "worker done", "atexit handler"]
     assert done.stderr == ""
 
-    version, robot, program, pid = fake_sim.hellos[0]
+    version, robot, program, pid, token = fake_sim.hellos[0]
     assert (robot, program) == ("", "prog") and pid > 0  # the name without ".exe"
+    assert token == ""  # no EYESIM_TOKEN, no token file of a run on that port
     sleeps = [r.values for r in fake_sim.requests if r.op == "OS_SLEEP"]
     # usleep, Sleep, nanosleep, clock_nanosleep, sleep: all in simulation time
     assert sleeps == [(0, 250_000_000), (1, 500_000_000), (2, 5), (0, 7000), (3, 0)]
@@ -580,3 +581,19 @@ def test_windows_program_drives_in_the_real_simulator(tmp_path):
     assert path[-1]["time_s"] == 3.0
     moved = math.hypot(path[-1]["x"] - path[0]["x"], path[-1]["y"] - path[0]["y"])
     assert 0.15 <= moved <= 0.23
+
+
+def test_windows_program_reads_the_token_file_of_the_run(tmp_path, fake_sim):
+    """Started by hand (no EYESIM_TOKEN), a Windows program sends the token its run wrote to
+    EyeSim's state folder (here EYESIM_STATE_DIR, a Windows path, as the run's own would be)."""
+    needs_wine()
+    exe = windows_program(DRIVE, tmp_path)
+    state = tmp_path / "state folder"
+    state.mkdir()
+    (state / f"program-token-{fake_sim.port}").write_text("token-from-the-file\r\n")
+    windows_state = "Z:" + str(state).replace("/", "\\")
+    done = run_under_wine(exe, env=wine_env(EYESIM_HOST="127.0.0.1", EYESIM_PORT=str(fake_sim.port),
+                                            EYESIM_STATE_DIR=windows_state), timeout=120)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert fake_sim.hellos[0][4] == "token-from-the-file"
+
