@@ -81,7 +81,7 @@ class OneThreadClient:
         self.sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
         self.sock.setblocking(False)
         self.decoder = FrameDecoder()
-        self.call(encode_message(g.OP_HELLO, g.KIND_REQUEST, 1, (g.VERSION, "1", "bench", os.getpid())))
+        self.call(encode_message(g.OP_HELLO, g.KIND_REQUEST, 1, (g.VERSION, "1", "bench", os.getpid(), self.server.token)))
 
     def call(self, frame: bytes) -> None:
         self.sock.send(frame)

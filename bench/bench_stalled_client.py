@@ -16,6 +16,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
 from common import print_table, start_simulator, stop, summary, write_results  # noqa: E402
 from support.client import ProgramClient  # noqa: E402
+from support.simulator import token_for  # noqa: E402
 
 from eyesim.protocol import encode_message, generated as g  # noqa: E402
 
@@ -37,7 +38,7 @@ def trial(port: int, stall: bool) -> float:
     staller = None
     if stall:
         staller = socket.create_connection(("127.0.0.1", port))
-        frame = encode_message(g.OP_HELLO, g.KIND_REQUEST, 1, (g.VERSION, "", "staller", 0))
+        frame = encode_message(g.OP_HELLO, g.KIND_REQUEST, 1, (g.VERSION, "", "staller", 0, token_for(port)))
         staller.sendall(frame[:12])  # length + header + part of the body
         time.sleep(0.05)
     elapsed = second_client_ready(port)

@@ -8,15 +8,22 @@ import threading
 from eyesim.core.clock import Clock
 from eyesim.core.engine import Simulation
 from eyesim.net.program_server import ProgramServer
+from eyesim.net.program_token import token_file_path
 
 
 _tokens: dict[int, str] = {}  # port -> program token of the simulations running in this process
 
 
 def token_for(port: int) -> str:
-    """The program token of the in-process simulator on `port` ('' for none), which the test
-    clients and programs send in their HELLO."""
-    return _tokens.get(port, "")
+    """The program token the test clients and programs send in their HELLO: the in-process
+    simulator's on `port`, else (an `eyesim run` process) the token file of the run on that port,
+    as libeyesim reads it; '' for none."""
+    if port in _tokens:
+        return _tokens[port]
+    try:
+        return token_file_path(port).read_text(encoding="ascii").strip()
+    except OSError:
+        return ""
 
 
 @contextlib.contextmanager
