@@ -2,7 +2,9 @@
 
 Soak (--minutes, default 10): 50 well-behaved C programs (programs/poll_load.c: PSDGet and
 VWGetPosition in a loop) beside fuzzing clients that send random, mutated and truncated frames of
-every operation, and browser tabs that open and close. Reported: calls served, errors, the
+every operation, browser tabs that open and close, and attackers (issue 25): bursts of idle
+sockets that never say HELLO (past the connection cap), and a program pipelining thousands of
+KEYWait requests without reading. Reported: calls served, errors, the
 well-behaved programs' worst latency, and the simulator's memory (RSS), file descriptors and
 threads before and after.
 
@@ -54,7 +56,7 @@ class Simulator:
         self.log_path = BENCH / "results" / f"{name}.log"
         self.log = open(self.log_path, "w")
         self.process = subprocess.Popen(eyesim("run", scene, "--port", "0", "--viewer-port", "0", "--clock",
-                                               "realtime"), stdout=subprocess.PIPE, stderr=self.log, text=True,
+                                               "realtime", "--no-token"), stdout=subprocess.PIPE, stderr=self.log, text=True,
                                         cwd=BENCH)
         self.port = self.viewer_port = None
         deadline = time.monotonic() + 60
@@ -246,7 +248,7 @@ async def many_tabs(port: int, count: int) -> dict:
 # -- the runs --------------------------------------------------------------------------------------------------
 def soak(minutes: float, programs: int, program) -> dict:
     seconds = minutes * 60
-    simulator = Simulator(scene_file(programs + FUZZ_ROBOTS), "soak")
+    simulator = Simulator(scene_file(programs + FUZZ_ROBOTS + 1), "soak")  # and one for the KEYWait flooder
     try:
         warm_up(simulator, programs + 1)
         before = simulator.resources()
@@ -257,7 +259,11 @@ def soak(minutes: float, programs: int, program) -> dict:
         lock = threading.Lock()
         fuzzers = [threading.Thread(target=fuzzer, args=(simulator.port, programs + 1 + k, until, k, counts, lock))
                    for k in range(FUZZ_ROBOTS)]
-        for thread in fuzzers:
+        attacks = {"idle_sockets": 0, "idle_refused_or_closed": 0, "key_waits_sent": 0}
+        attackers = [threading.Thread(target=idle_sockets, args=(simulator.port, until, attacks, lock)),
+                     threading.Thread(target=key_wait_flood, args=(simulator.port, programs + FUZZ_ROBOTS + 1, until,
+                                                                   attacks, lock))]
+        for thread in fuzzers + attackers:
             thread.start()
         samples = []
         sampler = threading.Thread(target=sample_memory, args=(simulator, start, until, samples))
@@ -265,15 +271,66 @@ def soak(minutes: float, programs: int, program) -> dict:
         tabs = asyncio.run(tabs_coming_and_going(simulator.viewer_port, until))
         result = collect_programs(well_behaved, timeout=seconds + 120)
         sampler.join(60)
-        for thread in fuzzers:
+        for thread in fuzzers + attackers:
             thread.join(60)
         time.sleep(SETTLE)
         after = simulator.resources()
-        return {"minutes": minutes, "well_behaved": result, "fuzz": counts, "tabs": tabs, "rss_mb_by_minute": samples,
+        return {"minutes": minutes, "well_behaved": result, "fuzz": counts, "attacks": attacks, "tabs": tabs,
+                "rss_mb_by_minute": samples,
                 "before": before,
                 "after": after, "tracebacks": simulator.tracebacks(), "simulator_alive": simulator.process.poll() is None}
     finally:
         simulator.stop()
+
+
+def idle_sockets(port: int, until: float, attacks: dict, lock: threading.Lock) -> None:
+    """Bursts of 300 sockets that never say HELLO, held 8 s (past the 5 s handshake timeout), over and over."""
+    import socket
+
+    while time.monotonic() < until - 10:
+        held = []
+        for _ in range(300):
+            try:
+                held.append(socket.create_connection((HOST, port), timeout=2))
+            except OSError:
+                break
+        deadline = min(until, time.monotonic() + 8)
+        while time.monotonic() < deadline:
+            time.sleep(0.5)
+        closed = 0
+        for sock in held:
+            sock.setblocking(False)
+            try:
+                closed += sock.recv(1) == b""
+            except BlockingIOError:
+                pass
+            except OSError:
+                closed += 1
+            sock.close()
+        with lock:
+            attacks["idle_sockets"] += len(held)
+            attacks["idle_refused_or_closed"] += closed
+
+
+def key_wait_flood(port: int, robot: int, until: float, attacks: dict, lock: threading.Lock) -> None:
+    """A program that pipelines KEYWait requests and never reads a reply, reconnecting each minute."""
+    while time.monotonic() < until - 5:
+        client = ProgramClient(port, HOST)
+        client.hello(str(robot))
+        client.sock.settimeout(2)
+        end = min(until, time.monotonic() + 60)
+        request = 1000
+        try:
+            while time.monotonic() < end:
+                frame = encode_frame(g.OP_KEY_WAIT, g.KIND_REQUEST, request,
+                                     encode_payload(g.OPS[g.OP_KEY_WAIT].request, (0xFFFF,)))
+                client.sock.sendall(frame * 100)
+                request += 100
+                with lock:
+                    attacks["key_waits_sent"] += 100
+        except OSError:
+            pass  # its socket is full: the simulator holds back what it does not take (the cap)
+        client.close()
 
 
 def sample_memory(simulator: Simulator, start: float, until: float, samples: list) -> None:
@@ -398,6 +455,9 @@ def main() -> None:
                         ("worst p99 (ms)", f"{behaved['worst_p99_ms']:.2f}"),
                         ("fuzz frames / connections", f"{fuzz['sent']} / {fuzz['connections']}"),
                         ("fuzz replies / error replies", f"{fuzz['replies']} / {fuzz['error_replies']}"),
+                        ("idle sockets / refused or closed", f"{soaked['attacks']['idle_sockets']} / "
+                                                             f"{soaked['attacks']['idle_refused_or_closed']}"),
+                        ("KEYWait requests pipelined", soaked["attacks"]["key_waits_sent"]),
                         ("tabs opened / failed", f"{soaked['tabs']['opened']} / {soaked['tabs']['failed']}"),
                         *_resources(soaked), ("tracebacks in the log", soaked["tracebacks"]),
                         ("RSS (MB) by minute", " ".join(f"{m:g}:{mb:.0f}" for m, mb in soaked["rss_mb_by_minute"]))],
