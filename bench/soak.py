@@ -315,8 +315,12 @@ def idle_sockets(port: int, until: float, attacks: dict, lock: threading.Lock) -
 def key_wait_flood(port: int, robot: int, until: float, attacks: dict, lock: threading.Lock) -> None:
     """A program that pipelines KEYWait requests and never reads a reply, reconnecting each minute."""
     while time.monotonic() < until - 5:
-        client = ProgramClient(port, HOST)
-        client.hello(str(robot))
+        try:
+            client = ProgramClient(port, HOST)
+            client.hello(str(robot))
+        except (OSError, RemoteError):
+            time.sleep(0.5)  # its robot is still taken by the last connection, or the run is full
+            continue
         client.sock.settimeout(2)
         end = min(until, time.monotonic() + 60)
         request = 1000
