@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import random
 import subprocess
+import sys
 import threading
 import time
 
@@ -42,8 +43,40 @@ def test_handshake_sends_version_robot_program_and_pid(compiler, fake_sim, robot
     proc = subprocess.Popen([str(exe)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
     out, err = proc.communicate(timeout=30)
     assert (proc.returncode, out, err) == (0, "before\npsd 0\n", "")
-    assert fake_sim.hellos == [(g.VERSION, robot or "", "hello_prog", proc.pid)]
+    assert fake_sim.hellos == [(g.VERSION, robot or "", "hello_prog", proc.pid, "")]  # no token to be had
     assert fake_sim.ops() == ["PSD_GET"]
+
+
+def test_handshake_sends_eyesim_token_before_the_token_file(compiler, fake_sim, tmp_path):
+    exe = compiler.build(ONE_CALL, name="hello_prog")
+    (tmp_path / f"program-token-{fake_sim.port}").write_text("from-the-file\n")
+    ran = run(exe, fake_sim.env(EYESIM_STATE_DIR=str(tmp_path)))  # started by hand: the run's file
+    assert ran.returncode == 0, ran.stderr
+    ran = run(exe, fake_sim.env(EYESIM_STATE_DIR=str(tmp_path), EYESIM_TOKEN="from-the-environment"))
+    assert ran.returncode == 0, ran.stderr
+    (tmp_path / f"program-token-{fake_sim.port}").unlink()
+    ran = run(exe, fake_sim.env(EYESIM_STATE_DIR="", XDG_STATE_HOME=str(tmp_path / "xdg")))  # the platform's folder
+    assert ran.returncode == 0, ran.stderr
+    (tmp_path / "xdg" / "eyesim").mkdir(parents=True)
+    (tmp_path / "xdg" / "eyesim" / f"program-token-{fake_sim.port}").write_text("from-xdg")
+    ran = run(exe, fake_sim.env(EYESIM_STATE_DIR="", XDG_STATE_HOME=str(tmp_path / "xdg")))
+    assert ran.returncode == 0, ran.stderr
+    tokens = [hello[4] for hello in fake_sim.hellos]
+    expected_platform = "from-xdg" if sys.platform.startswith("linux") else ""
+    assert tokens == ["from-the-file", "from-the-environment", "", expected_platform]
+
+
+def test_a_refused_token_says_where_it_came_from(compiler, make_fake_sim, tmp_path):
+    sim = make_fake_sim()
+    sim.hello_answer = sim.Error(g.ERR_BAD_TOKEN, "this program sent a wrong program token")
+    ran = run(compiler.build(ONE_CALL, name="one_call"), sim.env(EYESIM_TOKEN="stale"))
+    assert ran.returncode == EXIT_REFUSED
+    assert eyesim_lines(ran.stderr) == [
+        f"eyesim: the simulator at 127.0.0.1:{sim.port} refused this program: this program sent a wrong program "
+        f"token [it sent EYESIM_TOKEN]"]
+    ran = run(compiler.build(ONE_CALL, name="one_call"), sim.env(EYESIM_STATE_DIR=str(tmp_path)))
+    assert eyesim_lines(ran.stderr)[0].endswith(
+        f"[EYESIM_TOKEN is not set and {tmp_path / f'program-token-{sim.port}'} cannot be read]")
 
 
 def test_refused_handshake_prints_the_reason_and_exits(compiler, make_fake_sim):
