@@ -16,6 +16,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.programs import simulator_with_viewer  # noqa: E402
 
 pytestmark = pytest.mark.browser
+SLOW = 60_000  # ms: programs starting, worlds built, on a loaded 2-core machine
 
 DRIVE = """from eye import *
 VWSetSpeed(300, 0)
@@ -55,6 +56,7 @@ def test_step_while_paused_runs_one_physics_step(browser_context, folder):
     with simulator_with_viewer("lab.sim", cwd=folder) as (_, url):
         viewer = open_viewer(browser_context, url)
         page = viewer.page
+        page.set_default_timeout(SLOW)
         page.wait_for_function("() => (window.eyesimViewer.robotPose(1)?.pos[0] ?? 0) > 0.55")  # it drives
         page.click("#pause")
         paused = wait_for_status(page, "s.paused")
@@ -82,6 +84,7 @@ def test_record_video_records_the_live_3d_view(browser_context, folder):
     with simulator_with_viewer("lab.sim", cwd=folder) as (_, url):
         viewer = open_viewer(browser_context, url)
         page = viewer.page
+        page.set_default_timeout(SLOW)
         button = page.locator("#tl-video")
         assert button.is_visible() and button.is_enabled()
         with page.expect_download() as download:
@@ -103,6 +106,7 @@ def test_controls_are_off_while_the_simulator_is_away(browser_context, folder):
     with simulator_with_viewer("lab.sim", cwd=folder) as (process, url):
         viewer = open_viewer(browser_context, url)
         page = viewer.page
+        page.set_default_timeout(SLOW)
         page.wait_for_selector("#edit-scene:not([hidden])")
         page.wait_for_function("() => !document.querySelector('.program-restart').disabled")
         page.locator(".robot-io summary").first.click()
@@ -124,6 +128,7 @@ def test_reset_view_brings_the_camera_back(browser_context, folder):
     with simulator_with_viewer("lab.sim", cwd=folder) as (_, url):
         viewer = open_viewer(browser_context, url)
         page = viewer.page
+        page.set_default_timeout(SLOW)
         page.wait_for_function("() => window.eyesimViewer.webglActive()")
         start = viewer.state("cameraState")
         box = page.locator("#world canvas").first.bounding_box()
@@ -148,6 +153,7 @@ def test_the_lcd_stays_480_by_320_beside_camera_images(browser_context, folder, 
     with simulator_with_viewer("lab.sim", cwd=folder) as (_, url):
         viewer = open_viewer(browser_context, url)
         page = viewer.page
+        page.set_default_timeout(SLOW)
         page.set_viewport_size(size)
         page.locator(".robot-panel[data-robot='2'] .robot-header").click()
         page.wait_for_function("() => window.eyesimViewer.cameraImages(2) > 1 && window.eyesimViewer.lcdUpdates(2) > 1")

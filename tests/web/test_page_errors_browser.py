@@ -52,6 +52,7 @@ class Problems:
 
 def watched_page(context, problems: Problems):
     page = context.new_page()
+    page.set_default_timeout(60_000)  # programs starting on a loaded 2-core machine
     problems.watch(page)
     return page
 
@@ -81,6 +82,7 @@ def test_the_live_viewer_and_the_robot_editor_have_no_errors(browser_context, tm
         with page.expect_popup() as popup:
             page.click("#robot-editor-link")
         editor = popup.value
+        editor.set_default_timeout(60_000)
         problems.watch(editor)
         editor.wait_for_function("() => window.eyesimRobotEditor && eyesimRobotEditor.checks() > 0 && "
                                  "eyesimRobotEditor.idle()")

@@ -19,6 +19,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.programs import simulator_with_viewer  # noqa: E402
 
 pytestmark = pytest.mark.browser
+SLOW = 60_000  # ms: programs starting, worlds built, on a loaded 2-core machine
 
 # Drives on, and reads its front PSD twice a second: a sparse signal beside the dense pose.
 PROGRAM = """from eye import *
@@ -40,6 +41,7 @@ def test_legend_readout_steps_click_to_seek_and_exports(browser_context, tmp_pat
     with simulator_with_viewer("default", "--program", "1=psd.py", cwd=tmp_path) as (_, url):
         viewer = open_viewer(browser_context, url)
         page = viewer.page
+        page.set_default_timeout(SLOW)
         page.set_viewport_size({"width": 1366, "height": 768})
         page.wait_for_function("() => window.eyesimViewer.status()?.time > 3.2")
         page.click("#pause")  # the data holds still from here on

@@ -12,6 +12,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.programs import simulator_with_viewer  # noqa: E402
 
 pytestmark = pytest.mark.browser
+SLOW = 60_000  # ms: programs starting, worlds built, on a loaded 2-core machine
 
 ROBOT_PY = "from eye import *\nLCDPrintf('hello')\nwhile True:\n    OSWait(100)\n"
 ROBOT_C = '#include "eyebot.h"\nint main(void) { LCDPrintf("hello"); for (;;) OSWait(100); }\n'
@@ -44,6 +45,7 @@ def test_a_source_tree_lists_its_robot_programs_only(browser_context, source_tre
     with simulator_with_viewer("lab.sim", cwd=source_tree) as (_, url):
         viewer = open_viewer(browser_context, url)
         page = viewer.page
+        page.set_default_timeout(SLOW)
         choice = robot_panel(page, 1).locator(".program-choice")
         page.wait_for_function("() => document.querySelector('.program-choice option[data-path]') !== null")
         listed = choice.locator("option[data-path]").evaluate_all("options => options.map((o) => o.dataset.path)")

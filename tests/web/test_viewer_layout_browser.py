@@ -17,6 +17,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.programs import simulator_with_viewer  # noqa: E402
 
 pytestmark = pytest.mark.browser
+SLOW = 60_000  # ms: programs starting, worlds built, on a loaded 2-core machine
 
 SIZES = [(1024, 700), (1366, 768), (1920, 1080)]
 CAMERA = """from eye import *
@@ -148,6 +149,7 @@ def test_the_layout_fits_from_1024x700_to_1920x1080(browser_context, scene_folde
     with simulator_with_viewer("three robots in the lab.sim", cwd=scene_folder) as (_, url):
         viewer = open_viewer(browser_context, url)
         page = viewer.page
+        page.set_default_timeout(SLOW)
         for width, height in SIZES:
             page.set_viewport_size({"width": width, "height": height})
             page.wait_for_function("() => window.eyesimViewer.cameraImages(1) > 0 && "
@@ -171,6 +173,7 @@ def test_the_scene_editor_and_the_plots_fit_at_1024x700(browser_context, scene_f
     with simulator_with_viewer("three robots in the lab.sim", cwd=scene_folder) as (_, url):
         viewer = open_viewer(browser_context, url)
         page = viewer.page
+        page.set_default_timeout(SLOW)
         page.set_viewport_size({"width": 1024, "height": 700})
         page.click("#plots-toggle")
         page.locator("input[data-signal='robot/2/x']").check()
