@@ -59,6 +59,7 @@ def test_a_python_program_drives_and_draws(windows, tmp_path):
     end = path[-1]
     assert (end["x"], end["y"]) == pytest.approx((0.9, 0.5), abs=0.01)
     assert heading(end) == pytest.approx(90, abs=2)
+    assert "odometry " in result.stdout, result.stdout  # its last line, printed just before it exits
     odometry = [int(v) for v in result.stdout.split("odometry ", 1)[1].split()[:3]]  # from where it started
     assert odometry == pytest.approx([400, 0, 90], abs=5)
 
@@ -82,6 +83,7 @@ def test_a_c_program_drives_and_draws(windows, tmp_path):
     end = path[-1]
     assert (end["x"], end["y"]) == pytest.approx((0.8, 0.3), abs=0.01)
     assert heading(end) == pytest.approx(-90, abs=2)
+    assert "odometry " in result.stdout, result.stdout
     odometry = [int(v) for v in result.stdout.split("odometry ", 1)[1].split()[:3]]  # from where it started
     assert odometry == pytest.approx([300, -200, -90], abs=5)
 
