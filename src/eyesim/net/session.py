@@ -95,6 +95,7 @@ class Session:
     pending: list = field(default_factory=list)  # (Request, Pending) answered later
     closed: bool = False
     helper_threads: int = 0  # library threads that make calls too: 1 once the program uses timers
+    threads_seen: int = 1  # threads of the program seen making calls at once (see note_request)
     last_request_wall: float = 0.0  # wall-clock time (perf_counter) of the latest request
     free_running: bool = False  # time goes on while its main thread busy-waits (see blocked)
     in_turn: bool = False  # realtime: in the engine's round of programs to serve
@@ -103,25 +104,31 @@ class Session:
 
     def note_request(self, now_wall: float) -> None:
         self.last_request_wall = now_wall
-        if self.pending and any(p.background for _, p in self.pending):
-            self.free_running = False  # the timer thread waits, so the main thread made this call
+        # A thread of the library's calls one at a time: a request while others wait in blocking
+        # calls comes from yet another thread.
+        self.threads_seen = max(self.threads_seen, len(self.pending) + 1)
+        if self.pending:
+            self.free_running = False  # another thread waits, so a computing one made this call
 
     def blocked(self, now_wall: float) -> bool:
         """Deterministic mode: may simulation time go on before this program's next request?
 
         Only while every thread of the program that makes calls waits in one (OSWait, KEYGet, ...):
-        the main thread and, once it uses timers, the library's timer thread. Time stands still
+        the main thread, the others seen calling, and, once it uses timers, the library's timer thread. Time stands still
         while the main thread computes and while timer callbacks run. One exception keeps a main
         thread that busy-waits for a timer callback from hanging: after BUSY_WAIT_GRACE seconds of
         wall time without a request, time goes on without it (no longer bit-identical) until the
-        main thread makes a call again."""
-        if len(self.pending) > self.helper_threads:
+        main thread makes a call again. The program's own threads count the same way: once one
+        called while another waited (a thread waiting in KEYGet beside a VW control loop), time
+        goes on only while all of them wait, so the loop sees the time it would alone."""
+        others = max(self.threads_seen - 1, self.helper_threads)
+        if len(self.pending) > others:
             return True
-        if not self.helper_threads:
+        if not others:
             return False
         if not self.free_running and now_wall - self.last_request_wall > BUSY_WAIT_GRACE:
             self.free_running = True
-            log.warning("%s makes no RoBIOS call while its timers wait; simulation time goes on without it "
+            log.warning("%s makes no RoBIOS call while its other threads wait; simulation time goes on without it "
                         "(the run is no longer deterministic)", self.name)
         return self.free_running
 
