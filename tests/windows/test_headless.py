@@ -107,6 +107,22 @@ def test_the_c_program_runs_by_hand_with_the_dll_beside_it(windows, tmp_path):
     assert f"no simulator answered at 127.0.0.1:{environment['EYESIM_PORT']}" in result.stderr, result.stderr
 
 
+def test_non_ascii_output(windows, tmp_path):
+    """A Python program's text beyond ASCII reaches the console and the LCD. The simulator's own
+    output may be in the ANSI code page (cp1252) or UTF-8, both are accepted; replacement characters
+    or a traceback are not."""
+    shutil.copy(PROGRAMS / "greeting.py", tmp_path)
+    result = windows.run("run", "--headless", "--until", "5", "--port", "0", "--program", "1=greeting.py",
+                         "--save-lcd", "lcd", cwd=tmp_path, text=False)
+    output = result.stdout + result.stderr
+    shown = [output.decode(encoding, errors="replace") for encoding in ("utf-8", "cp1252")]
+    assert result.returncode == 0, shown[0]
+    assert any("[robot 1] Grüße 20°C" in text for text in shown), shown[0]
+    assert any("program greeting.py: exit code 0" in text for text in shown), shown[0]
+    image = lcd(tmp_path / "lcd")
+    assert white_pixels(image[0:13]) > 40 and white_pixels(image[13:200]) == 0
+
+
 @pytest.mark.parametrize("language", ["python", "c"])
 def test_a_program_stopped_at_until_leaves_no_process_behind(windows, tmp_path, language):
     """The program starts a child that never ends, then loops for ever: when the run ends at --until,

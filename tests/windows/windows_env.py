@@ -95,13 +95,13 @@ def wine_executable() -> str:
 
 def wine_env(extra: dict[str, str] | None = None) -> dict[str, str]:
     """The environment for Wine: the cached prefix, no desktop, no Mono/Gecko, no debug output, and
-    pip told to stay offline and quiet about its version."""
+    pip told to stay offline and quiet about its version. Python's own settings (PYTHON*) are not
+    passed on, and no UTF-8 mode is set: programs see the text encodings a Windows machine gives."""
     env = {k: v for k, v in os.environ.items() if not k.startswith(("PYTHON", "PIP_", "VIRTUAL_ENV"))}
     prefix = wine_prefix()
     prefix.parent.mkdir(parents=True, exist_ok=True)
     env.update(WINEPREFIX=str(prefix), WINEDEBUG="-all", WINEDLLOVERRIDES="mscoree,mshtml=", DISPLAY="",
-               PIP_NO_INDEX="1", PIP_DISABLE_PIP_VERSION_CHECK="1", PIP_NO_CACHE_DIR="1",
-               PYTHONUTF8="1", PYTHONIOENCODING="utf-8")
+               PIP_NO_INDEX="1", PIP_DISABLE_PIP_VERSION_CHECK="1", PIP_NO_CACHE_DIR="1")
     env.update(extra or {})
     return env
 

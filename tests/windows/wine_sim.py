@@ -74,14 +74,15 @@ class WindowsEyeSim:
         programs, is not put on sys.path)."""
         return self.env.command("-P", "-m", "eyesim", *args)
 
-    def run(self, *args: str, cwd: Path, timeout: float = 180, env: dict[str, str] | None = None
-            ) -> subprocess.CompletedProcess:
-        """`eyesim ARGS` under Wine to its end. Its standard handles are pipes and NUL: Wine 8 gives
-        python.exe an invalid handle for a regular file as stdin/stdout/stderr, and it cannot start."""
+    def run(self, *args: str, cwd: Path, timeout: float = 180, env: dict[str, str] | None = None,
+            text: bool = True) -> subprocess.CompletedProcess:
+        """`eyesim ARGS` under Wine to its end; its output as text (UTF-8, errors replaced) or, with
+        `text=False`, bytes. Its standard handles are pipes and NUL: Wine 8 gives python.exe an
+        invalid handle for a regular file as stdin/stdout/stderr, and it cannot start."""
         try:
             return subprocess.run(self.command(*args), cwd=cwd, env=env or self.env.environment(),
-                                  stdin=subprocess.DEVNULL, capture_output=True, text=True, errors="replace",
-                                  timeout=timeout)
+                                  stdin=subprocess.DEVNULL, capture_output=True, text=text,
+                                  errors="replace" if text else None, timeout=timeout)
         except subprocess.TimeoutExpired as expired:
             output = b"".join(part or b"" for part in (expired.stdout, expired.stderr)).decode(errors="replace")
             raise AssertionError(f"`eyesim {' '.join(args)}` did not end within {timeout} s; its output:\n"
