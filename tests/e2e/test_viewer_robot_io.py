@@ -12,6 +12,7 @@ import aiohttp
 import pytest
 from support.programs import build
 from support.scenes import arena
+from support.simulator import token_for
 from support.viewer import run_async, viewer_simulation
 
 
@@ -47,7 +48,8 @@ def test_a_program_reads_what_the_browser_sets_and_the_browser_sees_its_answers(
     port, server = viewer_sim
     executable = build("viewer_io", tmp_path, "-Wall", "-Wextra", "-Werror")
     program = subprocess.Popen([str(executable)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                               env=dict(os.environ, EYESIM_PORT=str(port), EYESIM_ROBOT="1"))
+                               env=dict(os.environ, EYESIM_PORT=str(port), EYESIM_ROBOT="1",
+                                        EYESIM_TOKEN=token_for(port)))
     try:
         messages = run_async(browser_session(f"ws://127.0.0.1:{server.port}/ws", program))
         out, err = program.communicate(timeout=20)
