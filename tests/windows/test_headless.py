@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 from PIL import Image
 from windows_env import wine_executable
-from wine_sim import PROGRAMS, free_port, no_process_left, processes_mentioning
+from wine_sim import PROGRAMS, OutputReader, free_port, no_process_left, processes_mentioning
 
 
 def trajectory(path) -> list[dict[str, float]]:
@@ -126,17 +126,28 @@ def test_non_ascii_output(windows, tmp_path):
 @pytest.mark.parametrize("language", ["python", "c"])
 def test_a_program_stopped_at_until_leaves_no_process_behind(windows, tmp_path, language):
     """The program starts a child that never ends, then loops for ever: when the run ends at --until,
-    both are gone (the program's Windows job ends the whole tree)."""
+    both are gone (the program's Windows job ends the whole tree). Every Windows process under Wine
+    is a Linux process showing its Windows command line, so /proc tells which are running: the
+    program (its path names tmp_path) and forever.exe are seen first, then neither."""
     if language == "python":
-        program = shutil.copy(PROGRAMS / "spawner.py", tmp_path)
+        program = Path(shutil.copy(PROGRAMS / "spawner.py", tmp_path))
     else:
         program = windows.compile_c(PROGRAMS / "spawner.c", tmp_path / "spawner.exe", "-Wall", "-Werror")
     windows.compile_c(PROGRAMS / "forever.c", tmp_path / "forever.exe", with_eyesim=False)
-    token = tmp_path.name  # in the command lines of the program and of forever.exe
+    token = windows.path(tmp_path)  # Z:\tmp\pytest-of-...\<test>: in both programs' command lines
     with no_process_left(token):
-        result = windows.run("run", "--headless", "--until", "3", "--port", "0", "--program",
-                             f"1={Path(program).name}", cwd=tmp_path, timeout=90)
-        assert result.returncode == 0, result.stdout + result.stderr
-        assert "running" in result.stdout and (tmp_path / "child-running").exists(), result.stdout
-        assert "t=3.000" in result.stdout, result.stdout
+        process = windows.start("run", "--headless", "--until", "3", "--port", "0", "--program",
+                                f"1={program.name}", cwd=tmp_path)
+        output = OutputReader(process)
+        try:
+            output.wait_for(r"child \d+ running", timeout=90)
+            running = processes_mentioning(token)
+            assert any(program.name in command for command in running.values()), running
+            assert any("forever.exe" in command for command in running.values()), running
+            (tmp_path / "release").touch()
+            assert process.wait(timeout=90) == 0, output.text()
+        finally:
+            if process.poll() is None:
+                process.kill()
+        assert "t=3.000" in output.finish(), output.text()
     assert not processes_mentioning(token)

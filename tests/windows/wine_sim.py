@@ -151,6 +151,12 @@ class OutputReader:
     def text(self) -> str:
         return "".join(self.lines)
 
+    def finish(self, timeout: float = 30) -> str:
+        """All the output, once the process has ended it."""
+        self._thread.join(timeout)
+        assert not self._thread.is_alive(), f"the output did not end within {timeout} s:\n{self.text()}"
+        return self.text()
+
     def wait_for(self, pattern: str, timeout: float) -> re.Match:
         """The first match of `pattern` in the output, waiting up to `timeout` s; fails with the output
         so far (at once when the output has ended without it)."""

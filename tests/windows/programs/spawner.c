@@ -1,5 +1,5 @@
-/* Windows test program (C): starts forever.exe from its own folder, waits until it runs, then keeps
-   the robot busy for ever. */
+/* Windows test program (C): starts forever.exe from its own folder, waits until it runs and until
+   the test creates the file `release`, then keeps the robot busy for ever. */
 #include <stdio.h>
 #include <string.h>
 #include <windows.h>
@@ -28,6 +28,8 @@ int main(void)
     }
     printf("child %lu running\n", child.dwProcessId);
     fflush(stdout);
+    while (GetFileAttributesA("release") == INVALID_FILE_ATTRIBUTES) /* the test looks at the processes */
+        Sleep(20);
 
     LCDPrintf("looping\n");
     for (;;) {

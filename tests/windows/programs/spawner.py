@@ -1,5 +1,5 @@
-"""Windows test program: starts forever.exe (from the folder named by its first argument, or its
-own), waits until it runs, then keeps the robot busy for ever."""
+"""Windows test program: starts forever.exe from its own folder, waits until it runs and until the
+test creates the file `release`, then keeps the robot busy for ever."""
 import os
 import subprocess
 import sys
@@ -13,6 +13,8 @@ while not os.path.exists("child-running"):
         sys.exit(f"forever.exe did not start (exit code {child.poll()})")
     time.sleep(0.02)
 print(f"child {child.pid} running", flush=True)
+while not os.path.exists("release"):  # the test looks at the processes meanwhile
+    time.sleep(0.02)
 
 from eye import *  # noqa: E402
 
