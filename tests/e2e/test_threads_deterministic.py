@@ -13,7 +13,9 @@ from support.programs import build, run_headless
 
 def turned(result) -> int:
     assert result.returncode == 0, result.stdout + result.stderr
-    return int(re.search(r"turned (-?\d+)", result.stdout).group(1))
+    found = re.search(r"turned (-?\d+)", result.stdout)
+    assert found, result.stdout + result.stderr
+    return int(found.group(1))
 
 
 def test_a_thread_waiting_for_a_key_leaves_the_control_loop_as_it_is_alone(tmp_path):

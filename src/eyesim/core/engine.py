@@ -599,6 +599,8 @@ class Simulation:
         session.pending = still
         if answered:
             self._answered_later += 1
+            if self.clock.deterministic:
+                session.woke(time.perf_counter())
             if not session.closed:
                 session.connection.resume()  # room for requests it holds back (program_server.MAX_QUEUED)
         return answered

@@ -110,6 +110,12 @@ class Session:
         if self.pending:
             self.free_running = False  # another thread waits, so a computing one made this call
 
+    def woke(self, now_wall: float) -> None:
+        """A thread's blocking call was answered: it goes on (or ends), so time waits for it again,
+        with a fresh grace, instead of running on for a thread that stopped calling earlier."""
+        self.free_running = False
+        self.last_request_wall = now_wall
+
     def blocked(self, now_wall: float) -> bool:
         """Deterministic mode: may simulation time go on before this program's next request?
 
