@@ -46,4 +46,4 @@ def test_cameras_render_with_opengl_through_wgl(windows, tmp_path, x_display):
     assert "cameras render with OpenGL (glfw)" in result.stdout + result.stderr, result.stdout + result.stderr
     assert "arrived: the target fills" in result.stdout, result.stdout
     assert "program colour_track.py: exit code 0" in result.stdout, result.stdout
-    assert not processes_mentioning(tmp_path.name)
+    assert not processes_mentioning(windows.path(tmp_path))

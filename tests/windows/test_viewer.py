@@ -20,7 +20,7 @@ def test_the_viewer_shows_the_robot_and_its_lcd(windows, tmp_path, artifact):
     if not chromium_available():
         pytest.fail("the viewer test needs Chromium at /usr/bin/chromium (make test installs it as root)")
     program = windows.compile_c(PROGRAMS / "viewer_lcd.c", tmp_path / "viewer_lcd.exe", "-Wall", "-Werror")
-    with no_process_left(tmp_path.name):
+    with no_process_left(windows.path(tmp_path)):
         process = windows.start("run", "--port", "0", "--viewer-port", "0", "--program", f"1={program.name}",
                                 cwd=tmp_path)
         output = OutputReader(process)
