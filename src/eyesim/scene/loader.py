@@ -153,8 +153,10 @@ class _SceneLoader:
     def missing(self, where: Location, what: str, reference: str, referencing: Path, fallback: str) -> None:
         if reference in self.refused_references:
             return  # its error says enough
+        hint = _near_file(reference, referencing)
+        also = f"; did you mean {quoted(hint)}?" if hint else ""
         self.diagnostics.warning(where, f"{what} not found: {quoted(reference)} (looked as given, next to "
-                                 f"{Path(referencing).name}, in the folders above and in the EyeSim home); "
+                                 f"{Path(referencing).name}, in the folders above and in the EyeSim home{also}); "
                                  f"{fallback}", "missing-file")
 
     # -- types ---------------------------------------------------------------------------------
@@ -347,6 +349,23 @@ class _SceneLoader:
             self.missing(where, "program", program, scene_file, "the robot starts without it")
             return program
         return str(found)
+
+
+def _near_file(reference: str, referencing: Path) -> str | None:
+    """A file next to the referencing one whose name is close to the missing one's (a typo), written
+    as the reference would name it."""
+    name = reference.replace("\\", "/").rsplit("/", 1)[-1]
+    folder = Path(referencing).parent / Path(reference.replace("\\", "/")).parent
+    try:
+        names = [p.name for p in folder.iterdir() if p.is_file()]
+    except OSError:
+        return None
+    same_kind = [n for n in names if Path(n).suffix.lower() == Path(name).suffix.lower()] or names
+    hint = difflib.get_close_matches(name, same_kind, n=1, cutoff=0.6)
+    if not hint or hint[0] == name:
+        return None
+    prefix = reference.replace("\\", "/")[: -len(name)] if "/" in reference.replace("\\", "/") else ""
+    return prefix + hint[0]
 
 
 class _StartPicker:

@@ -7,6 +7,8 @@ written because whether a name is a robot or an object depends on the files it l
 
 from __future__ import annotations
 
+import difflib
+
 from dataclasses import dataclass
 
 from eyesim.scene.description import Location, Marker, Settings
@@ -119,8 +121,11 @@ class _SceneReader(KeywordReader):
             elif flag in SETTING_VALUES:
                 self.setting_value(line, i, flag, value)
             else:
-                self.diagnostics.warning(self.at(line, i), f"unknown setting {quoted(token.text)} ignored: "
-                                         "expected VIS, TRACE, EYESIM6PSD, PSDNOISE=<mm>, SEED=<n> or CALLTIME=<ms>", "unknown-setting")
+                hint = difflib.get_close_matches(flag, [*SETTING_FLAGS, *SETTING_VALUES], n=1, cutoff=0.6)
+                also = f" (did you mean {hint[0].upper()}?)" if hint else ""
+                self.diagnostics.warning(self.at(line, i), f"unknown setting {quoted(token.text)} ignored{also}: "
+                                         "expected VIS, TRACE, EYESIM6PSD, PSDNOISE=<mm>, SEED=<n> or CALLTIME=<ms>",
+                                         "unknown-setting")
 
     def setting_value(self, line: Line, index: int, flag: str, text: str) -> None:
         field, expected = SETTING_VALUES[flag]
