@@ -211,6 +211,15 @@ def readable(pipe):
     return pipe
 
 
+def drain(source, timeout: float = 1.0) -> None:
+    """The program has exited: wait (up to `timeout` s) until what it wrote last has reached
+    `source`. Nothing to do on POSIX, where it is still in the pipe; on Windows the relay thread
+    may not have moved it into its socket yet (it ends at the pipe's end, at once unless a child
+    of the program still holds the pipe)."""
+    if WINDOWS:
+        source.thread.join(timeout)
+
+
 def read_available(source, size: int) -> bytes | None:
     """What `source` (from `readable`) holds now: bytes, b"" at its end, None when nothing is there yet."""
     if WINDOWS:
@@ -231,7 +240,8 @@ class _PipeRelay:
         self.pipe = pipe
         self.inside, self.outside = socket.socketpair()
         self.outside.setblocking(False)
-        threading.Thread(target=self._copy, daemon=True).start()
+        self.thread = threading.Thread(target=self._copy, daemon=True)
+        self.thread.start()
 
     def _copy(self) -> None:
         try:

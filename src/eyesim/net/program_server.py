@@ -208,8 +208,11 @@ class ProgramConnection:
                 pass
         self.backlog = Backlog()  # given back at once, not when the session is forgotten
         if self._events:
-            self.sockets.selector.unregister(self.sock)
             self._events = 0
+            try:
+                self.sockets.selector.unregister(self.sock)
+            except (KeyError, ValueError):
+                pass  # Ctrl-C came between a change of interest and its note (closing after it)
         self.sock.close()
         self.sockets.closed(self)
 

@@ -101,6 +101,7 @@ def program_environment(host: str, port: int, robot_id: int, token: str | None =
     if token is not None:
         env["EYESIM_TOKEN"] = token
     env.setdefault("PYTHONUNBUFFERED", "1")
+    env.setdefault("PYTHONIOENCODING", "utf-8")  # as C programs' text: Windows would use its ANSI code page
     return platform.library_environment(env, paths.robios_lib_dir())
 
 

@@ -67,6 +67,7 @@ class ProgramOutput:
         """The program has exited: take in the rest and stop watching (a process it started may
         still hold the pipe open; what that writes later is not shown)."""
         for stream in list(self.pipes):
+            platform.drain(self.pipes[stream])  # Windows: its last words may still be on their way
             self.read(stream, whole=True)
             if stream in self.pipes:  # not at its end: a process it started still holds it
                 self._close(stream)
