@@ -79,8 +79,10 @@ def command(inner: list[str], work: Path, uid: int | None) -> list[str]:
     else:
         unshare = ["--unshare-pid", "--unshare-ipc", "--unshare-net", "--unshare-uts", "--unshare-cgroup-try",
                    "--setenv", CASE_UID_VARIABLE, str(uid)]
+    # Empty /run and /tmp first: what is bound below them afterwards (a Python environment or the
+    # work folder under /tmp, as in a CI checkout made with mktemp) stays visible.
     args = [bwrap(), *unshare, "--die-with-parent", "--new-session", "--proc", "/proc", "--dev", "/dev",
-            "--tmpfs", "/run"]
+            "--tmpfs", "/run", "--tmpfs", "/tmp"]
     for folder in SYSTEM_FOLDERS:
         args += ["--ro-bind-try", folder, folder]
     for folder in readable_folders():
@@ -88,8 +90,7 @@ def command(inner: list[str], work: Path, uid: int | None) -> list[str]:
         for parent in reversed(folder.parents[:-1]):
             args += ["--perms", "0755", "--dir", str(parent)]
         args += ["--ro-bind", str(folder), str(folder)]
-    # An empty /tmp first: the work folder may be below /tmp, and is bound after it.
-    args += ["--tmpfs", "/tmp", "--bind", str(work), str(work), "--chdir", str(work),
+    args += ["--bind", str(work), str(work), "--chdir", str(work),
              "--setenv", "HOME", str(work), "--setenv", "TMPDIR", str(work),
              "--setenv", "MPLCONFIGDIR", str(work / ".matplotlib"), "--"]
     return args + inner
