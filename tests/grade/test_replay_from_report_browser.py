@@ -10,7 +10,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from support.grading import grade
+from support.grading import ARRIVE_SPEC, ARRIVES, GETS_LOST, grade_class
 from support.programs import eyesim_command
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "web"))
@@ -18,34 +18,9 @@ from browser import chromium_available, launch_browser  # noqa: E402
 
 pytestmark = pytest.mark.browser
 
-SPEC = """
-title = "replays"
-[programs.prog]
-sources = ["prog.c"]
-[limits]
-time = 4
-[[cases]]
-name = "drive"
-scene = "default"
-robots = [{ robot = 1, program = "prog" }]
-[[cases.checks]]
-kind = "lcd_text"
-robot = 1
-text = "arrived"
-"""
-GOOD = '#include "eyebot.h"\nint main(void) { VWStraight(300, 300); VWWait(); LCDPrintf("arrived"); return 0; }\n'
-LOST = '#include "eyebot.h"\nint main(void) { VWTurn(90, 90); VWWait(); LCDPrintf("lost"); return 0; }\n'
-
-
 def test_a_failing_case_is_replayed_from_the_report(tmp_path):
     assert chromium_available(), "the browser tests need Chromium at /usr/bin/chromium"
-    (tmp_path / "spec.toml").write_text(SPEC)
-    for name, source in (("good", GOOD), ("lost", LOST)):
-        (tmp_path / "subs" / name).mkdir(parents=True)
-        (tmp_path / "subs" / name / "prog.c").write_text(source)
-    out = tmp_path / "report"
-    done = grade("spec.toml", "subs", "--out", str(out), cwd=tmp_path)
-    assert done.returncode == 0, done.stdout + done.stderr
+    out = grade_class(tmp_path, ARRIVE_SPEC, {"good": ARRIVES, "lost": GETS_LOST})
     report = json.loads((out / "report.json").read_text())
     lost = next(s for s in report["students"] if s["name"] == "lost")["cases"][0]
     good = next(s for s in report["students"] if s["name"] == "good")["cases"][0]

@@ -23,3 +23,36 @@ def lab_submissions_module():
 
 def grade(*args: str, cwd: Path, timeout: float = 600) -> subprocess.CompletedProcess:
     return subprocess.run(eyesim_command("grade", *args), capture_output=True, text=True, cwd=cwd, timeout=timeout)
+
+
+# A one-case spec in the bundled arena: the robot's LCD must say "arrived" (tests of the report and
+# of replaying its failed cases), and a submission that arrives and one that gets lost.
+ARRIVE_SPEC = """
+title = "replays"
+[programs.prog]
+sources = ["prog.c"]
+[limits]
+time = 4
+[[cases]]
+name = "drive"
+scene = "default"
+robots = [{ robot = 1, program = "prog" }]
+[[cases.checks]]
+kind = "lcd_text"
+robot = 1
+text = "arrived"
+"""
+ARRIVES = '#include "eyebot.h"\nint main(void) { VWStraight(300, 300); VWWait(); LCDPrintf("arrived"); return 0; }\n'
+GETS_LOST = '#include "eyebot.h"\nint main(void) { VWTurn(90, 90); VWWait(); LCDPrintf("lost"); return 0; }\n'
+
+
+def grade_class(root: Path, spec: str, sources: dict[str, str]) -> Path:
+    """Grades `sources` (student -> prog.c) against `spec` in `root`; returns the report folder."""
+    (root / "spec.toml").write_text(spec)
+    for name, source in sources.items():
+        (root / "subs" / name).mkdir(parents=True)
+        (root / "subs" / name / "prog.c").write_text(source)
+    out = root / "report"
+    done = grade("spec.toml", "subs", "--out", str(out), cwd=root)
+    assert done.returncode == 0, done.stdout + done.stderr
+    return out

@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from support.grading import grade  # noqa: E402
+from support.grading import ARRIVE_SPEC, GETS_LOST, grade_class  # noqa: E402
 from support.programs import eyesim_command, simulator_with_viewer  # noqa: E402
 from support.recordings import record_tour  # noqa: E402
 
@@ -117,31 +117,8 @@ def test_the_replay_has_no_errors_and_asks_for_nothing_only_a_live_run_has(brows
         replay.wait(timeout=10)
 
 
-REPORT_SPEC = """
-title = "page errors"
-[programs.prog]
-sources = ["prog.c"]
-[limits]
-time = 4
-[[cases]]
-name = "drive"
-scene = "default"
-robots = [{ robot = 1, program = "prog" }]
-[[cases.checks]]
-kind = "lcd_text"
-robot = 1
-text = "arrived"
-"""
-LOST = '#include "eyebot.h"\nint main(void) { VWTurn(90, 90); VWWait(); LCDPrintf("lost"); return 0; }\n'
-
-
 def test_the_grading_report_and_the_replay_it_links_have_no_errors(browser_context, tmp_path):
-    (tmp_path / "spec.toml").write_text(REPORT_SPEC)
-    (tmp_path / "subs" / "lost").mkdir(parents=True)
-    (tmp_path / "subs" / "lost" / "prog.c").write_text(LOST)
-    out = tmp_path / "report"
-    done = grade("spec.toml", "subs", "--out", str(out), cwd=tmp_path)
-    assert done.returncode == 0, done.stdout + done.stderr
+    out = grade_class(tmp_path, ARRIVE_SPEC, {"lost": GETS_LOST})
     server = subprocess.Popen(eyesim_command("replay", str(out), "--viewer-port", "0"), stdout=subprocess.PIPE,
                               stderr=subprocess.PIPE, text=True)
     try:

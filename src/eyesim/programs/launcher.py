@@ -64,11 +64,6 @@ class ProgramRun:
         return "".join(self.output[stream])
 
     @property
-    def signal(self) -> int | None:
-        """The POSIX signal that ended the program (a crash, a limit), if one did."""
-        return -self.exit_code if self.exit_code is not None and self.exit_code < 0 else None
-
-    @property
     def crash(self) -> str | None:
         """Why the program ended, in words, when a crash, a signal or a limit ended it and we did
         not stop it: 'crashed: segmentation fault (SIGSEGV)', 'crashed: access violation (0xC0000005)'."""

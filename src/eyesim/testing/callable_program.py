@@ -97,10 +97,6 @@ class CallableRun:
         return getattr(self.function, "__name__", "callable")
 
     @property
-    def signal(self) -> None:
-        return None
-
-    @property
     def crash(self) -> None:
         return None  # a callable's failure is its `error`
 
