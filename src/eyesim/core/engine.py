@@ -539,7 +539,10 @@ class Simulation:
         return (g.VERSION, robot.id, robot.name)
 
     def _threads(self, session: Session) -> tuple:
-        """The library says a second thread of the program makes calls (THREADS, sent once)."""
+        """The library says a second thread of the program makes calls (THREADS, sent once, before
+        that thread's first call): from now on time goes on only while both wait (Session.blocked),
+        even if the second thread's first call arrives while the main thread computes."""
+        session.threads_seen = max(session.threads_seen, 2)
         if self.clock.deterministic:
             log.warning("robot %d (%s): RoBIOS calls come from more than one thread of the program; their "
                         "order follows the operating system's scheduling, so this deterministic run may not "
