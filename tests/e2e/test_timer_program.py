@@ -21,3 +21,17 @@ def test_timer_callbacks_run_at_their_period_of_simulation_time(tmp_path):
     assert lines[3].startswith("busy wait done after ")
     assert "eyesim: OSDetachTimer: no timer 1 is attached" in result.stderr
     assert "eyesim: OSAttachTimer: timer period 0 ms is not positive" in result.stderr
+
+
+def test_timer_callbacks_beside_a_polling_loop_repeat_exactly(tmp_path):
+    """Callbacks making calls while the main thread polls: every deterministic run is the same
+    (it used to differ from run to run, with the threads' calls in the scheduler's order)."""
+    program = build("timer_control", tmp_path, "-Wall", "-Wextra", "-Werror")
+    outputs = []
+    for _ in range(3):
+        result = run_headless("--program", f"1={program}", cwd=tmp_path)
+        assert result.returncode == 0, result.stdout + result.stderr
+        assert "no longer deterministic" not in result.stderr
+        outputs.append(result.stdout.splitlines()[2:])  # after the lines naming the run's port
+    assert program_lines("\n".join(outputs[0]))[0].startswith("ticks 150 ")
+    assert outputs[1] == outputs[0] and outputs[2] == outputs[0]

@@ -36,7 +36,9 @@ def timer_attach(sim, robot, request):
     (period_ms,) = request.args
     with checked_arguments():
         handle = _timers(robot).attach(request.session, period_ms, request.time_us)
-    request.session.helper_threads = 1  # the library starts its timer thread now
+    if not request.session.helper_threads:  # the library starts its timer thread now
+        request.session.helper_threads = 1
+        request.session.timer_starting = sim.clock.deterministic
     return (handle,)
 
 
@@ -50,7 +52,10 @@ def timer_detach(sim, robot, request):
 def timer_wait(sim, robot, request):
     wait = TimerWait(_timers(robot), request.session)
     reply = wait.poll(request.time_us)
-    return reply if reply is not None else wait
+    if reply is None:
+        return wait
+    request.session.timer_running = sim.clock.deterministic  # callbacks run now (Session.enqueue)
+    return reply
 
 
 HANDLERS = {"TIMER_ATTACH": timer_attach, "TIMER_DETACH": timer_detach, "TIMER_WAIT": timer_wait}

@@ -280,8 +280,10 @@ class Simulation:
             request.time_us = max(self.time_us, session.local_time_us)
             self._execute(request)
             return
-        session.queued.append(request)
-        if not self.clock.deterministic:
+        if self.clock.deterministic:
+            session.enqueue(request)
+        else:
+            session.queued.append(request)
             self._take_turn(session)
 
     def _take_turn(self, session: Session) -> None:
@@ -313,7 +315,7 @@ class Simulation:
     def _take_request(self, session: Session, at_us: int | None = None) -> None:
         if self.clock.deterministic:
             self._flush_output(session)
-        request = session.queued.popleft()
+        request = session.next_queue().popleft()
         if at_us is None:
             # Realtime: calls answered at once move the program's clock on by their cost within
             # the step under way, never past it (it would run ahead of the simulation).
@@ -331,17 +333,18 @@ class Simulation:
             return
         live = [s for s in self.sessions if s.robot is not None and not s.closed]
         now = time.perf_counter()
-        waiting_for = [s for s in live if not s.queued and not s.blocked(now)]
+        waiting_for = [s for s in live if s.computing(now)]
         if waiting_for or self.expected_programs:
             self._wait(IDLE_WAIT)  # a program is computing: wait for its next call
             return
         boundary = self.time_us + self.step_us
         best = None
         for session in live:
-            if session.queued and not any(isinstance(p, Deferred) for _, p in session.pending):
+            waiting = [(r, p) for r, p in session.pending if not session.held(r)]
+            if session.next_queue() and not any(isinstance(p, Deferred) for _, p in waiting):
                 key = (session.local_time_us, session.robot.id)
             else:
-                wake = min((p.wake_us for _, p in session.pending if p.wake_us is not None), default=None)
+                wake = min((p.wake_us for _, p in waiting if p.wake_us is not None), default=None)
                 if wake is None:
                     continue
                 key = (max(wake, self.time_us), session.robot.id)
@@ -351,7 +354,7 @@ class Simulation:
             self._step_while_quiet(None if best is None else best[0][0])
             return
         (at_us, _), session = best
-        if session.queued:
+        if session.next_queue():
             self._take_request(session, at_us)
         elif not self._wake_session(session, at_us):
             self._wait(IDLE_WAIT)  # its reply is still being made (a camera image): wait for it, not time
@@ -432,6 +435,9 @@ class Simulation:
         if isinstance(result, Pending):
             session.pending.append((request, result))
             session.local_time_us = request.time_us
+            if result.background and session.timer_running:  # the callbacks are done: the rest goes on
+                session.timer_running = False
+                self._wake_session(session, self.time_us)
             return
         self._answer(request, self._reply_frame(request, result))
         for observer in self.request_observers:
@@ -579,13 +585,18 @@ class Simulation:
                 self._wake_session(session, self.time_us)
 
     def _wake_session(self, session: Session, at_us: int) -> bool:
-        """Complete the session's pending replies whose condition holds at time `at_us`; whether any did."""
+        """Complete the session's pending replies whose condition holds at time `at_us`; whether any did.
+        Deterministic: the timer thread's wait first; once it is answered, the callbacks run alone
+        (the other replies are held, Session.held)."""
         still = []
-        for request, pending in session.pending:
-            values = pending.poll(at_us)
+        for request, pending in sorted(session.pending, key=lambda waiting: not waiting[1].background):
+            held = self.clock.deterministic and (session.held(request) or pending.background and session.timers_locked())
+            values = None if held else pending.poll(at_us)
             if values is None:
                 still.append((request, pending))
                 continue
+            if pending.background and self.clock.deterministic:
+                session.timer_running = True
             session.local_time_us = max(session.local_time_us, at_us)
             if not isinstance(pending, Deferred):
                 self._send(session, self._reply_frame(request, values))
@@ -625,6 +636,7 @@ class Simulation:
             pending.cancel()
         session.pending.clear()
         session.queued.clear()
+        session.timer_queued.clear()
         if session in self.sessions:
             self.sessions.remove(session)
             log.info("%s disconnected", session.name)

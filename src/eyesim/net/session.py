@@ -11,6 +11,7 @@ from eyesim.protocol.ops import OpSpec
 
 log = logging.getLogger("eyesim")
 BUSY_WAIT_GRACE = 0.5  # s of wall time; see Session.blocked
+TIMER_LOCKING = ("TIMER_ATTACH", "TIMER_DETACH")  # see Session.timers_locked
 
 
 class Connection(Protocol):
@@ -33,6 +34,7 @@ class Request:
     request_id: int
     args: tuple
     time_us: int = 0  # simulation time at which it is handled
+    by_timer: bool = False  # deterministic: made by the library's timer thread (see Session.enqueue)
 
 
 class Pending:
@@ -101,6 +103,42 @@ class Session:
     in_turn: bool = False  # realtime: in the engine's round of programs to serve
     replies_held: int = 0  # realtime: replies waiting for their call time to pass
     last_clock_ms: int = -1  # deterministic: what its last clock read (OSGetCount, OSGetTime) returned
+    # Deterministic timers (see enqueue): the timer thread's first wait is still to come; it runs
+    # callbacks (its wait was answered); the calls those callbacks made, served before any other.
+    timer_starting: bool = False
+    timer_running: bool = False
+    timer_queued: deque = field(default_factory=deque)
+
+    def enqueue(self, request: Request) -> None:
+        """Deterministic: queue a request so that timer callbacks run at their simulation time in
+        the same order with the main thread's calls in every run. While the timer thread runs
+        callbacks, every other thread of the program waits in a call whose reply is held (see
+        held), so whatever arrives then comes from a callback and is served first. The timer
+        thread's first wait goes ahead of anything the main thread sent since it attached the
+        timer, however the operating system started the thread."""
+        if self.timer_running:
+            request.by_timer = True
+            self.timer_queued.append(request)
+        elif self.timer_starting and request.op.name == "TIMER_WAIT":
+            self.timer_starting = False
+            request.by_timer = True
+            self.queued.appendleft(request)
+        else:
+            self.queued.append(request)
+
+    def next_queue(self) -> deque:
+        """The queue whose requests are served next: the timer callbacks' while they run."""
+        return self.timer_queued if self.timer_running else self.queued
+
+    def held(self, request: Request) -> bool:
+        """Deterministic: is the reply to this waiting call held back? The main thread's are, while
+        timer callbacks run (they run alone, as on the robot)."""
+        return self.timer_running and not request.by_timer
+
+    def timers_locked(self) -> bool:
+        """Deterministic: the main thread waits in OSAttachTimer or OSDetachTimer, which hold the
+        library's timer lock, so no callback can run before that call is answered."""
+        return any(request.op.name in TIMER_LOCKING for request in self.queued)
 
     def note_request(self, now_wall: float) -> None:
         self.last_request_wall = now_wall
@@ -115,6 +153,15 @@ class Session:
         with a fresh grace, instead of running on for a thread that stopped calling earlier."""
         self.free_running = False
         self.last_request_wall = now_wall
+
+    def computing(self, now_wall: float) -> bool:
+        """Deterministic: must the run wait for this program's next request before going on?"""
+        if self.timer_starting:  # wait for the timer thread's first wait (see enqueue)
+            if now_wall - self.last_request_wall <= BUSY_WAIT_GRACE:
+                return True
+            self.timer_starting = False
+            log.warning("%s: the library's timer thread made no call; timers will not run", self.name)
+        return not self.next_queue() and not self.blocked(now_wall)
 
     def blocked(self, now_wall: float) -> bool:
         """Deterministic mode: may simulation time go on before this program's next request?
