@@ -30,6 +30,13 @@ def _pipeline(client: ProgramClient, name: str, count: int, *args) -> None:
     client.sock.sendall(frames)
 
 
+def _wait_until(condition, limit: float = 30.0) -> None:
+    deadline = time.monotonic() + limit
+    while not condition():
+        assert time.monotonic() < deadline
+        time.sleep(0.005)
+
+
 def _session(sim, robot_id: int):
     return next(s for s in sim.sessions if s.robot is not None and s.robot.id == robot_id)
 
@@ -41,7 +48,7 @@ def test_a_pipelining_program_gets_one_turn_per_round_like_the_rest(simulation):
     modest.hello("2")
     greedy.sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 1 << 20)
     _pipeline(greedy, "LIDAR_GET", 5000)  # 5000 scans asked for at once
-    time.sleep(0.05)  # they are in the simulator's hands
+    _wait_until(lambda: _session(sim, 1).queued)  # they are in the simulator's hands
     start = time.perf_counter()
     for _ in range(20):
         assert modest.call("PSD_GET", 1)[0] > 0
@@ -118,7 +125,7 @@ def test_with_a_call_time_a_pipelining_program_is_served_one_call_time_at_a_time
     modest.hello("2")
     start_us = sim.time_us
     _pipeline(greedy, "LIDAR_GET", 200)
-    time.sleep(0.3)
+    _wait_until(lambda: sim.time_us - start_us >= 300_000)  # 15 call times
     held = len(sim._held)
     greedy.sock.settimeout(0.02)
     replies = 0

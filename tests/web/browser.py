@@ -110,10 +110,18 @@ def wait_for_lcd(page: Page, robot_id: int, updates: int = 1) -> None:
     )
 
 
+WORLD_VIEW_SIZED = """() => {
+    const canvas = document.querySelector("#world .world-canvas");
+    const box = document.querySelector("#world");
+    return canvas && canvas.style.width === `${box.clientWidth}px` && canvas.style.height === `${box.clientHeight}px`;
+}"""  # the 3D view has taken the size of its box (after a layout change)
+
+
 def read_lcd_pixels(page: Page, robot_id: int) -> Image.Image:
     """The image the robot's LCD shows, as decoded by the browser, at its natural 480x320."""
     data_url = lcd_image(page, robot_id).evaluate(
-        """image => {
+        """async image => {
+            await image.decode().catch(() => {});  // a new image may still be decoding
             const canvas = document.createElement("canvas");
             canvas.width = image.naturalWidth;
             canvas.height = image.naturalHeight;

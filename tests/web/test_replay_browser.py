@@ -14,7 +14,7 @@ from pathlib import Path
 import imageio_ffmpeg
 import numpy as np
 import pytest
-from browser import open_viewer, read_lcd_pixels
+from browser import WORLD_VIEW_SIZED, open_viewer, read_lcd_pixels
 from PIL import Image
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
@@ -111,7 +111,6 @@ def test_scrubbing_shows_the_recorded_pose_lcd_console_and_path(browser_context,
             assert received["pos"] == expected["pos"] and received["quat"] == expected["quat"]
             lcd_at = recording.image_time(1, "lcd", at)
             page.wait_for_function("() => window.eyesimViewer.lcdUpdates(1) >= 1")
-            page.wait_for_timeout(200)  # the data URL decodes
             lcd = np.asarray(read_lcd_pixels(page, 1))
             assert np.array_equal(lcd, decoded(recording.image(1, "lcd", lcd_at)["data"]))
         # In realtime the program starts when the machine lets it (0.1-0.3 s): one or two steps by 0.7 s
@@ -134,7 +133,7 @@ def test_plots_show_signals_picked_from_the_list_and_by_clicking_a_robot(browser
     page.wait_for_function("() => window.eyesimViewer.plotted().length === 1")
     assert viewer.state("plotted") == [{"id": "robot/1/psd.1", "points": 4}]
     assert page.locator(".plot-chart canvas").count() == 1
-    page.wait_for_timeout(300)  # the 3D view took its new size
+    page.wait_for_function(WORLD_VIEW_SIZED)
     where = viewer.state("robotScreenPosition", 2)
     page.mouse.click(where["x"], where["y"])
     page.wait_for_function("() => window.eyesimViewer.plotted().length === 4")
@@ -150,7 +149,7 @@ def test_clicking_a_psd_beam_or_its_sensor_plots_that_psds_readings(browser_cont
     page.click("#plots-toggle")
     scrub_to(page, 0.6)
     page.wait_for_function("() => window.eyesimViewer.sensorRays().length === 12")  # 3 robots' 4 PSDs
-    page.wait_for_timeout(300)  # the 3D view took its new size
+    page.wait_for_function(WORLD_VIEW_SIZED)
     shown = viewer.state("timeline")
     click_beside_psd_beam(page, robot=2, psd=1)
     page.wait_for_function("() => window.eyesimViewer.plotted().length === 1")
@@ -180,7 +179,7 @@ def test_clicking_a_psd_beam_in_a_live_run_plots_it_without_moving_the_robot(bro
         page = viewer.page
         page.click("#plots-toggle")
         page.wait_for_function("() => window.eyesimViewer.consoleText(1).includes('done')", timeout=20_000)
-        page.wait_for_timeout(300)  # the robot has stopped; the 3D view took its new size
+        page.wait_for_function(WORLD_VIEW_SIZED)
         pose = viewer.state("robotPose", 1)["pos"]
         click_beside_psd_beam(page, robot=1, psd=1)
         page.wait_for_function("() => window.eyesimViewer.plotted().length === 1")

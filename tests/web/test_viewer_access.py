@@ -186,8 +186,11 @@ def test_malformed_commands_get_an_error_and_the_socket_stays_open(viewer_sim):
                     if message["type"] == "error":
                         errors.append(message["message"])
                 await ws.send_str(json.dumps({"type": "key", "robot": 1, "key": 1}))  # still listened to
-                await asyncio.sleep(0.3)
-                return errors, ws.closed
+                await ws.send_str(json.dumps({"type": "no such command"}))  # answered once the key is taken
+                while True:
+                    message = json.loads((await ws.receive(timeout=10)).data)
+                    if message["type"] == "error":
+                        return errors, ws.closed
 
     errors, closed = run_async(talk())
     assert not closed

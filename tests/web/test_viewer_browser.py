@@ -86,7 +86,7 @@ def test_robot_pose_follows_snapshots(viewer):
     assert first["pos"] == pytest.approx(pos, abs=1e-12)
     assert first["quat"] == pytest.approx(quat, abs=1e-12)
 
-    time.sleep(0.5)
+    viewer.page.wait_for_function(f"() => window.eyesimViewer.robotPose({ROBOT_ID}).time > {first['time'] + 0.2}")
     later = viewer.state("robotPose", ROBOT_ID)
     assert later["time"] > first["time"]
     assert later["pos"] != first["pos"]

@@ -63,7 +63,7 @@ def test_the_viewer_draws_the_models_where_the_bodies_are(browser_context, tmp_p
             assert error.value.code == 404
 
         # the robot stands still and the sign has settled: what is drawn matches the physics pose
-        page.wait_for_timeout(1000)
+        page.wait_for_function("() => window.eyesimViewer.objectPose(1)?.time >= 1.5")
         for kind, mesh, pose_of in (("object", sign, "objectPose"), ("robot", robot, "robotPose")):
             pose = viewer.state(pose_of, 1)
             low, high = placed_box(mesh, pose)

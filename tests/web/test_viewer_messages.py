@@ -22,7 +22,8 @@ from eyesim.scene import builtins, load_scene
 from eyesim.paths import EXAMPLES_DIR
 
 EXAMPLES = EXAMPLES_DIR
-WATCH_SECONDS = 3.0
+EVERY_KIND = {"scene", "snapshot", "status", "timeline", "lcd", "camera", "menu", "console", "program", "audio",
+              "serial", "io", "frame", "signals", "series", "paths", "error"}
 
 
 @pytest.fixture
@@ -60,9 +61,21 @@ def busy_programs(port: int) -> list[ProgramClient]:
     return programs
 
 
+async def until(condition, what: str, limit: float = 60.0) -> None:
+    """Wait for the browser to have received something (a generous limit for a loaded machine)."""
+    loop = asyncio.get_running_loop()
+    deadline = loop.time() + limit
+    while not condition():
+        assert loop.time() < deadline, f"the browser never got {what}"
+        await asyncio.sleep(0.02)
+
+
 async def watch(port: int, program_port: int, sim) -> list[dict]:
     """Everything one browser gets while programs run and it uses the timeline, resets and errs."""
     received: list[dict] = []
+
+    def kinds() -> set[str]:
+        return {message["type"] for message in received}
     async with aiohttp.ClientSession() as session:
         async with session.ws_connect(f"ws://127.0.0.1:{port}/ws", max_msg_size=0) as ws:
             async def listen():
@@ -71,7 +84,7 @@ async def watch(port: int, program_port: int, sim) -> list[dict]:
                     received.append(json.loads(message.data))
 
             listener = asyncio.get_running_loop().create_task(listen())
-            await asyncio.sleep(WATCH_SECONDS / 3)
+            await until(lambda: {"scene", "snapshot", "status"} <= kinds(), "the scene and a snapshot")
             programs = await asyncio.to_thread(busy_programs, program_port)
             sim.call(lambda s: s.events.program(1, "started", "alpha", None))
             sim.call(lambda s: s.events.console(1, "stdout", "robot 1 says hello\n"))
@@ -80,11 +93,12 @@ async def watch(port: int, program_port: int, sim) -> list[dict]:
             for command in ({"type": "seek", "time": 0.1}, {"type": "seek", "time": 1e9}, {"type": "signals"}, {"type": "paths"},
                             {"type": "live"}, {"type": "key", "robot": 1, "key": 3}):
                 await ws.send_str(json.dumps(command))
-            await asyncio.sleep(WATCH_SECONDS / 3)
+            await until(lambda: EVERY_KIND - {"series"} <= kinds(), "what programs and commands cause")
             signals = next(m for m in received if m["type"] == "signals")["signals"]
             await ws.send_str(json.dumps({"type": "series", "ids": [s["id"] for s in signals[:3]]}))
             await ws.send_str(json.dumps({"type": "reset"}))
-            await asyncio.sleep(WATCH_SECONDS / 3)
+            await until(lambda: "series" in kinds() and sum(m["type"] == "scene" for m in received) == 2,
+                        "the series and the scene after the reset")
             listener.cancel()
             for program in programs:
                 program.close()
@@ -95,8 +109,7 @@ def test_every_message_a_live_simulator_sends_follows_the_schema(busy_scene):
     with viewer_simulation(busy_scene) as (sim, port, server):
         received = run_async(watch(server.port, port, sim))
     kinds = {message["type"] for message in received}
-    assert {"scene", "snapshot", "status", "timeline", "lcd", "camera", "menu", "console", "program",
-            "audio", "serial", "io", "frame", "signals", "series", "paths", "error"} <= kinds, kinds
+    assert EVERY_KIND <= kinds, kinds
     assert sum(m["type"] == "scene" for m in received) == 2  # on connect and after the reset
     first_scene = next(m for m in received if m["type"] == "scene")
     assert first_scene["warnings"] and first_scene["objects"] and first_scene["bodies"]
