@@ -81,6 +81,14 @@ def test_every_route_answers_what_the_schema_says(simulator):
     assert call("POST /api/programs/restart", {"robot": 2})["state"] == "running"
     assert call("POST /api/programs/stop", {"robot": 2})["state"] == "stopped"
     assert call("POST /api/programs/stop", {"robot": 2}, status=400)["error"] == "robot 2 runs no program"
+    # The program editor: the executable's source beside it, saved, checked and run.
+    source = call("POST /api/sources/robot", {"robot": 2})
+    assert (source["path"], source["kind"]) == ("wait.c", "c")
+    assert call("POST /api/sources/read", {"root": 0, "path": "wait.c"})["text"] == WAIT_FOREVER
+    call("POST /api/sources/save", {"root": 0, "path": "wait.c", "text": WAIT_FOREVER, "version": source["version"]})
+    assert call("POST /api/sources/check", {"root": 0, "path": "wait.c"})["ok"]
+    assert call("POST /api/sources/run", {"robot": 2, "root": 0, "path": "wait.c"})["state"] == "running"
+    assert call("POST /api/programs/stop", {"robot": 2})["state"] == "stopped"
     assert call("GET /api/settings")["vis"] is False
     assert call("POST /api/settings", {"vis": True, "psd_noise": 2.5, "seed": 4})["psd_noise"] == 2.5
     # The robot editor, its preview and its test drive.
@@ -153,6 +161,11 @@ BAD_BODIES = [
     ("POST /api/programs/stop", {}, "field 'robot' is missing"),
     ("POST /api/programs/restart", {"robot": True}, "robot must be a whole number, not True"),
     ("POST /api/programs/compile", {"root": 0, "path": 5}, "path must be text, not 5"),
+    ("POST /api/sources/robot", {"robot": "1"}, "robot must be a whole number, not '1'"),
+    ("POST /api/sources/read", {"root": 0}, "field 'path' is missing"),
+    ("POST /api/sources/save", {"root": 0, "path": "wait.c"}, "field 'text' is missing"),
+    ("POST /api/sources/check", {"root": 0, "path": ""}, "path must have at least 1 characters"),
+    ("POST /api/sources/run", {"robot": 1, "root": 0}, "field 'path' is missing"),
     ("POST /api/settings", {"psd_noise": "lots"}, "psd_noise must be a number, not 'lots'"),
     ("POST /api/settings", {"gravity": 1}, "unknown field 'gravity' (fields: vis, trace, psd_noise, seed)"),
     ("POST /robot-editor/api/open", {"source": 1}, "source must be text, not 1"),

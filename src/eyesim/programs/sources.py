@@ -15,6 +15,7 @@ from eyesim import __version__, paths
 LANGUAGES = {".c": "cc", ".cpp": "c++", ".cc": "c++", ".cxx": "c++"}
 HEADERS = (".h", ".hpp", ".hh")
 COMPILE_SECONDS = 120
+COMPILER_OUTPUT = "compiler-output.txt"  # beside a cached program: what the compiler said building it
 
 
 class BuildError(Exception):
@@ -52,7 +53,7 @@ def executable_for(source: Path) -> tuple[Path, str]:
     try:
         output = toolchain.executable_name(paths.cache_dir() / "programs" / _key(source, language) / source.stem)
         if output.is_file():
-            return output, ""
+            return output, _compiler_said(output)
         output.parent.mkdir(parents=True, exist_ok=True)
         building = output.with_name(f".{output.name}.{os.getpid()}")
         args = [toolchain.source_argument(source.name), "-o", str(building)]
@@ -67,9 +68,18 @@ def executable_for(source: Path) -> tuple[Path, str]:
     if result.returncode != 0:
         building.unlink(missing_ok=True)
         raise BuildError(said.strip() or f"the compiler failed with status {result.returncode}")
+    # its warnings stay with it: a build taken from the cache warns as the first one did
+    output.with_name(COMPILER_OUTPUT).write_text(said, encoding="utf-8")
     os.replace(building, output)  # whole or not at all, whoever builds the same program at once
     toolchain.place_library(["-o", str(output)])
     return output, said
+
+
+def _compiler_said(output: Path) -> str:
+    try:
+        return output.with_name(COMPILER_OUTPUT).read_text(encoding="utf-8")
+    except OSError:  # built before the compiler's words were kept
+        return ""
 
 
 def _key(source: Path, language: str) -> str:

@@ -1119,6 +1119,42 @@ SCHEMA = json.loads(r'''{
       "required": ["ok", "output", "diagnostics", "program"],
       "additionalProperties": false
     },
+    "SourceFile": {
+      "type": "object",
+      "description": "A program source opened in the editor.",
+      "properties": {
+        "root": {"description": "index into the roots", "type": "integer", "minimum": 0, "maximum": 1000},
+        "path": {"description": "a path relative to the root", "type": "string"},
+        "kind": {"enum": ["c", "c++", "header", "python"]},
+        "text": {"type": "string"},
+        "version": {"description": "names this text: a save with it is refused (409) when the file changed since", "type": "string"}
+      },
+      "required": ["root", "path", "kind", "text", "version"],
+      "additionalProperties": false
+    },
+    "SourceSave": {
+      "type": "object",
+      "description": "New text for an existing source; without version it replaces whatever the file holds.",
+      "properties": {
+        "root": {"description": "index into the roots", "type": "integer", "minimum": 0, "maximum": 1000},
+        "path": {"description": "a path relative to the root", "type": "string", "minLength": 1, "maxLength": 1000},
+        "text": {"type": "string", "maxLength": 1000000},
+        "version": {"description": "the version the text was edited from", "type": "string", "maxLength": 64}
+      },
+      "required": ["root", "path", "text"],
+      "additionalProperties": false
+    },
+    "SavedSource": {
+      "type": "object",
+      "properties": {
+        "root": {"type": "integer"},
+        "path": {"type": "string"},
+        "kind": {"enum": ["c", "c++", "header", "python"]},
+        "version": {"type": "string"}
+      },
+      "required": ["root", "path", "kind", "version"],
+      "additionalProperties": false
+    },
     "RunSettings": {
       "type": "object",
       "description": "The running scene's settings and the clock.",
@@ -1414,6 +1450,19 @@ SCHEMA = json.loads(r'''{
       "description": "a .c, .cc, .cpp or .cxx file",
       "request": {"$ref": "#/$defs/Place"},
       "response": {"$ref": "#/$defs/CompileResult"}
+    },
+    "POST /api/sources/robot": {"description": "the source of the robot's program", "request": {"$ref": "#/$defs/ProgramRobot"}, "response": {"$ref": "#/$defs/SourceFile"}},
+    "POST /api/sources/read": {"request": {"$ref": "#/$defs/Place"}, "response": {"$ref": "#/$defs/SourceFile"}},
+    "POST /api/sources/save": {"request": {"$ref": "#/$defs/SourceSave"}, "response": {"$ref": "#/$defs/SavedSource"}},
+    "POST /api/sources/check": {
+      "description": "compile a C/C++ source into the build cache, or a .py file with py_compile",
+      "request": {"$ref": "#/$defs/Place"},
+      "response": {"$ref": "#/$defs/CompileResult"}
+    },
+    "POST /api/sources/run": {
+      "description": "start the source for the robot (a C/C++ source as its cached build)",
+      "request": {"$ref": "#/$defs/StartProgram"},
+      "response": {"$ref": "#/$defs/RobotProgramState"}
     },
     "GET /api/settings": {"response": {"$ref": "#/$defs/RunSettings"}},
     "POST /api/settings": {"request": {"$ref": "#/$defs/SettingsChange"}, "response": {"$ref": "#/$defs/RunSettings"}},

@@ -9,29 +9,25 @@ the floor. Object frame: the same axes, origin at the object's centre on the flo
 Every position below is already converted into these frames, whatever dialect the file used
 (see docs/file-formats.md); the only exception is a robot's mesh placement (`model_offset`,
 `model_rotation`), which stays in the mesh's own axes because it only concerns drawing the mesh.
-`RobotType` and the specs of its parts (PsdSpec, CameraSpec ...) are declared by the robot part
-kinds in scene/parts/ and importable from here as well.
+`RobotType` and the specs of its parts (PsdSpec, CameraSpec, Collider ...) are declared by the
+robot part kinds in scene/parts/, `Location` and `Diagnostic` by scene/diagnostics.py; all are
+importable from here as well.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-
-@dataclass(frozen=True)
-class Location:
-    """Where something came from, for messages: file, 1-based line and column (0 = unknown)."""
-
-    file: str
-    line: int = 0
-    column: int = 0
-
-    def __str__(self) -> str:
-        if self.line and self.column:
-            return f"{self.file}:{self.line}:{self.column}"
-        if self.line:
-            return f"{self.file}:{self.line}"
-        return self.file
+from eyesim.scene.diagnostics import Diagnostic, Location
+from eyesim.scene.parts import RobotType
+from eyesim.scene.parts.arm import ArmSpec, GripperSpec, JointSpec
+from eyesim.scene.parts.body import Collider
+from eyesim.scene.parts.camera import CameraSpec
+from eyesim.scene.parts.lidar import LidarSpec
+from eyesim.scene.parts.psd import PsdSpec
+from eyesim.scene.parts.thrusters import ThrusterSpec
+from eyesim.scene.parts.water import BuoyancySpec, DragSpec
+from eyesim.scene.parts.wheels import SteeringSpec, WheelSpec
 
 
 @dataclass(frozen=True)
@@ -107,19 +103,6 @@ class World:
 
 
 @dataclass(frozen=True)
-class Collider:
-    """A collision shape in the robot/object frame (mm): kind 'box' (size = sx, sy, sz),
-    'sphere' (size = (r,)), 'capsule' (size = (r, h)) or 'cylinder' (size = (r, h)), with its
-    centre and, for capsules/cylinders, the axis letter. A capsule's h is its full length
-    including the two caps (as in the VR files)."""
-
-    kind: str
-    size: tuple[float, ...]
-    center: tuple[float, float, float] = (0.0, 0.0, 0.0)
-    axis: str = "z"
-
-
-@dataclass(frozen=True)
 class ObjectType:
     """An object type (.esObj or built-in): model, scale, mass (kg), colliders, flags.
 
@@ -163,21 +146,6 @@ class Settings:
 
 
 @dataclass(frozen=True)
-class Diagnostic:
-    """A warning or error found while loading: kind ('error' | 'warning'), where, and what.
-
-    `code` names the kind of problem for programs (e.g. 'missing-file', 'unknown-keyword')."""
-
-    kind: str
-    location: Location
-    message: str
-    code: str = ""
-
-    def __str__(self) -> str:
-        return f"{self.location}: {self.kind}: {self.message}"
-
-
-@dataclass(frozen=True)
 class Scene:
     """Everything a .sim file describes; the simulator builds its world from this alone.
 
@@ -196,17 +164,6 @@ class Scene:
     settings: Settings = Settings()
     warnings: tuple[Diagnostic, ...] = ()
 
-
-# The robot type and its parts' specs are declared by the part kinds (scene/parts/); imported at the
-# end because the part modules use the classes above.
-from eyesim.scene.parts import RobotType  # noqa: E402
-from eyesim.scene.parts.arm import ArmSpec, GripperSpec, JointSpec  # noqa: E402
-from eyesim.scene.parts.camera import CameraSpec  # noqa: E402
-from eyesim.scene.parts.lidar import LidarSpec  # noqa: E402
-from eyesim.scene.parts.psd import PsdSpec  # noqa: E402
-from eyesim.scene.parts.thrusters import ThrusterSpec  # noqa: E402
-from eyesim.scene.parts.water import BuoyancySpec, DragSpec  # noqa: E402
-from eyesim.scene.parts.wheels import SteeringSpec, WheelSpec  # noqa: E402
 
 __all__ = ["Location", "Pose", "Wall", "StartPosition", "ObjectPlacement", "Marker", "World", "Collider",
            "ObjectType", "RobotPlacement", "Settings", "Diagnostic", "Scene", "RobotType", "ArmSpec", "GripperSpec",

@@ -2,7 +2,38 @@
 
 from __future__ import annotations
 
-from eyesim.scene.description import Diagnostic, Location
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Location:
+    """Where something came from, for messages: file, 1-based line and column (0 = unknown)."""
+
+    file: str
+    line: int = 0
+    column: int = 0
+
+    def __str__(self) -> str:
+        if self.line and self.column:
+            return f"{self.file}:{self.line}:{self.column}"
+        if self.line:
+            return f"{self.file}:{self.line}"
+        return self.file
+
+
+@dataclass(frozen=True)
+class Diagnostic:
+    """A warning or error found while loading: kind ('error' | 'warning'), where, and what.
+
+    `code` names the kind of problem for programs (e.g. 'missing-file', 'unknown-keyword')."""
+
+    kind: str
+    location: Location
+    message: str
+    code: str = ""
+
+    def __str__(self) -> str:
+        return f"{self.location}: {self.kind}: {self.message}"
 
 
 class SceneError(Exception):

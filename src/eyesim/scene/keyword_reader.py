@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from eyesim.scene.description import Location
+from eyesim.scene.diagnostics import Location
 from eyesim.scene.diagnostics import Diagnostics, quoted
 from eyesim.scene.lexer import Line, number
 

@@ -6,7 +6,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from eyesim.scene.description import Location
+from eyesim.scene.diagnostics import Location
 from eyesim.scene.diagnostics import Diagnostics, quoted
 
 _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")

@@ -39,7 +39,11 @@ DIAGNOSTIC = re.compile(r"^(?P<file>[^:\n]+):(?P<line>\d+):(?:(?P<column>\d+):)?
 
 
 class BadRequest(Exception):
-    pass
+    """A request refused with the reason: 400, or the status given (403 a path out of the roots)."""
+
+    def __init__(self, message: str, status: int = 400):
+        super().__init__(message)
+        self.status = status
 
 
 class ProgramControl:
@@ -52,13 +56,13 @@ class ProgramControl:
         self._busy: set[int] = set()  # robots whose program is being started or stopped
 
     def add_routes(self, router: web.UrlDispatcher) -> None:
-        router.add_get("/api/programs", self._json(self.overview))
-        router.add_post("/api/programs/start", self._json(self.start))
-        router.add_post("/api/programs/stop", self._json(self.stop))
-        router.add_post("/api/programs/restart", self._json(self.restart))
-        router.add_post("/api/programs/compile", self._json(self.compile))
-        router.add_get("/api/settings", self._json(self.settings))
-        router.add_post("/api/settings", self._json(self.change_settings))
+        router.add_get("/api/programs", self.json_route(self.overview))
+        router.add_post("/api/programs/start", self.json_route(self.start))
+        router.add_post("/api/programs/stop", self.json_route(self.stop))
+        router.add_post("/api/programs/restart", self.json_route(self.restart))
+        router.add_post("/api/programs/compile", self.json_route(self.compile))
+        router.add_get("/api/settings", self.json_route(self.settings))
+        router.add_post("/api/settings", self.json_route(self.change_settings))
 
     def roots(self) -> list[program_files.Root]:
         return program_files.scene_roots(self.run_folder, self.sim.scene.source)
@@ -71,19 +75,19 @@ class ProgramControl:
                 "robots": [self._robot_state(robot, roots) for robot in self.sim.robots]}
 
     async def start(self, body: dict) -> dict:
-        robot = self._robot(body)
+        robot = self.robot(body)
         path = self._file(body, kinds=("executable", "python"))
-        return await self._restart_with(robot, path)
+        return await self.restart_with(robot, path)
 
     async def restart(self, body: dict) -> dict:
-        robot = self._robot(body)
-        path = self._program_of(robot)
+        robot = self.robot(body)
+        path = self.program_of(robot)
         if path is None:
             raise BadRequest(f"robot {robot.id} has no program to restart: start one first")
-        return await self._restart_with(robot, path)
+        return await self.restart_with(robot, path)
 
     async def stop(self, body: dict) -> dict:
-        robot = self._robot(body)
+        robot = self.robot(body)
         run = self.launcher.latest(robot.id)
         if run is None or run.process is None or run.process.poll() is not None:
             raise BadRequest(f"robot {robot.id} runs no program")
@@ -105,7 +109,7 @@ class ProgramControl:
             toolchain.place_library(args, cwd=root)
         text = result.stdout + result.stderr
         return {"ok": result.returncode == 0, "output": text,
-                "diagnostics": [_diagnostic(match) for match in DIAGNOSTIC.finditer(text)],
+                "diagnostics": [diagnostic(match) for match in DIAGNOSTIC.finditer(text)],
                 "program": program_files.locate(roots, output) if result.returncode == 0 else None}
 
     async def settings(self, _body: dict) -> dict:
@@ -126,7 +130,9 @@ class ProgramControl:
         return await self.settings({})
 
     # -- helpers ------------------------------------------------------------------------------
-    async def _restart_with(self, robot, path: Path) -> dict:
+    async def restart_with(self, robot, path: Path) -> dict:
+        """Stop the robot's program if it runs, then start `path` for it (a C/C++ source is built
+        first, or taken from the build cache: programs/sources.py)."""
         async with self._robot_busy(robot.id):
             run = self.launcher.latest(robot.id)
             loop = asyncio.get_running_loop()
@@ -165,7 +171,7 @@ class ProgramControl:
         """Run action(sim) on the simulation thread and return its result."""
         return await on_simulation(self.sim, action)
 
-    def _robot(self, body: dict):
+    def robot(self, body: dict):
         robot = self.sim.robot_by_id(body["robot"])
         if robot is None:
             raise BadRequest(f"no robot {body['robot']}")
@@ -182,19 +188,20 @@ class ProgramControl:
             raise BadRequest(f"{body['path']!r} is not {what}")
         return path
 
-    def _program_of(self, robot) -> Path | None:
-        """What Restart runs: the page's last choice, else what the robot ran, else the scene's."""
+    def program_of(self, robot) -> Path | None:
+        """What Restart runs: the page's last choice, else what the robot ran (a C/C++ source it
+        was built from: built again when the source changed), else the scene's."""
         if robot.id in self.chosen:
             return self.chosen[robot.id]
         run = self.launcher.latest(robot.id)
         if run is not None:
-            return run.path
+            return run.source or run.path
         placement = self.sim.scene.robots[robot.id - 1] if robot.id <= len(self.sim.scene.robots) else None
         return Path(placement.program) if placement is not None and placement.program else None
 
     def _robot_state(self, robot, roots) -> dict:
         run = self.launcher.latest(robot.id)
-        program = self._program_of(robot)
+        program = self.program_of(robot)
         state = {"id": robot.id, "name": robot.name,
                  "program": None if program is None else (program_files.locate(roots, program) or
                                                           {"root": None, "path": str(program)}),
@@ -211,15 +218,16 @@ class ProgramControl:
                 state["reason"] = run.crash
         return state
 
-    def _json(self, handler):
+    def json_route(self, handler, limit: int = MAX_BODY):
+        """An aiohttp handler for handler(checked JSON body) -> JSON answer, refusals as {"error"}."""
         async def route(request: web.Request) -> web.Response:
             try:
-                body = await checked_body(request, MAX_BODY) if request.method == "POST" else {}
+                body = await checked_body(request, limit) if request.method == "POST" else {}
                 return web.json_response(await handler(body))
             except BadBody as error:
                 return _error(str(error), error.status)
             except BadRequest as error:
-                return _error(str(error))
+                return _error(str(error), error.status)
             except (toolchain.LibraryMissing, toolchain.CompilerMissing) as error:
                 return _error(str(error), 500)
             except Exception:  # a bug: this request fails, the simulator goes on
@@ -252,7 +260,8 @@ def _run_compiler(command: list[str], cwd: Path) -> subprocess.CompletedProcess:
                                                            f"and was stopped\n")
 
 
-def _diagnostic(match: re.Match) -> dict:
+def diagnostic(match: re.Match) -> dict:
+    """One finding of the compiler's (DIAGNOSTIC) as the page gets it."""
     return {"file": match["file"], "line": int(match["line"]),
             "column": int(match["column"]) if match["column"] else None,
             "kind": "error" if match["kind"] == "fatal error" else match["kind"], "message": match["message"]}

@@ -31,7 +31,12 @@ async def checked_body(request: web.Request, limit: int) -> dict:
     """The request's JSON body (no body: {}), checked against the route's request definition."""
     if request.content_length is not None and request.content_length > limit:
         raise BadBody(f"the request is larger than {limit} bytes", 413)
-    raw = await request.content.read(limit + 1)
+    raw = b""
+    while len(raw) <= limit:  # read(n) gives what has come so far, up to n: a large body comes in parts
+        part = await request.content.read(limit + 1 - len(raw))
+        if not part:
+            break
+        raw += part
     if len(raw) > limit:
         raise BadBody(f"the request is larger than {limit} bytes", 413)
     try:

@@ -31,6 +31,7 @@ from eyesim.web import timeline
 from eyesim.web.access import AccessPolicy
 from eyesim.web.live_history import LiveHistory
 from eyesim.web.program_control import ProgramControl
+from eyesim.web.program_sources import ProgramSources
 from eyesim.web.robot_editor import RobotEditor
 
 log = logging.getLogger("eyesim.web")
@@ -402,7 +403,9 @@ class ViewerServer:
         app.router.add_get("/scene/floor-texture", self._floor_texture)
         app.router.add_get("/scene/mesh/{kind}/{id}", self._mesh)
         if self.launcher is not None:
-            ProgramControl(self.sim, self.launcher, self.run_folder, self.hub.resend_scene).add_routes(app.router)
+            programs = ProgramControl(self.sim, self.launcher, self.run_folder, self.hub.resend_scene)
+            programs.add_routes(app.router)
+            ProgramSources(programs).add_routes(app.router)
         self.robot_editor.add_routes(app)
         if self.workspace is not None:
             self.workspace.add_routes(app)

@@ -1308,6 +1308,48 @@ export function parseCompileResult(value: unknown, what: string): CompileResult 
   return objectOf(record(value, what), what, {ok: [bool, true, undefined], output: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], diagnostics: [(v: unknown, w: string) => list(v, w, parseCompilerDiagnostic, true, undefined, undefined) as CompilerDiagnostic[], true, undefined], program: [(v: unknown, w: string): Place | null => either<Place | null>(v, w, [parsePlace, (v: unknown, w: string) => literal(v, [null] as const, w)], "Place or null"), true, undefined]}) as unknown as CompileResult;
 }
 
+/** A program source opened in the editor. */
+export interface SourceFile {
+  /** index into the roots */
+  root: number;
+  /** a path relative to the root */
+  path: string;
+  kind: "c" | "c++" | "header" | "python";
+  text: string;
+  /** names this text: a save with it is refused (409) when the file changed since */
+  version: string;
+}
+
+export function parseSourceFile(value: unknown, what: string): SourceFile {
+  return objectOf(record(value, what), what, {root: [(v: unknown, w: string) => num(v, w, true, 0, 1000, false, false), true, undefined], path: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], kind: [(v: unknown, w: string) => literal(v, ["c", "c++", "header", "python"] as const, w), true, undefined], text: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], version: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined]}) as unknown as SourceFile;
+}
+
+/** New text for an existing source; without version it replaces whatever the file holds. */
+export interface SourceSave {
+  /** index into the roots */
+  root: number;
+  /** a path relative to the root */
+  path: string;
+  text: string;
+  /** the version the text was edited from */
+  version?: string;
+}
+
+export function parseSourceSave(value: unknown, what: string): SourceSave {
+  return objectOf(record(value, what), what, {root: [(v: unknown, w: string) => num(v, w, true, 0, 1000, false, false), true, undefined], path: [(v: unknown, w: string) => str(v, w, 1, 1000, undefined), true, undefined], text: [(v: unknown, w: string) => str(v, w, undefined, 1000000, undefined), true, undefined], version: [(v: unknown, w: string) => str(v, w, undefined, 64, undefined), false, undefined]}) as unknown as SourceSave;
+}
+
+export interface SavedSource {
+  root: number;
+  path: string;
+  kind: "c" | "c++" | "header" | "python";
+  version: string;
+}
+
+export function parseSavedSource(value: unknown, what: string): SavedSource {
+  return objectOf(record(value, what), what, {root: [(v: unknown, w: string) => num(v, w, true, undefined, undefined, false, false), true, undefined], path: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], kind: [(v: unknown, w: string) => literal(v, ["c", "c++", "header", "python"] as const, w), true, undefined], version: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined]}) as unknown as SavedSource;
+}
+
 /** The running scene's settings and the clock. */
 export interface RunSettings {
   vis: boolean;
@@ -1619,6 +1661,11 @@ export interface Routes {
   "POST /api/programs/stop": { request: ProgramRobot; response: RobotProgramState };
   "POST /api/programs/restart": { request: ProgramRobot; response: RobotProgramState };
   "POST /api/programs/compile": { request: Place; response: CompileResult };
+  "POST /api/sources/robot": { request: ProgramRobot; response: SourceFile };
+  "POST /api/sources/read": { request: Place; response: SourceFile };
+  "POST /api/sources/save": { request: SourceSave; response: SavedSource };
+  "POST /api/sources/check": { request: Place; response: CompileResult };
+  "POST /api/sources/run": { request: StartProgram; response: RobotProgramState };
   "GET /api/settings": { request: undefined; response: RunSettings };
   "POST /api/settings": { request: SettingsChange; response: RunSettings };
   "GET /robot-editor/api/schema": { request: undefined; response: RobotSchemaDocument };
@@ -1652,6 +1699,11 @@ export const ROUTE_ANSWERS: { [R in RouteName]: (value: unknown, what: string) =
   "POST /api/programs/stop": parseRobotProgramState,
   "POST /api/programs/restart": parseRobotProgramState,
   "POST /api/programs/compile": parseCompileResult,
+  "POST /api/sources/robot": parseSourceFile,
+  "POST /api/sources/read": parseSourceFile,
+  "POST /api/sources/save": parseSavedSource,
+  "POST /api/sources/check": parseCompileResult,
+  "POST /api/sources/run": parseRobotProgramState,
   "GET /api/settings": parseRunSettings,
   "POST /api/settings": parseRunSettings,
   "GET /robot-editor/api/schema": parseRobotSchemaDocument,

@@ -3,11 +3,11 @@
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from eyesim.scene.description import Collider, Location
-from eyesim.scene.diagnostics import quoted
+from eyesim.scene.diagnostics import Location, quoted
 from eyesim.scene.lexer import LARGEST, Line, format_number, quote_token
 from eyesim.scene.parts.part import (VR_AXIS, Part, PartReader, choice, coordinate, list_of, numbers, positive,
                                      record, text)
@@ -25,6 +25,19 @@ COLLIDER_FORMS = {"box": ("<sx> <sy> <sz> <cx> <cy> <cz>", 6), "sphere": ("<r> <
                   "cylinder": ("<r> <h> <cx> <cy> <cz> [x|y|z]", 5)}
 COLLIDER_SIZES = {"box": ("size x", "size y", "size z"), "sphere": ("radius",), "capsule": ("radius", "height"),
                   "cylinder": ("radius", "height")}
+
+
+@dataclass(frozen=True)
+class Collider:
+    """A collision shape in the robot/object frame (mm): kind 'box' (size = sx, sy, sz),
+    'sphere' (size = (r,)), 'capsule' (size = (r, h)) or 'cylinder' (size = (r, h)), with its
+    centre and, for capsules/cylinders, the axis letter. A capsule's h is its full length
+    including the two caps (as in the VR files)."""
+
+    kind: str
+    size: tuple[float, ...]
+    center: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    axis: str = "z"
 
 
 def read_name(reader: PartReader, line: Line) -> None:

@@ -14,7 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-from eyesim.scene.description import Location
+from eyesim.scene.diagnostics import Location
 from eyesim.scene.diagnostics import Diagnostics, quoted
 from eyesim.scene.keyword_reader import KeywordReader
 from eyesim.scene.lexer import LARGEST, Line, integer, number, quote_token
