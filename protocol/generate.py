@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Generate the Python and C protocol tables from protocol/protocol.json (and C test vectors), and the
+"""Generate the Python and C protocol tables from protocol/protocol.json (and C test vectors), the
 pass-through layers of the RoBIOS API (protocol/layers.py: eyebot.h's declarations, the C wrappers,
-the ctypes prototypes and the eye modules).
+the ctypes prototypes and the eye modules) and the RoBIOS constants (protocol/robios_constants.py:
+eyebot.h's defines, eye/constants.py and eyesim/protocol/constants.py).
 
 Run `make protocol` (python protocol/generate.py) after editing protocol.json or vectors.json; the
 outputs are committed and tests/protocol/test_generated.py fails when they are stale.
@@ -15,6 +16,7 @@ from pathlib import Path
 
 import generate_viewer
 import layers
+import robios_constants
 
 ROOT = Path(__file__).resolve().parent.parent
 SPEC = ROOT / "protocol" / "protocol.json"
@@ -197,8 +199,10 @@ def c_vectors(spec: dict, vectors: list) -> str:
 
 def outputs() -> dict[Path, str]:
     spec, vectors = load()
-    return {PY_OUT: python_source(spec), C_OUT: c_source(spec), C_VECTORS_OUT: c_vectors(spec, vectors),
-            **layers.outputs(spec), **generate_viewer.outputs()}
+    files = {PY_OUT: python_source(spec), C_OUT: c_source(spec), C_VECTORS_OUT: c_vectors(spec, vectors),
+             **layers.outputs(spec), **generate_viewer.outputs()}
+    files.update(robios_constants.outputs(spec, layers.HEADER, files[layers.HEADER]))  # its constants section
+    return files
 
 
 def main() -> int:

@@ -9,7 +9,8 @@ description. From that list protocol/generate.py writes:
   operation's request and return its reply (out-parameters get the reply's further fields);
 - eye/_prototypes.py: the ctypes prototype of every function;
 - eye/<group>.py: one Python module per group, whose functions only pass their arguments to C,
-  plus the names its hand-written module eye/handwritten/<group>.py defines.
+  plus the names its hand-written module eye/handwritten/<group>.py defines;
+- eye/__init__.py: the package, importing every group (and eye/constants.py) for `from eye import *`.
 
 A function marked "python": "hand" has a Python wrapper written by hand (it converts values, keeps
 state or returns another shape); "python": "none" is C only. A function without "op" is written by
@@ -200,19 +201,19 @@ def declaration_lines(items: list[tuple[str, str]]) -> list[str]:
     return out
 
 
+def heading_lines(group: dict) -> list[str]:
+    """A group's heading in eyebot.h: its title in a dashed line, then its note (if any)."""
+    title = f"/* ---- {group['title']} "
+    if not group.get("note"):
+        return [title.ljust(HEADING - 3, "-") + " */"]
+    note = textwrap.wrap(group["note"], HEADING - 3, break_on_hyphens=False)
+    return [title.ljust(HEADING, "-"), *(" * " + line for line in note[:-1]), " * " + note[-1] + " */"]
+
+
 def header_section(groups: list[dict], functions: list[Function]) -> str:
     out = [HEADER_BEGIN]
     for group in groups:
-        title = f"/* ---- {group['title']} "
-        out.append("")
-        if group.get("note"):
-            out.append(title.ljust(HEADING, "-"))
-            note = textwrap.wrap(group["note"], HEADING - 3, break_on_hyphens=False)
-            out.extend(" * " + line for line in note[:-1])
-            out.append(" * " + note[-1] + " */")
-        else:
-            out.append(title.ljust(HEADING - 3, "-") + " */")
-        out.append("")
+        out += ["", *heading_lines(group), ""]
         items = [(d["c"], d.get("doc", "")) for d in group.get("declarations", [])]
         items += [(f.prototype + ";", f.doc) for f in functions if f.group == group["group"]]
         out.extend(declaration_lines(items))
@@ -373,11 +374,37 @@ def group_module(group: dict, functions: list[Function]) -> str:
     return "\n".join(out) + "\n"
 
 
+def package_source(groups: list[dict]) -> str:
+    """eye/__init__.py: every group's names, and the constants, for `from eye import *`."""
+    doc = wrap("RoBIOS-7 for Python: `from eye import *` gives every RoBIOS function and constant, over "
+               "libeyesim. The functions call the same C library C programs link (through ctypes), so a Python "
+               "program talks to the simulator exactly as a C program does. Calling conventions follow EyeSim's "
+               "eye.py: images come back as new buffers, out-parameters as lists, RADIOReceive as [id, message]; "
+               "see docs/api/python.md. There is one module per RoBIOS group (eye.lcd, eye.key, ...); what a "
+               f"group does beyond passing values to C is in eye/handwritten/. {REGENERATE}", WIDTH - 10)
+    names = [group["group"] for group in groups]
+    out = ['"""' + doc[0], *doc[1:]]
+    out[-1] += '"""'
+    out += ["", "from eye import _sleep  # noqa: F401  (time.sleep in simulation time)",
+            "from eye import constants", "from eye._library import EyeSimError, lib",
+            "from eye.constants import *  # noqa: F401,F403"]
+    out += [f"from eye.{name} import *  # noqa: F401,F403" for name in names]
+    modules = textwrap.wrap(", ".join(names), WIDTH - len("from eye import ()"))
+    out += [f"from eye import ({modules[0]}", *("                 " + line for line in modules[1:])]
+    out[-1] += ")"
+    tuple_lines = textwrap.wrap(", ".join(names), WIDTH - len("GROUPS = ()"))
+    out += ["", f"GROUPS = ({tuple_lines[0]}", *("          " + line for line in tuple_lines[1:])]
+    out[-1] += ")"
+    out += ["", '__all__ = ["lib", "EyeSimError", *constants.__all__, *(name for group in GROUPS for name in '
+                'group.__all__)]']
+    return "\n".join(out) + "\n"
+
+
 def outputs(spec: dict) -> dict[Path, str]:
     groups, functions = load(spec)
     current = HEADER.read_text() if HEADER.exists() else ""
     files = {HEADER: header_source(groups, functions, current), C_WRAPPERS: c_source(groups, functions),
-             PY_PROTOTYPES: prototypes_source(groups, functions)}
+             PY_PROTOTYPES: prototypes_source(groups, functions), EYE / "__init__.py": package_source(groups)}
     for group in groups:
         files[EYE / f"{group['group']}.py"] = group_module(group, functions)
     return files

@@ -42,6 +42,12 @@ typedef unsigned char BYTE;  /* pixel channel, buffer element */
 typedef int COLOR;           /* 0xRRGGBB */
 typedef int TIMER;           /* handle returned by OSAttachTimer */
 
+/* ==== Generated constants ==== */
+/* From the "constants" groups of protocol/protocol.json down to "End of the generated constants": change
+ * them there and run `make protocol`. */
+
+/* ---- Truth values (C only: Python has its own) ----------------------------------------------- */
+
 #ifndef True
 #define True 1
 #endif
@@ -49,8 +55,10 @@ typedef int TIMER;           /* handle returned by OSAttachTimer */
 #define False 0
 #endif
 
-/* ---- Key codes: single bits, so a mask like ANYKEY covers several. The high codes are written
- * as int so that comparing them with KEYGet()'s int result draws no sign warnings. ---------- */
+/* ---- Key codes: single bits, so a mask like ANYKEY covers several -------------------------------
+ * In C the high codes are written as int, so that comparing them with KEYGet()'s int result draws
+ * no sign warnings; in Python they are unsigned 32-bit numbers (ANYKEY = 4294967295), as in
+ * EyeSim's eye.py, and so are the codes the key functions return. */
 
 #define NOKEY 0x00000000
 #define KEY1 0x00000001
@@ -72,13 +80,15 @@ typedef int TIMER;           /* handle returned by OSAttachTimer */
 #define KEY_LIST7 0x00000400
 #define KEY_LIST8 0x00000800
 
+/* ---- Touch modes of the keys (KEYTM_*) ------------------------------------------------------- */
+
 #define KEYTM_UNKNOWN 0x00
 #define KEYTM_CLASSIC 0x01
 #define KEYTM_STANDARD 0x02
 #define KEYTM_REGIONS 0x03
 #define KEYTM_LISTMENU 0x04
 
-/* ---- Colours (EyeSim values; CYAN and OLIVE differ from the web colour names) ---------------- */
+/* ---- Colours, 0xRRGGBB (EyeSim values; CYAN and OLIVE differ from the web colour names) ------ */
 
 #define RED 0xFF0000
 #define GREEN 0x00FF00
@@ -99,7 +109,7 @@ typedef int TIMER;           /* handle returned by OSAttachTimer */
 #define OLIVE 0x9ACD32
 #define ORANGE 0xFFA500
 
-/* ---- Camera and image resolutions; colour images have 3 bytes per pixel ---------------------- */
+/* ---- Camera and image resolutions ------------------------------------------------------------ */
 
 #define QQVGA 0
 #define QVGA 1
@@ -108,6 +118,8 @@ typedef int TIMER;           /* handle returned by OSAttachTimer */
 #define CAMHD 4
 #define CAM5MP 5
 #define CUSTOM 10
+
+/* ---- Width and height of each resolution, in pixels ------------------------------------------ */
 
 #define QQVGA_X 160
 #define QQVGA_Y 120
@@ -122,32 +134,20 @@ typedef int TIMER;           /* handle returned by OSAttachTimer */
 #define CAM5MP_X 2592
 #define CAM5MP_Y 1944
 
+/* ---- Pixels of an image, and its bytes in colour (3 bytes per pixel) ------------------------- */
+
 #define QQVGA_PIXELS (QQVGA_X * QQVGA_Y)
 #define QVGA_PIXELS (QVGA_X * QVGA_Y)
 #define VGA_PIXELS (VGA_X * VGA_Y)
 #define CAM1MP_PIXELS (CAM1MP_X * CAM1MP_Y)
 #define CAMHD_PIXELS (CAMHD_X * CAMHD_Y)
 #define CAM5MP_PIXELS (CAM5MP_X * CAM5MP_Y)
-
 #define QQVGA_SIZE (QQVGA_PIXELS * 3)
 #define QVGA_SIZE (QVGA_PIXELS * 3)
 #define VGA_SIZE (VGA_PIXELS * 3)
 #define CAM1MP_SIZE (CAM1MP_PIXELS * 3)
 #define CAMHD_SIZE (CAMHD_PIXELS * 3)
 #define CAM5MP_SIZE (CAM5MP_PIXELS * 3)
-
-typedef BYTE QQVGAcol[QQVGA_SIZE];
-typedef BYTE QQVGAgray[QQVGA_PIXELS];
-typedef BYTE QVGAcol[QVGA_SIZE];
-typedef BYTE QVGAgray[QVGA_PIXELS];
-typedef BYTE VGAcol[VGA_SIZE];
-typedef BYTE VGAgray[VGA_PIXELS];
-typedef BYTE CAM1MPcol[CAM1MP_SIZE];
-typedef BYTE CAM1MPgray[CAM1MP_PIXELS];
-typedef BYTE CAMHDcol[CAMHD_SIZE];
-typedef BYTE CAMHDgray[CAMHD_PIXELS];
-typedef BYTE CAM5MPcol[CAM5MP_SIZE];
-typedef BYTE CAM5MPgray[CAM5MP_PIXELS];
 
 /* ---- Fonts ----------------------------------------------------------------------------------- */
 
@@ -158,7 +158,8 @@ typedef BYTE CAM5MPgray[CAM5MP_PIXELS];
 #define BOLD 1
 #define ITALICS 2
 
-/* ---- LCD colour flags and mode flags (for LCDSetMode); each "off" flag is 8 bits above its "on" */
+/* ---- LCD colour and mode flags (for LCDSetMode) -------------------------------------------------
+ * Each "off" flag is 8 bits above its "on" flag. */
 
 #define LCD_BGCOL_TRANSPARENT 0x01
 #define LCD_BGCOL_NOTRANSPARENT 0x10
@@ -166,7 +167,6 @@ typedef BYTE CAM5MPgray[CAM5MP_PIXELS];
 #define LCD_BGCOL_NOINVERSE 0x20
 #define LCD_FGCOL_INVERSE 0x04
 #define LCD_FGCOL_NOINVERSE 0x40
-
 #define LCD_AUTOREFRESH 0x0001
 #define LCD_NOAUTOREFRESH 0x0100
 #define LCD_SCROLLING 0x0002
@@ -188,24 +188,28 @@ typedef BYTE CAM5MPgray[CAM5MP_PIXELS];
 #define MACHINE_SPEED 700000000 /* Hz */
 #define MACHINE_NAME "EyeBot"
 #define MACHINE_ID 1
-#ifndef VERSION /* build systems often define their own VERSION */
+#ifndef VERSION                 /* build systems often define their own VERSION */
 #define VERSION "1.0"
 #endif
-#define MENU_HEIGHT 38 /* pixel height of the soft-key menu bar */
+#define MENU_HEIGHT 38          /* pixel height of the soft-key menu bar */
 #define LCD_MENU_STRLENGTH 32
 #define LCD_LIST_STRLENGTH 64
 #define CAM_SUCCESS 0
 #define CAM_FAILURE 1
 #define IOBOARD 1
 
-/* ---- PSD positions (EyeSim numbering; the robot definition maps them to sensors) -------------- */
+/* ---- Serial handshake (SERInit) -------------------------------------------------------------- */
+
+#define RTSCTS 1 /* SERInit handshake; 0 = none */
+
+/* ---- PSD positions (EyeSim numbering; the robot definition maps them to sensors) ------------- */
 
 #define PSD_FRONT 1
 #define PSD_LEFT 2
 #define PSD_RIGHT 3
 #define PSD_BACK 4
 
-/* ---- IR remote codes, as returned by IRTVGet/IRTVRead ----------------------------------------- */
+/* ---- IR remote codes, as returned by IRTVGet/IRTVRead ---------------------------------------- */
 
 #define IRTV_0 '0'
 #define IRTV_1 '1'
@@ -227,6 +231,23 @@ typedef BYTE CAM5MPgray[CAM5MP_PIXELS];
 #define IRTV_DOWN 'D'
 #define IRTV_OK 'O'
 #define IRTV_POWER 'P'
+
+/* ==== End of the generated constants ==== */
+
+/* ---- Image buffers of each resolution (the sizes above) -------------------------------------- */
+
+typedef BYTE QQVGAcol[QQVGA_SIZE];
+typedef BYTE QQVGAgray[QQVGA_PIXELS];
+typedef BYTE QVGAcol[QVGA_SIZE];
+typedef BYTE QVGAgray[QVGA_PIXELS];
+typedef BYTE VGAcol[VGA_SIZE];
+typedef BYTE VGAgray[VGA_PIXELS];
+typedef BYTE CAM1MPcol[CAM1MP_SIZE];
+typedef BYTE CAM1MPgray[CAM1MP_PIXELS];
+typedef BYTE CAMHDcol[CAMHD_SIZE];
+typedef BYTE CAMHDgray[CAMHD_PIXELS];
+typedef BYTE CAM5MPcol[CAM5MP_SIZE];
+typedef BYTE CAM5MPgray[CAM5MP_PIXELS];
 
 /* ==== Functions =================================================================================
  * Unless a function says otherwise it returns 0 for OK and 1 for an error. When the simulator
@@ -319,7 +340,6 @@ int OSDetachTimer(TIMER t);                        /* fct is not called again on
 
 /* ---- Serial interfaces: 0 = serial port, 1..20 = USB; byte streams the simulator carries ----- */
 
-#define RTSCTS 1                                     /* SERInit handshake; 0 = none */
 int SERInit(int interface, int baud, int handshake); /* baud 50..230400 */
 int SERSendChar(int interface, char ch);             /* one byte */
 int SERSend(int interface, const char *buf);         /* a NUL-terminated string */

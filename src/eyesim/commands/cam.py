@@ -6,13 +6,15 @@ the simulation thread, which serves every program: CAMGet's reply is Deferred.""
 from eyesim.commands.errors import CommandError, require
 from eyesim.net.session import Deferred
 from eyesim.physics.render import to_gray
-from eyesim.protocol import encode_image_reply
+from eyesim.protocol import constants, encode_image_reply
+from eyesim.protocol.constants import CUSTOM
 from eyesim.robot.components.camera import Camera
 
-# RoBIOS resolution constants -> (width, height)
-RESOLUTIONS = {0: (160, 120), 1: (320, 240), 2: (640, 480), 3: (1296, 730), 4: (1920, 1080), 5: (2592, 1944)}
-NAMES = "QQVGA 0, QVGA 1, VGA 2, CAM1MP 3, CAMHD 4, CAM5MP 5"
-CUSTOM = 10
+# The camera's RoBIOS resolutions (QQVGA..CAM5MP; CUSTOM is the LCD's) -> (width, height)
+CAMERA_RESOLUTIONS = {name: value for name, value in constants.GROUPS["resolutions"].items() if value != CUSTOM}
+RESOLUTIONS = {value: (getattr(constants, f"{name}_X"), getattr(constants, f"{name}_Y"))
+               for name, value in CAMERA_RESOLUTIONS.items()}
+NAMES = ", ".join(f"{name} {value}" for name, value in CAMERA_RESOLUTIONS.items())
 
 
 def _camera(robot) -> Camera:

@@ -2,7 +2,7 @@
 
 from eyesim.commands.errors import CommandError, require
 from eyesim.net.session import Pending
-from eyesim.robot.components.keys import Keys
+from eyesim.robot.components.keys import KEYS, Keys
 
 
 def _keys(robot) -> Keys:
@@ -31,7 +31,7 @@ def key_wait(sim, robot, request):
     """Blocks until a key in the mask is pressed; presses of other keys are used up meanwhile."""
     (mask,) = request.args
     keys = _keys(robot)
-    if not mask & 0xF:
+    if not mask & sum(KEYS):
         raise CommandError(f"mask {mask:#x} contains none of KEY1..KEY4, so no key could end the wait")
 
     def take():

@@ -16,8 +16,8 @@ from pathlib import Path
 import numpy as np
 from PIL import Image, ImageDraw, ImageFont
 
-HELVETICA, TIMES, COURIER = 0, 1, 2
-NORMAL, BOLD, ITALICS = 0, 1, 2
+from eyesim.protocol.constants import BOLD, COURIER, HELVETICA, TIMES
+
 FONT_NAMES = {HELVETICA: "HELVETICA", TIMES: "TIMES", COURIER: "COURIER"}
 MIN_SIZE, MAX_SIZE = 8, 24
 # The default gives 6x13-pixel cells, the EyeBot's default X11 font "6x13": 80 columns x 21 rows

@@ -4,12 +4,11 @@ from __future__ import annotations
 
 from collections import deque
 
+from eyesim.protocol import constants
 from eyesim.robot.component import Component
 
-# RoBIOS IRTV codes are characters; the remote's buttons by name.
-BUTTONS = {str(digit): str(digit) for digit in range(10)} | {
-    "RED": "R", "GREEN": "G", "YELLOW": "Y", "BLUE": "B", "LEFT": "L", "RIGHT": ">", "UP": "U", "DOWN": "D",
-    "OK": "O", "POWER": "P"}
+# RoBIOS IRTV codes are characters; the remote's buttons by name (IRTV_OK -> OK: "O").
+BUTTONS = {name.removeprefix("IRTV_"): chr(code) for name, code in constants.GROUPS["irtv"].items()}
 CODES = frozenset(ord(code) for code in BUTTONS.values())
 MAX_WAITING = 64  # codes nobody has read yet; older ones are dropped beyond this
 

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from collections import deque
 
+from eyesim.protocol.constants import KEY1, KEY2, KEY3, KEY4
 from eyesim.robot.component import Component
 
-KEY1, KEY2, KEY3, KEY4 = 0x1, 0x2, 0x4, 0x8
 KEYS = (KEY1, KEY2, KEY3, KEY4)
 KEY_NAMES = {"KEY1": KEY1, "KEY2": KEY2, "KEY3": KEY3, "KEY4": KEY4}
 MAX_WAITING = 256  # presses or touches nobody has read yet; older ones are dropped beyond this

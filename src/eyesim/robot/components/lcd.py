@@ -10,28 +10,30 @@ import math
 import numpy as np
 from PIL import Image, ImageDraw
 
+from eyesim.protocol.constants import (BLACK, BOLD, ITALICS, LCD_AUTOREFRESH, LCD_FB_ROTATE, LCD_LINEFEED,
+                                      LCD_LISTMENU, LCD_MENU_STRLENGTH, LCD_SCROLLING, LCD_SHOWMENU, MENU_HEIGHT,
+                                      NORMAL, WHITE)
 from eyesim.robot import lcd_fonts
 from eyesim.robot.component import Component
-from eyesim.robot.lcd_fonts import BOLD, FONT_NAMES, ITALICS, NORMAL, cell_size
+from eyesim.robot.lcd_fonts import FONT_NAMES, cell_size
 
 WIDTH, HEIGHT = 480, 320
-MENU_HEIGHT = 38  # pixel rows of the soft-key menu bar at the bottom
 CELL_WIDTH, CELL_HEIGHT = cell_size(lcd_fonts.DEFAULT_SIZE)  # 6 x 13 pixels at the default font size
 COLUMNS = WIDTH // CELL_WIDTH  # 80 at the default font size, as EyeSim's 6x13 font
 ROWS = (HEIGHT - MENU_HEIGHT) // CELL_HEIGHT  # 21 at the default font size, with the menu shown
 TAB = 4
-MENU_LABEL_LENGTH = 32  # LCD_MENU_STRLENGTH
+MENU_LABEL_LENGTH = LCD_MENU_STRLENGTH
 # Characters of one LCDPrintf's text drawn at most, the last ones (docs/api/lcd.md): more than a
 # screen holds (at size 8 with the menu hidden 29 rows of 96 cells and their line feeds: 2813),
 # and what keeps one call's drawing within a few ms of the simulation thread.
 MAX_PRINT = 4096
 
-WHITE, BLACK = 0xFFFFFF, 0x000000
 MENU_BACKGROUND = 0x303030
 MENU_BORDER = 0x808080
 
 # LCDSetMode flags: each "off" flag is the "on" flag shifted 8 bits up.
-AUTOREFRESH, SCROLLING, LINEFEED, SHOWMENU, LISTMENU, FB_ROTATE = 0x01, 0x02, 0x04, 0x08, 0x10, 0x80
+AUTOREFRESH, SCROLLING, LINEFEED = LCD_AUTOREFRESH, LCD_SCROLLING, LCD_LINEFEED
+SHOWMENU, LISTMENU, FB_ROTATE = LCD_SHOWMENU, LCD_LISTMENU, LCD_FB_ROTATE
 MODE_SETTINGS = {AUTOREFRESH: "autorefresh", SCROLLING: "scrolling", LINEFEED: "linefeed",
                  SHOWMENU: "menu_visible", LISTMENU: "list_menu", FB_ROTATE: "rotated"}
 KNOWN_MODE_BITS = sum(MODE_SETTINGS) | (sum(MODE_SETTINGS) << 8)

@@ -8,11 +8,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from eyesim.protocol.constants import RTSCTS
 from eyesim.robot.component import Component
 
 INTERFACES = range(21)  # 0 = serial port, 1..20 = USB
 MIN_BAUD, MAX_BAUD = 50, 230400
-HANDSHAKE_NONE, HANDSHAKE_RTSCTS = 0, 1
+HANDSHAKE_NONE, HANDSHAKE_RTSCTS = 0, RTSCTS
 RECEIVE_BUFFER = 65536  # bytes an interface holds for the program; more are lost (an overrun)
 
 

@@ -9,15 +9,17 @@ from dataclasses import dataclass
 from enum import IntEnum
 from typing import TYPE_CHECKING, Callable
 
+from eyesim.protocol import constants
+
 if TYPE_CHECKING:
     from eyesim.scene.description import RobotType
 
 
 class MachineType(IntEnum):
-    """What OSMachineType reports (RoBIOS: VEHICLE 1, PLATFORM 2, WALKER 3)."""
+    """What OSMachineType reports (RoBIOS's VEHICLE, PLATFORM; no WALKER drives here)."""
 
-    VEHICLE = 1
-    PLATFORM = 2
+    VEHICLE = constants.VEHICLE
+    PLATFORM = constants.PLATFORM
 
 
 @dataclass(frozen=True)

@@ -5,10 +5,12 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
+from eyesim.protocol import constants
 from eyesim.scene.lexer import Line, Token, format_number, integer
 from eyesim.scene.parts.part import Part, PartReader, coordinate, list_of, name_token, record, text, whole
 
-PSD_IDS = {"PSD_FRONT": 1, "PSD_LEFT": 2, "PSD_RIGHT": 3, "PSD_BACK": 4}  # RoBIOS 7
+PSD_IDS = constants.GROUPS["psd"]  # RoBIOS 7: PSD_FRONT 1 .. PSD_BACK 4
+ID_NAMES = ", ".join(f"{name}={value}" for name, value in PSD_IDS.items())
 
 
 @dataclass(frozen=True)
@@ -113,7 +115,7 @@ PART = Part(
     finish=finish,
     properties={"psds": list_of("psd", "PSD sensors")},
     defs={"psd": record("PSD sensor", "a PSD distance sensor (robot frame)", {
-        "id": whole(1, "RoBIOS id", "RoBIOS id (PSD_FRONT=1, PSD_LEFT=2, PSD_RIGHT=3, PSD_BACK=4)"),
+        "id": whole(1, "RoBIOS id", f"RoBIOS id ({ID_NAMES})"),
         "name": text("Name"),
         "x": coordinate("x", "mm forward"),
         "y": coordinate("y", "mm left"),
