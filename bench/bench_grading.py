@@ -13,6 +13,11 @@ the same case run alone with `eyesim run --headless` (correct submission, best o
 the program ends at KEY4 as the graded case does), and each
 case's own time inside the grader (result `timing.case_seconds`, build and process start
 included) is compared with it.
+
+The machine is often shared: beside wall time it measures the CPU seconds the whole command used
+(the grader's own usage plus each sandboxed case's `timing.cpu_seconds`: its process, compilers
+and students' programs), and from them the rate two cores of its own would grade at,
+`cpu-bound submissions/min` = 2 x 60 x submissions / CPU seconds.
 """
 
 from __future__ import annotations
@@ -20,6 +25,7 @@ from __future__ import annotations
 import argparse
 import importlib.util
 import json
+import resource
 import statistics
 import subprocess
 import sys
@@ -29,6 +35,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from common import eyesim, print_table, write_results  # noqa: E402
+from eyesim.grade import sandbox  # noqa: E402
 from eyesim.paths import EXAMPLES_DIR  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -51,13 +58,25 @@ def stretched_spec(directory: Path, seconds: float) -> Path:
     return path
 
 
-def timed(command: list[str], cwd: Path) -> float:
-    started = time.perf_counter()
+def children_cpu() -> float:
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def timed(command: list[str], cwd: Path) -> tuple[float, float]:
+    """(wall seconds, CPU seconds of the command and everything it started)."""
+    started, cpu = time.perf_counter(), children_cpu()
     result = subprocess.run(command, cwd=cwd, capture_output=True, text=True)
     elapsed = time.perf_counter() - started
     if result.returncode != 0:
         raise RuntimeError(f"{' '.join(command)} failed:\n{result.stdout}\n{result.stderr}")
-    return elapsed
+    return elapsed, children_cpu() - cpu
+
+
+def cases_cpu(out: Path) -> float:
+    """CPU seconds of the cases themselves: sandboxed, they do not count in the grader's usage."""
+    report = json.loads((out / "report.json").read_text())
+    return sum(case["timing"].get("cpu_seconds", 0.0) for student in report["students"] for case in student["cases"])
 
 
 def case_times(out: Path) -> dict[str, list[float]]:
@@ -85,7 +104,7 @@ def main() -> None:
         good = tmp / "good"
         subprocess.run(eyesim("cc", "-O2", str(EXAMPLES_DIR / "programs" / "wall_follow.c"), "-o", str(good)),
                        check=True, cwd=tmp)
-        alone = min(timed(eyesim("run", "--headless", "--port", "0", str(EXAMPLES_DIR / "scenes" / "wall_follow.sim"),
+        alone, alone_cpu = min(timed(eyesim("run", "--headless", "--port", "0", str(EXAMPLES_DIR / "scenes" / "wall_follow.sim"),
                                  "--program", f"1={good}", "--key", f"1:KEY4@{args.seconds - 5:g}"), tmp)
                     for _ in range(3))  # ends when the program does, as the grader's case does
 
@@ -95,25 +114,31 @@ def main() -> None:
             configurations.append(("Dask local:2", ["--cluster", "local:2"]))
         for name, options in configurations:
             out = tmp / name.replace(" ", "").replace(",", "-").replace(":", "")
-            seconds = timed(eyesim("grade", str(spec), str(tmp / "submissions"), "--out", str(out), "--fresh",
+            seconds, cpu = timed(eyesim("grade", str(spec), str(tmp / "submissions"), "--out", str(out), "--fresh",
                                    *options), tmp)
+            if sandbox.bwrap() is not None:
+                cpu += cases_cpu(out)
             runs[name] = {"seconds": seconds, "cases": 2 * args.count,
-                          "submissions_per_minute": args.count / seconds * 60,
+                          "submissions_per_minute": args.count / seconds * 60, "cpu_seconds": cpu,
+                          "cpu_bound_submissions_per_minute": 2 * 60 * args.count / cpu,
                           "case_seconds": {status: statistics.fmean(values)
                                            for status, values in case_times(out).items()},
                           "scores": {s["name"]: s["score"] for s in json.loads((out / "report.json").read_text())["students"]}}
         first = next(iter(runs.values()))["scores"]
         identical = all(run["scores"] == first for run in runs.values())
         results = {"submissions": args.count, "cases_per_submission": 2, "simulated_seconds": args.seconds,
-                   "eyesim_run_alone_seconds": alone, "runs": runs, "identical_scores": identical,
+                   "eyesim_run_alone_seconds": alone,
+                   "eyesim_run_alone_cpu_seconds": alone_cpu, "runs": runs, "identical_scores": identical,
                    "scaling_1_to_2": runs["local, 1 worker"]["seconds"] / runs["local, 2 workers"]["seconds"]}
-        rows = [(name, f"{run['seconds']:.1f} s", f"{run['submissions_per_minute']:.1f}",
+        rows = [(name, f"{run['seconds']:.1f} s", f"{run['submissions_per_minute']:.1f}", f"{run['cpu_seconds']:.1f} s",
+                 f"{run['cpu_bound_submissions_per_minute']:.1f}",
                  f"{run['case_seconds'].get('ok', float('nan')):.2f} s",
                  f"{run['case_seconds'].get('ok', float('nan')) / alone:.2f}")
                 for name, run in runs.items()]
         print_table(f"{args.count} submissions x 2 cases, {args.seconds:g} s simulated; "
-                    f"the correct case alone with eyesim run: {alone:.2f} s",
-                    rows, ("configuration", "wall time", "submissions/min", "ok case in grader", "x alone"))
+                    f"the correct case alone with eyesim run: {alone:.2f} s ({alone_cpu:.2f} s CPU)",
+                    rows, ("configuration", "wall time", "submissions/min", "CPU time", "cpu-bound submissions/min",
+                           "ok case in grader", "x alone"))
         print(f"scaling 1 -> 2 workers: {results['scaling_1_to_2']:.2f}x; identical scores: {identical}")
         for name, run in runs.items():
             print(f"  {name}: mean seconds per case by status: "
