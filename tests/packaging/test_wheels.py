@@ -182,6 +182,7 @@ def test_wheel_has_the_package(wheels, name):
     missing = expected - set(files)
     assert not missing, f"missing from the wheel: {sorted(missing)[:10]}"
     for required in ("eyesim/web/static/index.html", "eye/_prototypes.py", "eyesim/paths.py",
+                     "eyesim/protocol/viewer.schema.json",
                      f"{LIBRARY_DIR}/include/eyebot.h", f"{LIBRARY_DIR}/include/eyebot++.h"):
         assert required in files
     assert any(file.startswith("eyesim/web/static/assets/") for file in files)

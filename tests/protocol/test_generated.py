@@ -170,3 +170,17 @@ def test_a_wrong_api_entry_is_refused_with_its_name(change, message):
     with pytest.raises(SystemExit) as refused:
         layers.load(spec)
     assert "api psd: PSDGet" in str(refused.value) and message in str(refused.value)
+
+
+def test_the_viewer_schema_is_package_data_the_server_loads():
+    """The installed package carries protocol/viewer.schema.json (as eyesim/protocol/viewer.schema.json,
+    found with importlib.resources) and checks messages against it."""
+    from importlib import resources
+
+    from eyesim.protocol import channel_schema
+
+    packaged = resources.files("eyesim.protocol").joinpath("viewer.schema.json")
+    assert packaged.is_file()
+    assert json.loads(packaged.read_text(encoding="utf-8")) == channel_schema.SCHEMA
+    source = json.loads((ROOT / "protocol/viewer.schema.json").read_text())
+    assert channel_schema.SCHEMA["$defs"].keys() == source["$defs"].keys()

@@ -11,7 +11,7 @@ from support.scenes import arena
 from support.viewer import run_async, viewer_simulation
 
 from eyesim.protocol.channel_schema import command_problem, command_validators
-from eyesim.protocol.viewer_schema import SCHEMA
+from eyesim.protocol.channel_schema import SCHEMA
 
 
 @pytest.mark.parametrize("command, problem", [
