@@ -11,6 +11,7 @@ outputs are committed and tests/protocol/test_generated.py fails when they are s
 from __future__ import annotations
 
 import json
+import re
 import sys
 from pathlib import Path
 
@@ -69,6 +70,9 @@ def check(spec: dict) -> None:
         if (cost == "wait") != bool(op.get("blocking", False)):
             raise SystemExit(f"{SPEC}: op {op['name']}: a blocking op costs its wait (cost \"wait\"), and only a "
                              f"blocking op does")
+        if "calls" in op and (not re.fullmatch(r"[A-Z]\w*\.[a-z_]\w*", op["calls"]) or op.get("blocking")):
+            raise SystemExit(f"{SPEC}: op {op['name']}: calls names a component's method as \"Component.method\", "
+                             f"and a blocking op cannot just call one")
         if op["code"] in codes:
             raise SystemExit(f"{SPEC}: op {op['name']}: code {op['code']} is used twice")
         codes.add(op["code"])
@@ -95,7 +99,7 @@ def python_source(spec: dict) -> str:
             f"    {op['code']}: OpSpec({op['name']!r}, {op['code']}, {op['group']!r}, "
             f"{op['cost_us']}, {bool(op.get('blocking', False))}, "
             f"{tuple(tuple(f) for f in op['request'])!r}, {tuple(tuple(f) for f in op['reply'])!r}"
-            f"{ranges_source(op)}{lengths_source(op)}, cost={op['cost']!r}),"
+            f"{ranges_source(op)}{lengths_source(op)}, cost={op['cost']!r}{calls_source(op)}),"
         )
     out += ["}", "OPS_BY_NAME = {op.name: op for op in OPS.values()}", ""]
     return "\n".join(out)
@@ -116,6 +120,10 @@ def lengths(op: dict) -> tuple:
 
 def lengths_source(op: dict) -> str:
     return f", lengths={lengths(op)!r}" if lengths(op) else ""
+
+
+def calls_source(op: dict) -> str:
+    return f", calls={op['calls']!r}" if "calls" in op else ""
 
 
 def c_types(fields: list) -> str:

@@ -2,7 +2,9 @@
 
 The groups are protocol.json's: the operations of group `psd` are handled by the HANDLERS table
 of `eyesim.commands.psd`, so a new group is one new module here and needs no registry line (the
-session group, the handshake, is the engine's own).
+session group, the handshake, is the engine's own). An operation that only calls one method of
+the robot's component declares it in protocol.json (`"calls": "Lcd.set_position"`) and has no
+handler function: `calling` makes its handler.
 
 A handler is `handler(sim, robot, request) -> reply values | Pending`; it raises CommandError for
 requests it cannot serve. The network layer never knows what an operation means."""
@@ -11,10 +13,49 @@ from __future__ import annotations
 
 import importlib
 
-from eyesim.commands.errors import CommandError
+import eyesim.robot.components  # noqa: F401  (every component class, for "calls" to name)
+from eyesim.commands.errors import CommandError, checked_arguments, component_of
 from eyesim.protocol import generated
+from eyesim.protocol.ops import OpSpec
+from eyesim.robot.component import Component
 
 ENGINE_GROUP = "session"  # HELLO and THREADS: answered by the engine itself
+
+
+def component_class(name: str) -> type[Component]:
+    """The component class of that name (a "calls" declaration names it so)."""
+    seen, waiting = set(), [Component]
+    while waiting:
+        cls = waiting.pop()
+        seen.add(cls)
+        waiting += [sub for sub in cls.__subclasses__() if sub not in seen]
+    found = [cls for cls in seen if cls.__name__ == name]
+    if len(found) != 1:
+        raise RuntimeError(f"protocol.json's calls names {name!r}: {len(found)} component classes have that name")
+    return found[0]
+
+
+def calling(op: OpSpec):
+    """The handler of an op declared as `"calls": "Component.method"`: the robot's component of that
+    class (none: NOT_SUPPORTED, naming its noun) is called with the request's values; a ValueError
+    it raises is a BAD_ARGUMENT with its message. The reply is what the method returns, after a 0
+    for the op's "result" field (a method returning None fills just that)."""
+    class_name, method_name = op.calls.split(".")
+    cls = component_class(class_name)
+    method = getattr(cls, method_name, None)
+    if not callable(method) or not cls.noun:
+        raise RuntimeError(f"{op.name} calls {op.calls}: {class_name} needs the method and a noun")
+    result_first = op.reply[0][0] == "result"
+    returns_value = len(op.reply) > result_first
+
+    def handler(sim, robot, request):
+        component = component_of(robot, cls)
+        with checked_arguments():
+            value = method(component, *request.args)
+        reply = (value,) if returns_value else ()
+        return (0, *reply) if result_first else reply
+
+    return handler
 
 
 def _build_registry() -> dict:
@@ -25,7 +66,12 @@ def _build_registry() -> dict:
             op = generated.OPS_BY_NAME[name]
             if op.group != group:
                 raise RuntimeError(f"{module.__name__} handles {name}, an operation of group {op.group}")
+            if op.calls:
+                raise RuntimeError(f"{module.__name__} handles {name}, which protocol.json says calls {op.calls}")
             registry[op.code] = handler
+    for op in generated.OPS.values():
+        if op.calls:
+            registry[op.code] = calling(op)
     return registry
 
 

@@ -18,6 +18,11 @@ def require(component, robot, what: str):
     return component
 
 
+def component_of(robot, cls):
+    """The robot's component of that class, or a NOT_SUPPORTED error naming it by its noun."""
+    return require(robot.component(cls), robot, cls.noun)
+
+
 @contextmanager
 def checked_arguments():
     """Turns a component's ValueError about a bad argument into an error reply with its message."""

@@ -1,6 +1,7 @@
-"""RoBIOS I/O group: 16 digital lines, 8 analog channels with 1 kHz recording, and the battery voltage."""
+"""RoBIOS I/O group: 16 digital lines, 8 analog channels with 1 kHz recording, and the battery voltage
+(reading a line or a channel only calls the component: protocol.json's "calls")."""
 
-from eyesim.commands.errors import CommandError, checked_arguments, require
+from eyesim.commands.errors import CommandError, checked_arguments, component_of, require
 from eyesim.net.session import Pending
 from eyesim.robot.components.analog_io import AnalogInputs
 from eyesim.robot.components.battery import Battery
@@ -8,11 +9,11 @@ from eyesim.robot.components.digital_io import DigitalLines
 
 
 def _digital(robot) -> DigitalLines:
-    return require(robot.component(DigitalLines), robot, "digital I/O")
+    return component_of(robot, DigitalLines)
 
 
 def _analog(robot) -> AnalogInputs:
-    return require(robot.component(AnalogInputs), robot, "analog inputs")
+    return component_of(robot, AnalogInputs)
 
 
 def digital_setup(sim, robot, request):
@@ -23,25 +24,11 @@ def digital_setup(sim, robot, request):
     return (0,)
 
 
-def digital_read(sim, robot, request):
-    with checked_arguments():
-        return (_digital(robot).read(*request.args),)
-
-
-def digital_read_all(sim, robot, request):
-    return (_digital(robot).read_all(),)
-
-
 def digital_write(sim, robot, request):
     with checked_arguments():
         _digital(robot).write(*request.args)
     sim.events.io(robot)
     return (0,)
-
-
-def analog_read(sim, robot, request):
-    with checked_arguments():
-        return (_analog(robot).read(*request.args),)
 
 
 def analog_voltage(sim, robot, request):
@@ -70,10 +57,7 @@ def analog_transfer(sim, robot, request):
 
 HANDLERS = {
     "DIGITAL_SETUP": digital_setup,
-    "DIGITAL_READ": digital_read,
-    "DIGITAL_READ_ALL": digital_read_all,
     "DIGITAL_WRITE": digital_write,
-    "ANALOG_READ": analog_read,
     "ANALOG_VOLTAGE": analog_voltage,
     "ANALOG_RECORD": analog_record,
     "ANALOG_TRANSFER": analog_transfer,

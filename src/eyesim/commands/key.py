@@ -1,12 +1,13 @@
-"""RoBIOS key group: soft keys and touches on the LCD, from the viewer or a script."""
+"""RoBIOS key group: soft keys and touches on the LCD, from the viewer or a script (KEYRead only
+takes a press: protocol.json's "calls")."""
 
-from eyesim.commands.errors import CommandError, require
+from eyesim.commands.errors import CommandError, component_of
 from eyesim.net.session import Pending
 from eyesim.robot.components.keys import KEYS, Keys
 
 
 def _keys(robot) -> Keys:
-    return require(robot.component(Keys), robot, "keys")
+    return component_of(robot, Keys)
 
 
 def _wait_for(take):
@@ -21,10 +22,6 @@ def key_get(sim, robot, request):
     """Blocks until a key is pressed."""
     keys = _keys(robot)
     return _wait_for(lambda: (keys.take(),) if keys.presses else None)
-
-
-def key_read(sim, robot, request):
-    return (_keys(robot).take(),)
 
 
 def key_wait(sim, robot, request):
@@ -59,7 +56,6 @@ def key_read_xy(sim, robot, request):
 
 HANDLERS = {
     "KEY_GET": key_get,
-    "KEY_READ": key_read,
     "KEY_WAIT": key_wait,
     "KEY_GET_XY": key_get_xy,
     "KEY_READ_XY": key_read_xy,

@@ -1,17 +1,13 @@
-"""RoBIOS LCD group: text, colours, fonts, modes, the soft-key menu, graphics and images."""
+"""RoBIOS LCD group: what does more than call one method of the LCD (protocol.json's "calls": text,
+colours, fonts, pixels, lines, images) with the request's values: printing at a position, the
+cursor, modes and the soft-key menu (which the viewer is told of), the size, filled shapes."""
 
-from eyesim.commands.errors import checked_arguments, require
+from eyesim.commands.errors import checked_arguments, component_of
 from eyesim.robot.components.lcd import HEIGHT, WIDTH, Lcd
 
 
 def _lcd(robot) -> Lcd:
-    return require(robot.component(Lcd), robot, "LCD")
-
-
-def lcd_printf(sim, robot, request):
-    (text,) = request.args
-    _lcd(robot).print(text)
-    return (0,)
+    return component_of(robot, Lcd)
 
 
 def lcd_set_printf(sim, robot, request):
@@ -23,38 +19,9 @@ def lcd_set_printf(sim, robot, request):
     return (0,)
 
 
-def lcd_clear(sim, robot, request):
-    _lcd(robot).clear()
-    return (0,)
-
-
-def lcd_set_pos(sim, robot, request):
-    with checked_arguments():
-        _lcd(robot).set_position(*request.args)
-    return (0,)
-
-
 def lcd_get_pos(sim, robot, request):
     lcd = _lcd(robot)
     return (0, lcd.row, lcd.column)
-
-
-def lcd_set_color(sim, robot, request):
-    with checked_arguments():
-        _lcd(robot).set_color(*request.args)
-    return (0,)
-
-
-def lcd_set_font(sim, robot, request):
-    with checked_arguments():
-        _lcd(robot).set_font(*request.args)
-    return (0,)
-
-
-def lcd_set_font_size(sim, robot, request):
-    with checked_arguments():
-        _lcd(robot).set_font_size(*request.args)
-    return (0,)
 
 
 def lcd_set_mode(sim, robot, request):
@@ -82,23 +49,6 @@ def lcd_get_size(sim, robot, request):
     return (0, WIDTH, HEIGHT)
 
 
-def lcd_pixel(sim, robot, request):
-    with checked_arguments():
-        _lcd(robot).set_pixel(*request.args)
-    return (0,)
-
-
-def lcd_get_pixel(sim, robot, request):
-    with checked_arguments():
-        return (_lcd(robot).pixel(*request.args),)
-
-
-def lcd_line(sim, robot, request):
-    with checked_arguments():
-        _lcd(robot).line(*request.args)
-    return (0,)
-
-
 def lcd_area(sim, robot, request):
     x1, y1, x2, y2, color, fill = request.args
     with checked_arguments():
@@ -113,35 +63,13 @@ def lcd_circle(sim, robot, request):
     return (0,)
 
 
-def lcd_image(sim, robot, request):
-    with checked_arguments():
-        _lcd(robot).image(*request.args)
-    return (0,)
-
-
-def lcd_refresh(sim, robot, request):
-    _lcd(robot).refresh()
-    return (0,)
-
-
 HANDLERS = {
-    "LCD_PRINTF": lcd_printf,
     "LCD_SET_PRINTF": lcd_set_printf,
-    "LCD_CLEAR": lcd_clear,
     "LCD_MENU": lcd_menu,
-    "LCD_SET_POS": lcd_set_pos,
     "LCD_GET_POS": lcd_get_pos,
-    "LCD_SET_COLOR": lcd_set_color,
-    "LCD_SET_FONT": lcd_set_font,
-    "LCD_SET_FONT_SIZE": lcd_set_font_size,
     "LCD_SET_MODE": lcd_set_mode,
     "LCD_MENU_I": lcd_menu_i,
     "LCD_GET_SIZE": lcd_get_size,
-    "LCD_PIXEL": lcd_pixel,
-    "LCD_GET_PIXEL": lcd_get_pixel,
-    "LCD_LINE": lcd_line,
     "LCD_AREA": lcd_area,
     "LCD_CIRCLE": lcd_circle,
-    "LCD_IMAGE": lcd_image,
-    "LCD_REFRESH": lcd_refresh,
 }

@@ -1,18 +1,13 @@
-"""RoBIOS serial group: byte streams on interface 0 (serial port) and 1..20 (USB)."""
+"""RoBIOS serial group: byte streams on interface 0 (serial port) and 1..20 (USB) (SERInit,
+SERReceive, SERFlush and SERClose only call the ports: protocol.json's "calls")."""
 
-from eyesim.commands.errors import checked_arguments, require
+from eyesim.commands.errors import checked_arguments, component_of
 from eyesim.net.session import Pending
 from eyesim.robot.components.serial_ports import SerialPorts
 
 
 def _ports(robot) -> SerialPorts:
-    return require(robot.component(SerialPorts), robot, "serial interfaces")
-
-
-def ser_init(sim, robot, request):
-    with checked_arguments():
-        _ports(robot).init(*request.args)
-    return (0,)
+    return component_of(robot, SerialPorts)
 
 
 def ser_send(sim, robot, request):
@@ -42,34 +37,13 @@ def ser_receive_char(sim, robot, request):
     return reply if reply is not None else Pending(take)
 
 
-def ser_receive(sim, robot, request):
-    with checked_arguments():
-        return (_ports(robot).receive(*request.args),)
-
-
 def ser_check(sim, robot, request):
     with checked_arguments():
         return (1 if _ports(robot).waiting(*request.args) else 0,)
 
 
-def ser_flush(sim, robot, request):
-    with checked_arguments():
-        _ports(robot).flush(*request.args)
-    return (0,)
-
-
-def ser_close(sim, robot, request):
-    with checked_arguments():
-        _ports(robot).close(*request.args)
-    return (0,)
-
-
 HANDLERS = {
-    "SER_INIT": ser_init,
     "SER_SEND": ser_send,
     "SER_RECEIVE_CHAR": ser_receive_char,
-    "SER_RECEIVE": ser_receive,
     "SER_CHECK": ser_check,
-    "SER_FLUSH": ser_flush,
-    "SER_CLOSE": ser_close,
 }

@@ -24,6 +24,9 @@ class OpSpec(NamedTuple):
     # EyeBot itself, costs cost_us; DEVICE, reaching its hardware or the world, the call time or
     # cost_us when that is more; WAIT, a blocking call, only what it waits.
     cost: str = "device"
+    # "Component.method" for an op that only calls that method of the robot's component (its
+    # request's values the arguments) and has no handler of its own (eyesim/commands/__init__.py).
+    calls: str = ""
 
     def out_of_range(self, args: tuple) -> str | None:
         """What is wrong with the request's values, or None when all are within their ranges."""

@@ -18,6 +18,8 @@ class Component:
     tick (10 ms of simulation time), and `publish` at each publish tick while someone shows LCD
     and camera images."""
 
+    noun = ""  # what an error names a robot without it ("robot 1 (S4) has no LCD")
+
     def bind(self, world: PhysicsWorld) -> None:
         self.world = world
 

@@ -39,6 +39,8 @@ class Recording:
 class AnalogInputs(Component):
     """Values are set from outside (viewer, scripts) and stay until changed."""
 
+    noun = "analog inputs"
+
     def __init__(self):
         self.reset()
 

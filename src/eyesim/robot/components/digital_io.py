@@ -12,6 +12,8 @@ class DigitalLines(Component):
     """Every line starts as a plain input. An input reads the level the outside drives; undriven,
     it reads 1 with a pull-up ('I') and 0 otherwise. An output reads what the program wrote."""
 
+    noun = "digital I/O"
+
     def __init__(self):
         self.reset()
 

@@ -27,6 +27,8 @@ def code_of(text: str) -> int:
 class IrReceiver(Component):
     """Each code is delivered once, in order, to IRTVGet or IRTVRead. The receiver is always on."""
 
+    noun = "IR receiver"
+
     def __init__(self):
         self.codes: deque[int] = deque(maxlen=MAX_WAITING)
 

@@ -17,6 +17,8 @@ class Keys(Component):
     (LCD pixel coordinates) once to KEYGetXY or KEYReadXY. A touch on the shown menu bar is a
     press of that soft key instead (see eyesim.core.robot_input.touch)."""
 
+    noun = "keys"
+
     def __init__(self):
         self.presses: deque[int] = deque(maxlen=MAX_WAITING)
         self.touches: deque[tuple[int, int]] = deque(maxlen=MAX_WAITING)

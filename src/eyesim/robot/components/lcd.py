@@ -74,6 +74,8 @@ class Lcd(Component):
     and scrolling off). `pixels` is what the program drew, read back by LCDGetPixel; `screen()` is
     what the LCD shows, which lags behind until LCDRefresh when auto-refresh is off."""
 
+    noun = "LCD"
+
     def __init__(self):
         self.pixels = np.zeros((HEIGHT, WIDTH, 3), dtype=np.uint8)
         self.version = 0  # bumped on every visible change, so publishers know when to send

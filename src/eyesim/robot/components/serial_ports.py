@@ -27,6 +27,7 @@ class SerialPort:
 
 
 class SerialPorts(Component):
+    noun = "serial interfaces"
 
     def __init__(self):
         self.ports = {number: SerialPort() for number in INTERFACES}
