@@ -103,3 +103,21 @@ def test_an_interrupted_grading_resumes_with_what_is_missing(lab, graded_lab, tm
     assert "FAILED crash/sensor-lab: ends with KEY4: robot 1's program was killed by SIGSEGV" in result.stderr
     again = json.loads((copy / "report.json").read_text())
     assert [s["score"] for s in again["students"]] == [s["score"] for s in report["students"]]
+
+
+def test_failed_cases_keep_a_recording_of_their_run_at_the_grading_rates(graded_lab):
+    from eyesim.grade.case_run import RECORDING_LCD_RATE, RECORDING_POSE_RATE
+    from eyesim.record import Recording
+
+    out, report, _ = graded_lab
+    students = by_student(report)
+    for name in ("slow", "bumper", "crash", "hang"):  # recorded while graded, not run again
+        files = case(students[name])["files"]
+        with Recording(out / files["case.mcap"]) as recording:
+            settings = recording.metadata["eyesim"]
+            assert float(settings["pose_rate_hz"]) == RECORDING_POSE_RATE
+            assert float(settings["lcd_rate_hz"]) == RECORDING_LCD_RATE
+            end = case(students[name])["end"]["time"]
+            assert abs(recording.duration_s - end) < 0.1, (name, recording.duration_s, end)
+    assert "case.mcap" not in case(students["good"])["files"]
+    assert "case.mcap" not in case(students["compile_error"])["files"]  # nothing ran

@@ -28,6 +28,11 @@ COMPILE_TIMEOUT = 120  # s
 # The compiler's limits: `#include "/dev/zero"` makes cc1 ask for gigabytes, a generated source for hours.
 COMPILE_LIMITS = dict(cpu_seconds=60, memory_bytes=2 << 30, file_bytes=256 << 20)
 FILE_BYTES = 64 << 20  # the largest file a graded program may write
+# A case's recording, at rates that make recording every case cheaper than running a failed one
+# again to record it: the 100 Hz poses and 30 Hz LCD images of `eyesim run --record` cost 4-5 times
+# the simulation (PNG-encoding a changing LCD), these about a fifth of it.
+RECORDING_POSE_RATE = 50.0  # Hz of simulated time
+RECORDING_LCD_RATE = 10.0  # at most, per robot
 
 
 def _tail(text: str) -> str:
@@ -178,7 +183,7 @@ def run_case(task: dict, directory: Path) -> dict:
         return result
 
     keep = task.get("keep_recording", "failed")
-    with _simulated(case, executables, work, task, directory / RECORDING if keep == "all" else None) as (sim, end):
+    with _simulated(case, executables, work, task, directory / RECORDING if keep != "none" else None) as (sim, end):
         result["end"] = {"reason": end.reason, "time": round(end.time, 6)}
         result["status"] = _status(end, [robot.program for robot in sim.robots if robot.program is not None])
         if end.reason == "watchdog" and end.stalled:
@@ -206,12 +211,6 @@ def run_case(task: dict, directory: Path) -> dict:
             result["artifacts"][f"robot{robot.id}-lcd.png"] = _png(robot.lcd_image())
         result["contacts"] = [c.as_dict() for c in sim.contacts[:100]]
     failed = result["status"] != "ok" or result["score"] < 1.0
-    stood_still = result["status"] == "timeout" or "hung" in result  # nothing to watch, and slow to run again
-    if keep == "failed" and failed and not stood_still:
-        # Recording costs about as much as simulating: only a failed case is run again, recorded.
-        # Simulated time is deterministic, so it is the same run.
-        with _simulated(case, executables, work, task, directory / RECORDING):
-            pass
     if (directory / RECORDING).exists() and (keep == "all" or failed):
         result["artifacts"][RECORDING] = (directory / RECORDING).read_bytes()
     return result
@@ -229,7 +228,8 @@ def _simulated(case, executables: dict, work: Path, task: dict, recording: Path 
                         stdin=entry.get("stdin"), cwd=work, env=entry.get("env"), cpu_seconds=case.cpu,
                         memory_bytes=case.memory_mb << 20, processes=task.get("processes"), file_bytes=FILE_BYTES)
         _schedule_inputs(sim, case.inputs)
-        recorder = Recorder(sim.engine, recording) if recording is not None else None
+        recorder = (Recorder(sim.engine, recording, pose_rate=RECORDING_POSE_RATE, lcd_rate=RECORDING_LCD_RATE)
+                    if recording is not None else None)
         end = sim.run(until=case.time, end_with_programs=case.end_with_programs, wall_timeout=case.wall_clock)
         sim.stop_programs()  # the run is over: what still runs is stopped, its output complete
         if recorder is not None:
