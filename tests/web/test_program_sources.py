@@ -14,6 +14,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.programs import simulator_with_viewer  # noqa: E402
 
 from eyesim.protocol.channel_schema import route_answer_problems  # noqa: E402
+from eyesim.paths import EXAMPLES_DIR  # noqa: E402
 from eyesim.scene.builtins import SCENES_DIR  # noqa: E402
 
 HELLO = """#include "eyebot.h"
@@ -146,3 +147,12 @@ def test_what_has_no_source_here_says_why(simulator):
     assert status == 400 and "is a header" in answer["error"]
     status, answer = answered(url, "/api/sources/save", {"root": 0, "path": "robots/hello.c", "text": "x" * 1_000_001})
     assert status == 400 and "text" in answer["error"], answer
+
+
+def test_the_installed_examples_can_be_read_not_changed():
+    with simulator_with_viewer("--program", "1=programs/demo.py", cwd=EXAMPLES_DIR) as (_, url):
+        status, source = answered(url, "/api/sources/robot", {"robot": 1})
+        assert status == 200 and (source["root"], source["path"]) == (0, "programs/demo.py"), source
+        status, answer = answered(url, "/api/sources/save", {"root": 0, "path": "programs/demo.py", "text": "x = 1\n"})
+        assert status == 403 and "belongs to the installed EyeSim" in answer["error"]
+    assert (EXAMPLES_DIR / "programs" / "demo.py").read_text() == source["text"]

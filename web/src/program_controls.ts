@@ -3,9 +3,17 @@
 
 import { call, RouteError } from "./api";
 import { element } from "./dom";
-import type { CompileResult, ProgramFile, ProgramRoot, ProgramsOverview, RobotProgramState } from "./generated/viewer_protocol";
+import type { CompileResult, Place, ProgramFile, ProgramRoot, ProgramsOverview, RobotProgramState } from "./generated/viewer_protocol";
 
 const SOURCE_KINDS = new Set(["c", "c++"]);
+const EDITABLE_KINDS = new Set(["c", "c++", "python"]);
+
+/** The event an Edit button sends up the page: open this source (null: the robot's program's). */
+export const EDIT_PROGRAM = "eyesim-edit-program";
+export interface EditProgram {
+  robot: number;
+  file: Place | null;
+}
 
 function fileKey(file: { root: number | null; path: string }): string {
   return `${file.root ?? ""}:${file.path}`;
@@ -71,6 +79,7 @@ export class ProgramControls {
   private readonly stopButton = element("button", "program-stop", "Stop");
   private readonly restartButton = element("button", "program-restart", "Restart");
   private readonly compileButton = element("button", "program-compile", "Compile");
+  private readonly editButton = element("button", "program-edit", "Edit");
   private readonly refreshButton = element("button", "program-refresh", "↻");
   private readonly message = element("p", "program-message");
   private readonly compilerOutput = element("div", "compiler-output");
@@ -84,18 +93,19 @@ export class ProgramControls {
     private readonly catalog: ProgramCatalog,
   ) {
     this.choice.setAttribute("aria-label", "program");
-    for (const button of [this.startButton, this.stopButton, this.restartButton, this.compileButton, this.refreshButton]) {
+    for (const button of [this.startButton, this.stopButton, this.restartButton, this.compileButton, this.editButton, this.refreshButton]) {
       button.type = "button";
     }
     this.refreshButton.title = "List the programs again";
     this.compileButton.title = "Compile the chosen C/C++ source with eyesim cc";
     this.startButton.title = "Start the chosen program for this robot (stops the one running)";
     this.restartButton.title = "Stop this robot's program and start it again";
+    this.editButton.title = "Open the chosen source, or the robot's program source, in the program editor";
     this.message.setAttribute("role", "status");
     const row = element("div", "program-row");
     row.append(this.choice, this.refreshButton);
     const buttons = element("div", "program-buttons");
-    buttons.append(this.startButton, this.stopButton, this.restartButton, this.compileButton);
+    buttons.append(this.startButton, this.stopButton, this.restartButton, this.compileButton, this.editButton);
     this.element.append(row, buttons, this.message, this.compilerOutput);
     this.compilerOutput.hidden = true;
 
@@ -108,6 +118,12 @@ export class ProgramControls {
     this.stopButton.addEventListener("click", () => void this.act("stop"));
     this.restartButton.addEventListener("click", () => void this.act("restart"));
     this.compileButton.addEventListener("click", () => void this.compile());
+    // The program editor (main.ts loads it on first use) opens the chosen source, else the robot's.
+    this.editButton.addEventListener("click", () => {
+      const file = this.selected();
+      const source = file && EDITABLE_KINDS.has(file.kind) ? { root: file.root, path: file.path } : null;
+      this.element.dispatchEvent(new CustomEvent<EditProgram>(EDIT_PROGRAM, { bubbles: true, detail: { robot: this.robot, file: source } }));
+    });
     catalog.onChange(() => this.showFiles());
     this.showFiles();
   }
@@ -184,6 +200,7 @@ export class ProgramControls {
     this.compileButton.disabled = !this.enabled || !source;
     this.stopButton.disabled = !this.enabled || !this.running;
     this.restartButton.disabled = !this.enabled;
+    this.editButton.disabled = !this.enabled;
   }
 
   private async act(action: "start" | "stop" | "restart"): Promise<void> {

@@ -84,8 +84,9 @@ class ProgramSources:
         """Replace the file's text. With `version` (what read answered), only when the file is still
         that version: a file changed meanwhile (another editor) is not overwritten unasked (409)."""
         path = self._source(body)
-        if not self.control.roots()[body["root"]].writable:
-            raise BadRequest(f"{body['path']!r} is in a read-only folder", 403)
+        if not self.control.roots()[body["root"]].writable or paths.PACKAGE_DIR in path.parents:
+            raise BadRequest(f"{body['path']!r} belongs to the installed EyeSim (an example): copy it into "
+                             f"your folder to change it", 403)
         data = body["text"].encode("utf-8")
         if len(data) > MAX_SOURCE:
             raise BadRequest(f"{len(data)} bytes: more than the editor saves ({MAX_SOURCE})", 413)
