@@ -9,7 +9,9 @@ watches the launched programs' output pipes (programs/program_output.py).
 Every socket is non-blocking. A connection reassembles its own frames, so a client that sends half
 a frame and stalls holds up nobody. Replies go straight into the socket; what the kernel does not
 take at once waits in that connection's backlog, flushed when the socket is writable, so the
-simulation never waits for a slow reader. Two limits keep one program from sinking the rest:
+simulation never waits for a slow reader. A large reply (a camera image) goes SEND_PIECE bytes
+per turn of the loop, so other programs are served between its pieces (the kernel's copy of a
+whole 15 MB frame held the simulation thread for 2-4 ms). Two limits keep one program from sinking the rest:
 while a connection has MAX_QUEUED requests waiting (queued or in blocking calls) or more than
 READ_PAUSE_BACKLOG bytes of replies unread, its socket is not read (TCP holds the sender back); a program that stops reading
 its replies for STALL_TIMEOUT, or lets them pile up beyond MAX_BACKLOG, is disconnected with a
@@ -34,6 +36,7 @@ from eyesim.protocol import FrameDecoder, ProtocolError, decode_payload, encode_
 
 log = logging.getLogger("eyesim.net")
 READ_SIZE = 256 * 1024
+SEND_PIECE = 256 * 1024  # bytes handed to the kernel at once (tens of µs to copy)
 MAX_QUEUED = 64  # requests of one program waiting for the simulation before its socket rests
 READ_PAUSE_BACKLOG = 1 << 20  # bytes of unread replies before a program's requests are not read
 MAX_BACKLOG = 32 << 20  # bytes of unread replies that close the connection (two largest frames)
@@ -76,7 +79,7 @@ class ProgramConnection:
             return
         if not self.backlog.size:
             try:
-                sent = self.sock.send(data)
+                sent = self.sock.send(data if len(data) <= SEND_PIECE else memoryview(data)[:SEND_PIECE])
             except BlockingIOError:
                 sent = 0
             except OSError:
@@ -96,7 +99,7 @@ class ProgramConnection:
 
     def flush(self) -> None:
         try:
-            sent = self.sock.send(self.backlog.first())
+            sent = self.sock.send(self.backlog.first()[:SEND_PIECE])
         except BlockingIOError:
             return
         except OSError:
