@@ -76,7 +76,7 @@ class OneThreadClient:
         self.server = ProgramServer(self.sim, "127.0.0.1", 0)
         self.server.start()
         self.sim.clock.anchor(0)
-        self.sim._drain_inbox()  # the listener joins the selector
+        self.sim.handle_queued()  # the listener joins the selector
         self.sock = socket.create_connection(("127.0.0.1", self.server.port))
         self.sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
         self.sock.setblocking(False)
@@ -86,7 +86,7 @@ class OneThreadClient:
     def call(self, frame: bytes) -> None:
         self.sock.send(frame)
         while True:
-            self.sim._realtime_round()
+            self.sim.timing.round()
             try:
                 data = self.sock.recv(65536)
             except BlockingIOError:

@@ -58,7 +58,7 @@ def take(sim: Simulation, session: Session, name: str, args: tuple, request_id: 
     (message,) = FrameDecoder().feed(frame)
     request = Request(session, op, message.request_id, decode_payload(op.request, message.payload, op.lengths),
                       max(sim.time_us, session.local_time_us))
-    sim._execute(request)
+    sim.requests.execute(request)
     spent = time.perf_counter() - start
     deferred = [p for _, p in session.pending if isinstance(p, Deferred)]
     for pending in deferred:
@@ -66,7 +66,7 @@ def take(sim: Simulation, session: Session, name: str, args: tuple, request_id: 
     made = time.perf_counter() - start if deferred else 0.0
     if deferred:  # its reply: sent when its cost in simulation time has passed
         start = time.perf_counter()
-        sim._wake_session(session, max(p.wake_us for p in deferred))
+        sim.requests.wake_session(session, max(p.wake_us for p in deferred))
         spent += time.perf_counter() - start
     return spent, made
 
@@ -78,7 +78,7 @@ def main() -> None:
     scene = arena_scene([("S4", (500, 500, 0)), (example_robot("Picker"), (1500, 1500, 0))], objects=[("Can", (1000, 1500, 0))])
     sim = Simulation(scene, Clock("deterministic"))
     session = Session(connection=Collector(), peer="bench")
-    sim._connected(session)
+    sim.requests.connected(session)
     times = {("HELLO", "16 MiB program name"): [take(sim, session, "HELLO", worst_hello(1), 1)[0]]}
     elsewhere = {}  # ms on the render thread, per request
     request_id = 2

@@ -126,7 +126,7 @@ def test_with_a_call_time_a_pipelining_program_is_served_one_call_time_at_a_time
     start_us = sim.time_us
     _pipeline(greedy, "LIDAR_GET", 200)
     _wait_until(lambda: sim.time_us - start_us >= 300_000)  # 15 call times
-    held = len(sim._held)
+    held = len(sim.timing.held)
     greedy.sock.settimeout(0.02)
     replies = 0
     try:

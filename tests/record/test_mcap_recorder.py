@@ -116,11 +116,11 @@ def test_replayed_poses_and_lcds_equal_the_live_run_at_chosen_times(recorded, tm
             sim.stop_when_programs_done = True
             sim.run(until=10)
             launcher.stop_all(let_finish=5.0)
-            sim.shutdown_sessions()
+            sim.shutdown_programs()
             sim.handle_queued()  # the program's exit, for the recording
     finally:
         launcher.stop_all()
-        sim.shutdown_sessions()
+        sim.shutdown_programs()
         server.stop()
     assert set(live) == chosen
 

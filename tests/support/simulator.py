@@ -54,7 +54,7 @@ def running_simulation(scene, mode: str = "realtime", speed: float = 1.0, expect
     finally:
         sim.stop()
         thread.join(timeout=10)
-        sim.shutdown_sessions()
+        sim.shutdown_programs()
         server.stop()
         _tokens.pop(server.port, None)
     assert not errors, errors

@@ -260,7 +260,7 @@ def simulate(args, cleanup: contextlib.ExitStack) -> int:
         if wall_limit is not None:
             wall_limit.cancel()
         launcher.stop_all(let_finish=5.0 if sim.stop_when_programs_done else 0.0)
-        sim.shutdown_sessions()
+        sim.shutdown_programs()
         sim.handle_queued()
         server.stop()
         if viewer is not None:

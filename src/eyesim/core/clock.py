@@ -2,7 +2,7 @@
 
 Simulation time is kept in integer microseconds so that deterministic runs add up exactly.
 In deterministic mode time is virtual: the engine advances it in lock-step with the connected
-programs (see engine.py); this module only carries the mode. In realtime mode the clock says how
+programs (see schedules.py); this module only carries the mode. In realtime mode the clock says how
 many physics steps are due by now, given the speed factor and pauses."""
 
 from __future__ import annotations
