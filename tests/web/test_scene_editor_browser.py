@@ -116,6 +116,8 @@ def test_open_build_edit_undo_save_and_reopen(browser_context, simulator, worksp
     page.wait_for_function("() => window.eyesimViewer.robotIds().length === 2")
     page.wait_for_function("() => window.eyesimViewer.scene().objects === 1")
 
+    page.fill("#editor-grid", "50")  # wall ends on a 50 mm grid
+    page.locator("#editor-grid").dispatch_event("change")
     page.click("#editor-draw-wall")
     start, end = screen_of(page, 1010, 3010), screen_of(page, 2490, 3020)
     page.mouse.move(*start)

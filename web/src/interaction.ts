@@ -17,6 +17,12 @@ export interface DragTarget {
 /** What a click picks: a robot or object, or a robot's PSD (`id` as PSDGet takes it) by its beam. */
 export type PickTarget = DragTarget | { kind: "psd"; robot: number; id: number };
 
+/** Steps a drag keeps to (the scene editor's snapping): positions on a grid, turns by an angle. */
+export interface DragSnap {
+  gridMm: number;
+  angleDeg: number;
+}
+
 /** What the 3D view lends the dragging. */
 export interface DragHost {
   camera: Camera;
@@ -90,6 +96,8 @@ export class DragToPlace {
   private beamPress: { target: PickTarget; pointer: number; x: number; y: number } | null = null;
   /** Watching a recording or the past: things can be clicked (picked) but not moved. */
   readOnly = false;
+  /** Snapping while dragging (null: free); Alt held drags free. */
+  snap: DragSnap | null = null;
   private startClientY = 0;
 
   constructor(
@@ -237,16 +245,20 @@ export class DragToPlace {
     }
   }
 
-  /** Moves the drag's pose to where the pointer says, kept on the floor. */
+  /** Moves the drag's pose to where the pointer says, kept on the floor (and on the snap grid). */
   private follow(drag: Drag, event: PointerEvent): void {
+    const snap = event.altKey ? null : this.snap;
+    const step = (value: number, size: number) => (snap && size > 0 ? Math.round(value / size) * size : value);
     if (drag.turning) {
-      drag.phi = wrapAngle(drag.startPhi - (event.clientX - drag.startClientX) * TURN_PER_PIXEL);
+      const turned = drag.startPhi - (event.clientX - drag.startClientX) * TURN_PER_PIXEL;
+      drag.phi = wrapAngle(step(turned, ((snap?.angleDeg ?? 0) * Math.PI) / 180));
     } else {
       const floor = this.floorPoint(event);
       const size = this.host.scene()?.floor;
       if (!floor || !size) return;
-      drag.x = Math.min(size.width, Math.max(0, floor.x + drag.grab.x));
-      drag.y = Math.min(size.height, Math.max(0, floor.y + drag.grab.y));
+      const grid = (snap?.gridMm ?? 0) / 1000;
+      drag.x = Math.min(size.width, Math.max(0, step(floor.x + drag.grab.x, grid)));
+      drag.y = Math.min(size.height, Math.max(0, step(floor.y + drag.grab.y, grid)));
     }
     this.host.requestRender();
   }

@@ -16,7 +16,7 @@ import {
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 import { CSS2DObject, CSS2DRenderer } from "three/addons/renderers/CSS2DRenderer.js";
 import { CameraModes, type ViewMode } from "./camera_modes";
-import { DragToPlace, yawOf, type DragTarget, type PickTarget } from "./interaction";
+import { DragToPlace, yawOf, type DragSnap, type DragTarget, type PickTarget } from "./interaction";
 import type { Pose, Poses } from "./interpolation";
 import type { BrowserCommand, Floor, SceneMessage, SensorRays } from "./protocol";
 import { buildWorld, disposeWorld, type BuiltWorld } from "./world_builder";
@@ -306,6 +306,11 @@ export class WorldView {
     this.needsRender = true;
     this.render();
     return this.display.renderer.domElement.toDataURL("image/png");
+  }
+
+  /** Snapping while dragging things (the scene editor's), or null for free dragging. */
+  set dragSnap(snap: DragSnap | null) {
+    if (this.dragging) this.dragging.snap = snap;
   }
 
   /** What the pointer is dragging now, or null. */

@@ -295,3 +295,31 @@ def settle_placements(robots: list[RobotPlacement], objects: list[ObjectPlacemen
     settled_objects = [placed_objects[i] for i in range(len(objects))]
     # None marks a body refused (its error is reported); the scene is not built then.
     return [r for r in settled_robots if r is not None], [o for o in settled_objects if o is not None]
+
+
+def clear_place(placement: RobotPlacement | ObjectPlacement, others, robot_types: dict[str, RobotType],
+                object_types: dict[str, ObjectType], walls: tuple[Wall, ...]) -> tuple[Pose | None, str]:
+    """Where `placement` goes when it alone makes way (the scene editor's drop, an added robot):
+    moved out of the walls, then to the nearest free place off the `others` (robot and object
+    placements that stay where they are), as `settle_placements` moves a later placement. Returns
+    the pose (whole mm when moved; None when there is no free place nearby) and what it
+    overlapped ("" when it was clear)."""
+    def extent(p):
+        if isinstance(p, RobotPlacement):
+            return _robot_extent(robot_types[p.type_name])
+        return _box_extent(object_types[p.type_name].colliders)
+
+    wall_grid, bodies = _walls_grid(walls), _Grid()
+    for other in others:
+        corners = _corners(other.pose, extent(other))
+        bodies.add(_box(corners), _Body("robot" if isinstance(other, RobotPlacement) else "object", other, corners))
+    own = extent(placement)
+    pose, wall = _settle(placement.pose, own, wall_grid)
+    overlapped = "" if wall is None else f"the wall from ({wall.x1:g}, {wall.y1:g}) to ({wall.x2:g}, {wall.y2:g})"
+    if overlapped:
+        pose = replace(pose, x=float(round(pose.x)), y=float(round(pose.y)))
+    other = _first_overlap(_corners(pose, own), bodies)
+    if other is not None:
+        overlapped = other.describe()
+        pose = _free_place(pose, own, other, wall_grid, bodies)
+    return pose, overlapped

@@ -17,7 +17,9 @@ from pathlib import Path
 from eyesim.scene import builtins
 from eyesim.scene.description import Marker, Pose, Scene, Settings, Wall, World
 from eyesim.scene.json_format import dumps, to_json
+from eyesim.scene.description import ObjectPlacement, RobotPlacement
 from eyesim.scene.loader import build_scene, load_object_type, load_robot_type
+from eyesim.scene.placement import clear_place
 from eyesim.scene.sim import Placement, Reference, SimDocument, write_sim
 from eyesim.scene.wld import write_wld
 
@@ -128,7 +130,8 @@ class Draft:
             "objects": world_objects + [{"type": o.type_name, "x": o.pose.x, "y": o.pose.y, "phi": o.pose.phi,
                                          "world": False} for o in self.objects],
             "markers": [{"x": m.x, "y": m.y, "color": list(m.color)} for m in (*self.world.markers, *self.markers)],
-            "walls": [{"x1": w.x1, "y1": w.y1, "x2": w.x2, "y2": w.y2} for w in self.world.walls],
+            "walls": [{"x1": w.x1, "y1": w.y1, "x2": w.x2, "y2": w.y2, "thickness": w.thickness, "height": w.height,
+                       "color": list(w.color)} for w in self.world.walls],
             "floor": {"width": self.world.floor_width, "height": self.world.floor_height},
         }
 
@@ -278,6 +281,33 @@ def set_floor(draft: Draft, op: dict, locate) -> Draft:
     return dataclasses.replace(draft, world=world)
 
 
+def set_properties(draft: Draft, op: dict, locate) -> Draft:
+    """What the inspector sets: a wall's ends, thickness, height and colour, a marker's place and
+    colour; a field not given stays as it was."""
+    draft = _owning(draft, op["kind"], op)
+    given = {key: op[key] for key in ("x", "y", "x1", "y1", "x2", "y2", "thickness", "height") if key in op}
+    if "color" in op:
+        given["color"] = tuple(op["color"])
+    if op["kind"] == "marker":
+        index = _index(op, len(draft.markers), "marker")
+        if {"x1", "y1", "x2", "y2", "thickness", "height"} & given.keys():
+            raise EditError("set-properties: a marker has x, y and a colour only")
+        markers = list(draft.markers)
+        old = markers[index]
+        color = given.pop("color", old.color[:3]) + old.color[3:]  # the marker keeps its alpha
+        markers[index] = dataclasses.replace(old, **given, color=color)
+        return dataclasses.replace(draft, markers=tuple(markers))
+    index = _index(op, len(draft.world.walls), "wall")
+    if {"x", "y"} & given.keys():
+        raise EditError("set-properties: a wall has x1, y1, x2, y2, thickness, height and a colour")
+    walls = list(draft.world.walls)
+    walls[index] = dataclasses.replace(walls[index], **given)
+    wall = walls[index]
+    if (wall.x1, wall.y1) == (wall.x2, wall.y2):
+        raise EditError("set-properties: the wall has no length (both ends at the same point)")
+    return dataclasses.replace(draft, world=dataclasses.replace(draft.world, walls=tuple(walls)))
+
+
 def set_program(draft: Draft, op: dict, locate) -> Draft:
     """The program a robot runs: a file under the roots, or none (`program: null`)."""
     index = _index(op, len(draft.robots), "robot")
@@ -311,7 +341,58 @@ def _definition(load, path: Path):
 
 OPERATIONS = {"add-robot": add_robot, "add-object": add_object, "add-marker": add_marker, "add-wall": add_wall,
               "move": move, "delete": delete, "duplicate": duplicate, "set-floor": set_floor,
-              "set-program": set_program}
+              "set-program": set_program, "set-properties": set_properties}
+
+
+# -- making way ------------------------------------------------------------------------------
+def placed_body(draft: Draft, op: dict) -> tuple[str, int] | None:
+    """The robot or object an edit put down (kind, index as items() numbers it), or None."""
+    name = op["op"]
+    objects = len(draft.world.objects) + len(draft.objects)
+    if name == "add-robot" or (name == "duplicate" and op["kind"] == "robot"):
+        return "robot", len(draft.robots) - 1
+    if name == "add-object" or (name == "duplicate" and op["kind"] == "object"):
+        return "object", objects - 1
+    if name == "move" and op["kind"] in ("robot", "object"):
+        return op["kind"], op["index"]
+    return None
+
+
+def _placements(draft: Draft) -> tuple[list[RobotPlacement], list[ObjectPlacement]]:
+    robots = [RobotPlacement(r.type_name, r.pose) for r in draft.robots]
+    objects = list(draft.world.objects) + [ObjectPlacement(o.type_name, o.pose) for o in draft.objects]
+    return robots, objects
+
+
+def make_way(draft: Draft, scene: Scene, kind: str, index: int) -> tuple[Draft, str]:
+    """The draft with the body just put down (kind, index) moved clear of the walls and the other
+    bodies, which stay where they are (the loader alone would move whichever comes later in the
+    file); and what was done, for the page ("" when it was clear). EditError when there is no free
+    place near it."""
+    robots, objects = _placements(draft)
+    mine = (robots if kind == "robot" else objects).pop(index)
+    pose, overlapped = clear_place(mine, robots + objects, scene.robot_types, scene.object_types, scene.world.walls)
+    what = f"{kind.capitalize()} {index + 1} ({mine.type_name})"
+    if pose is None:
+        raise EditError(f"{what} at ({mine.pose.x:.0f}, {mine.pose.y:.0f}) overlaps {overlapped} and there is no "
+                        "free place near it: put it somewhere with more room")
+    if not overlapped:
+        return draft, ""
+    moved = move(draft, {"op": "move", "kind": kind, "index": index, "x": pose.x, "y": pose.y, "phi": pose.phi},
+                 None)
+    return moved, f"{what} overlapped {overlapped}: moved to ({pose.x:.0f}, {pose.y:.0f}), clear of it"
+
+
+def settled(draft: Draft, scene: Scene) -> Draft:
+    """The draft with its robots and objects where the loader put them (out of a wall drawn
+    across them, say), so that the saved file loads as it is shown, without `overlap` warnings."""
+    robots, objects = _placements(draft)
+    for kind, placed, built in (("robot", robots, scene.robots), ("object", objects, scene.objects)):
+        for index, (before, after) in enumerate(zip(placed, built)):
+            if (before.pose.x, before.pose.y) != (after.pose.x, after.pose.y):
+                draft = move(draft, {"op": "move", "kind": kind, "index": index, "x": after.pose.x,
+                                     "y": after.pose.y, "phi": after.pose.phi}, None)
+    return draft
 
 
 # -- saving -----------------------------------------------------------------------------------

@@ -32,7 +32,7 @@ from aiohttp import web
 from eyesim.scene import SceneError, World, builtins, load_scene
 from eyesim.web.recent_files import RecentFiles
 from eyesim.web.route_bodies import BadBody, checked_body
-from eyesim.web.scene_editing import Draft, EditError, apply, saved_files, set_floor
+from eyesim.web.scene_editing import Draft, EditError, apply, make_way, placed_body, saved_files, set_floor, settled
 from eyesim.web.scene_files import FileAccessError, SceneRoots
 from eyesim.web.simulation_calls import on_simulation
 
@@ -140,9 +140,15 @@ class SceneWorkspace:
                 return web.json_response(self.state())
             try:
                 draft = apply(self.draft, body, self._locate)
+                draft, moved = await _in_thread(_made_way, draft, body)
             except EditError as error:
-                return _refused(str(error))
-            return await self._take(draft, self.undo_stack, clear_redo=True)
+                answer = _refused(str(error))
+            else:
+                answer = await self._take(draft, self.undo_stack, clear_redo=True, moved=moved)
+            if answer.status == 422 and body["op"] == "move":
+                # a drag moved the body in the physics already: back to where the scene has it
+                await self._replace(await _in_thread(self.draft.scene), start_programs=False, opened=False)
+            return answer
 
     async def _undo(self, request: web.Request) -> web.Response:
         await _body(request)
@@ -194,14 +200,18 @@ class SceneWorkspace:
             return web.json_response(dict(self.state(), saved=[self._shown(p) for p in files]))
 
     # -- doing it -----------------------------------------------------------------------------
-    async def _take(self, draft: Draft, stack: list[Draft], clear_redo: bool, opened: bool = False) -> web.Response:
+    async def _take(self, draft: Draft, stack: list[Draft], clear_redo: bool, opened: bool = False,
+                    moved: str = "") -> web.Response:
         """Make `draft` the scene (the current one goes onto `stack`), or refuse it. `opened`: a new
-        scene rather than an edit of this one (a recording goes on in another file)."""
+        scene rather than an edit of this one (a recording goes on in another file). `moved`: what
+        the edit moved clear, for the page. Bodies the loader moved (off a wall drawn across them)
+        stay where it put them, so that a saved scene loads as it is shown."""
         draft = self._with_live_settings(draft)
         try:
             scene = await _in_thread(draft.scene)
         except SceneError as error:
             return _refused("the edit makes a scene the loader refuses", error.diagnostics)
+        draft = settled(draft, scene)
         if not self.editing:
             await self._set_editing(True)
         await self._replace(scene, start_programs=False, opened=opened)
@@ -210,7 +220,8 @@ class SceneWorkspace:
         if clear_redo:
             self.redo_stack.clear()
         self.draft = draft
-        return web.json_response(dict(self.state(), warnings=[_diagnostic(d) for d in scene.warnings]))
+        answer = dict(self.state(), warnings=[_diagnostic(d) for d in scene.warnings])
+        return web.json_response(dict(answer, moved=moved) if moved else answer)
 
     async def _set_editing(self, editing: bool) -> None:
         if editing == self.editing:
@@ -268,6 +279,18 @@ class SceneWorkspace:
     def _shown(self, path: Path) -> dict:
         root, relative = self.roots.place_of(path)
         return {"root": root, "path": relative}
+
+
+def _made_way(draft: Draft, op: dict) -> tuple[Draft, str]:
+    """The draft with the robot or object the edit put down moved clear (scene_editing.make_way)."""
+    body = placed_body(draft, op)
+    if body is None:
+        return draft, ""
+    try:
+        scene = draft.scene()
+    except SceneError:  # refused as it is: _take says why
+        return draft, ""
+    return make_way(draft, scene, *body)
 
 
 async def _in_thread(function, *args):

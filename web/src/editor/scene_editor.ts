@@ -21,10 +21,22 @@ interface Selection {
 }
 
 const ROTATE_STEP = 15; // degrees per press of a turn button
+const SNAP_GRID = 10; // mm: where dragged things and wall ends land while snapping
+const SNAP_ANGLE = 15; // degrees: the steps a Shift-drag turns by while snapping
 const NEW_THING_SPACING = 300; // mm between things added one after another
 
 function element<T extends HTMLElement>(root: HTMLElement, selector: string): T {
   return root.querySelector<T>(selector)!;
+}
+
+/** "#rrggbb" of an [r, g, b(, a)] colour, and back. */
+function hexOf(color: number[]): string {
+  return "#" + color.slice(0, 3).map((c) => c.toString(16).padStart(2, "0")).join("");
+}
+
+function rgbOf(hex: string): [number, number, number] {
+  const channel = (i: number) => parseInt(hex.slice(i, i + 2), 16);
+  return [channel(1), channel(3), channel(5)];
 }
 
 function basename(path: string): string {
@@ -48,7 +60,7 @@ export class SceneEditor {
   private edits = 0;
   private live = false;
 
-  constructor(viewer: Viewer, toolbar: HTMLElement, layout: HTMLElement, worldElement: HTMLElement) {
+  constructor(private readonly viewer: Viewer, toolbar: HTMLElement, layout: HTMLElement, worldElement: HTMLElement) {
     this.browser = new SceneBrowser((state) => this.show(state));
     const controls = toolbar.querySelector(".controls") ?? toolbar;
     const openButton = document.createElement("button");
@@ -86,8 +98,10 @@ export class SceneEditor {
         <button id="editor-add-object" type="button">Add object</button></div>
       <div class="editor-row"><button id="editor-add-marker" type="button">Add marker</button>
         <button id="editor-draw-wall" type="button" aria-pressed="false" title="Drag on the floor to draw a wall">Draw walls</button></div>
-      <div class="editor-row"><label><input id="editor-snap" type="checkbox" checked /> snap to</label>
-        <input id="editor-grid" type="number" min="1" value="50" aria-label="grid in mm" /> mm</div>
+      <div class="editor-row" title="Dragged things and wall ends keep to the grid, turns to the angle; hold Alt to drag freely">
+        <label><input id="editor-snap" type="checkbox" checked /> snap to</label>
+        <input id="editor-grid" type="number" min="1" value="${SNAP_GRID}" aria-label="grid in mm" /> mm
+        <input id="editor-angle" type="number" min="1" max="180" value="${SNAP_ANGLE}" aria-label="angle step in degrees" /> °</div>
       <h3>Floor</h3>
       <div class="editor-row"><input id="editor-floor-width" type="number" aria-label="floor width in mm" /> ×
         <input id="editor-floor-height" type="number" aria-label="floor height in mm" /> mm
@@ -105,6 +119,13 @@ export class SceneEditor {
           <label>x1 <input id="editor-x1" type="number" /></label><label>y1 <input id="editor-y1" type="number" /></label>
           <label>x2 <input id="editor-x2" type="number" /></label><label>y2 <input id="editor-y2" type="number" /></label>
         </div>
+        <div class="editor-row" id="editor-wall-size" hidden>
+          <label>thickness <input id="editor-thickness" type="number" min="1" /></label>
+          <label>height <input id="editor-height" type="number" min="1" /></label> mm
+          <span id="editor-length" class="editor-note"></span>
+        </div>
+        <div class="editor-row" id="editor-color-row" hidden>
+          <label>colour <input id="editor-color" type="color" /></label></div>
         <div class="editor-row">
           <button id="editor-apply" type="button">Apply</button>
           <button id="editor-turn-left" type="button" title="Turn ${ROTATE_STEP}° left">⟲</button>
@@ -188,8 +209,8 @@ export class SceneEditor {
     on("#editor-delete", () => this.deleteSelected());
     const snap = element<HTMLInputElement>(this.panel, "#editor-snap");
     const grid = element<HTMLInputElement>(this.panel, "#editor-grid");
-    snap.addEventListener("change", () => (this.walls.snap = snap.checked));
-    grid.addEventListener("change", () => (this.walls.gridMm = Math.max(1, Number(grid.value) || 50)));
+    const angle = element<HTMLInputElement>(this.panel, "#editor-angle");
+    for (const input of [snap, grid, angle]) input.addEventListener("change", () => this.setSnap());
     element<HTMLSelectElement>(this.panel, "#editor-program").addEventListener("change", (event) => {
       const value = (event.target as HTMLSelectElement).value;
       if (this.selection?.kind !== "robot") return;
@@ -228,7 +249,8 @@ export class SceneEditor {
     const next = this.busy.then(async () => {
       try {
         this.show(await request());
-        this.say((this.state?.warnings ?? []).map((d) => d.text).join("\n"));
+        const warnings = (this.state?.warnings ?? []).map((d) => d.text);
+        this.say([this.state?.moved ?? "", ...warnings].filter((text) => text).join("\n"), warnings.length > 0);
       } catch (error) {
         this.say(errorText(error));
       }
@@ -240,6 +262,16 @@ export class SceneEditor {
 
   private edit(op: SceneEdit): Promise<void> {
     return this.run(() => call("POST /scenes/edit", op));
+  }
+
+  /** The snap settings to the wall tool and, while editing, to dragging in the 3D view. */
+  private setSnap(): void {
+    const on = element<HTMLInputElement>(this.panel, "#editor-snap").checked;
+    const gridMm = Math.max(1, this.numberOf("#editor-grid") || SNAP_GRID);
+    const angleDeg = Math.max(1, this.numberOf("#editor-angle") || SNAP_ANGLE);
+    this.walls.snap = on;
+    this.walls.gridMm = gridMm;
+    this.viewer.world.dragSnap = on && this.state?.editing ? { gridMm, angleDeg } : null;
   }
 
   private setEditing(editing: boolean): void {
@@ -276,6 +308,7 @@ export class SceneEditor {
     const state = this.state;
     if (!state) return;
     this.panel.hidden = !state.editing;
+    this.setSnap();
     // While editing, the editor takes the robot panels' place beside the 3D view (style.css).
     document.body.classList.toggle("editing", state.editing);
     this.editButton.textContent = state.editing ? "Done editing" : "Edit scene";
@@ -358,11 +391,19 @@ export class SceneEditor {
     element(this.panel, "#editor-turn-left").hidden = wall || kind === "marker";
     element(this.panel, "#editor-turn-right").hidden = wall || kind === "marker";
     element(this.panel, "#editor-program-row").hidden = kind !== "robot";
+    element(this.panel, "#editor-wall-size").hidden = !wall;
+    element(this.panel, "#editor-color-row").hidden = !wall && kind !== "marker";
     const set = (id: string, value: number | undefined) => {
       element<HTMLInputElement>(this.panel, id).value = value === undefined ? "" : String(Math.round(value * 100) / 100);
     };
     const fields = thing as Record<string, number>;
-    for (const name of wall ? ["x1", "y1", "x2", "y2"] : ["x", "y", "phi"]) set(`#editor-${name}`, fields[name]);
+    for (const name of wall ? ["x1", "y1", "x2", "y2", "thickness", "height"] : ["x", "y", "phi"]) {
+      set(`#editor-${name}`, fields[name]);
+    }
+    const color = (thing as { color?: number[] }).color;
+    if (color) element<HTMLInputElement>(this.panel, "#editor-color").value = hexOf(color);
+    element(this.panel, "#editor-length").textContent = wall
+      ? `length ${Math.round(Math.hypot(fields.x2 - fields.x1, fields.y2 - fields.y1))}` : "";
     if (kind === "robot") {
       const program = element<HTMLSelectElement>(this.panel, "#editor-program");
       const path = thing.program ?? null;
@@ -409,9 +450,15 @@ export class SceneEditor {
   private applyFields(): void {
     const s = this.selection;
     if (!s) return;
-    const names = s.kind === "wall" ? ["x1", "y1", "x2", "y2"] : s.kind === "marker" ? ["x", "y"] : ["x", "y", "phi"];
+    const names = s.kind === "wall" ? ["x1", "y1", "x2", "y2", "thickness", "height"]
+      : s.kind === "marker" ? ["x", "y"] : ["x", "y", "phi"];
     const values = Object.fromEntries(names.map((n) => [n, this.numberOf(`#editor-${n}`)]));
-    void this.edit({ op: "move", ...s, ...values });
+    if (s.kind === "wall" || s.kind === "marker") {
+      const color = rgbOf(element<HTMLInputElement>(this.panel, "#editor-color").value);
+      void this.edit({ op: "set-properties", kind: s.kind, index: s.index, ...values, color });
+    } else {
+      void this.edit({ op: "move", ...s, ...values });
+    }
   }
 
   private turn(degrees: number): void {

@@ -1,5 +1,5 @@
 // Drawing a wall: press on the floor, drag to its other end, release. Ends snap to a grid (mm)
-// unless snapping is switched off. The wall is drawn as a line while dragging.
+// unless snapping is switched off or Alt is held. The wall is drawn as a line while dragging.
 
 import { BufferGeometry, Group, Line, LineBasicMaterial, Vector3 } from "three";
 import type { WorldView } from "../world_view";
@@ -11,7 +11,7 @@ const PREVIEW_HEIGHT = 0.01; // m above the floor
 export class WallTool {
   active = false;
   snap = true;
-  gridMm = 50;
+  gridMm = 10;
   private start: { x: number; y: number } | null = null;
   private readonly preview = new Line(new BufferGeometry(), new LineBasicMaterial({ color: 0xd04010 }));
   private readonly overlay = new Group();
@@ -37,7 +37,8 @@ export class WallTool {
   private pointAt(event: PointerEvent): { x: number; y: number } | null {
     const metres = this.world.floorPointAt(event.clientX, event.clientY);
     if (!metres) return null;
-    const snapped = (v: number) => (this.snap && this.gridMm > 0 ? Math.round(v / this.gridMm) * this.gridMm : Math.round(v));
+    const snap = this.snap && !event.altKey && this.gridMm > 0; // Alt draws freely
+    const snapped = (v: number) => (snap ? Math.round(v / this.gridMm) * this.gridMm : Math.round(v));
     return { x: snapped(metres.x * 1000), y: snapped(metres.y * 1000) };
   }
 

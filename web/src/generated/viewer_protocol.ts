@@ -969,10 +969,15 @@ export interface EditorWall {
   y1: number;
   x2: number;
   y2: number;
+  /** mm */
+  thickness: number;
+  /** mm */
+  height: number;
+  color: [number, number, number];
 }
 
 export function parseEditorWall(value: unknown, what: string): EditorWall {
-  return objectOf(record(value, what), what, {x1: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], y1: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], x2: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], y2: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined]}) as unknown as EditorWall;
+  return objectOf(record(value, what), what, {x1: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], y1: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], x2: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], y2: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], thickness: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], height: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], color: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => num(v, w, true, 0, 255, false, false), false, 3, 3) as [number, number, number], true, undefined]}) as unknown as EditorWall;
 }
 
 /** The scene's editable things in mm and degrees, numbered as edits name them. */
@@ -1001,10 +1006,12 @@ export interface EditorState {
   warnings?: SceneDiagnostic[];
   /** the files a save wrote */
   saved?: Place[];
+  /** what the edit moved clear of walls and bodies (beside what was asked) */
+  moved?: string;
 }
 
 export function parseEditorState(value: unknown, what: string): EditorState {
-  return objectOf(record(value, what), what, {editing: [bool, true, undefined], browse_at_start: [bool, true, undefined], file: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], place: [(v: unknown, w: string): Place | null => either<Place | null>(v, w, [parsePlace, (v: unknown, w: string) => literal(v, [null] as const, w)], "Place or null"), true, undefined], can_undo: [bool, true, undefined], can_redo: [bool, true, undefined], items: [parseEditorItems, true, undefined], warnings: [(v: unknown, w: string) => list(v, w, parseSceneDiagnostic, true, undefined, undefined) as SceneDiagnostic[], false, undefined], saved: [(v: unknown, w: string) => list(v, w, parsePlace, true, undefined, undefined) as Place[], false, undefined]}) as unknown as EditorState;
+  return objectOf(record(value, what), what, {editing: [bool, true, undefined], browse_at_start: [bool, true, undefined], file: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], place: [(v: unknown, w: string): Place | null => either<Place | null>(v, w, [parsePlace, (v: unknown, w: string) => literal(v, [null] as const, w)], "Place or null"), true, undefined], can_undo: [bool, true, undefined], can_redo: [bool, true, undefined], items: [parseEditorItems, true, undefined], warnings: [(v: unknown, w: string) => list(v, w, parseSceneDiagnostic, true, undefined, undefined) as SceneDiagnostic[], false, undefined], saved: [(v: unknown, w: string) => list(v, w, parsePlace, true, undefined, undefined) as Place[], false, undefined], moved: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined]}) as unknown as EditorState;
 }
 
 /** An empty floor (2000 mm each side unless given). */
@@ -1034,7 +1041,7 @@ export function parseSceneSave(value: unknown, what: string): SceneSave {
 }
 
 /** POST /scenes/edit: start or end editing, or one edit (by its `op`). */
-export type SceneEdit = EditingSwitch | AddRobotEdit | AddObjectEdit | AddMarkerEdit | AddWallEdit | MoveEdit | DeleteEdit | DuplicateEdit | SetFloorEdit | SetProgramEdit;
+export type SceneEdit = EditingSwitch | AddRobotEdit | AddObjectEdit | AddMarkerEdit | AddWallEdit | MoveEdit | DeleteEdit | DuplicateEdit | SetFloorEdit | SetProgramEdit | SetPropertiesEdit;
 
 export function parseSceneEdit(value: unknown, what: string): SceneEdit {
   const fields = record(value, what);
@@ -1049,6 +1056,7 @@ export function parseSceneEdit(value: unknown, what: string): SceneEdit {
     case "duplicate": return parseDuplicateEdit(fields, what);
     case "set-floor": return parseSetFloorEdit(fields, what);
     case "set-program": return parseSetProgramEdit(fields, what);
+    case "set-properties": return parseSetPropertiesEdit(fields, what);
     default: throw new MalformedMessage(`${what}: unknown op ${JSON.stringify(fields.op)}`);
   }
 }
@@ -1203,6 +1211,35 @@ export interface SetProgramEdit {
 
 export function parseSetProgramEdit(value: unknown, what: string): SetProgramEdit {
   return objectOf(record(value, what), what, {op: [(v: unknown, w: string) => literal(v, ["set-program"] as const, w), true, undefined], index: [(v: unknown, w: string) => num(v, w, true, 0, undefined, false, false), true, undefined], program: [(v: unknown, w: string): Place | null => either<Place | null>(v, w, [parsePlace, (v: unknown, w: string) => literal(v, [null] as const, w)], "Place or null"), true, undefined]}) as unknown as SetProgramEdit;
+}
+
+/** A wall's ends, thickness, height and colour, or a marker's place and colour (what is given). */
+export interface SetPropertiesEdit {
+  op: "set-properties";
+  kind: "wall" | "marker";
+  index: number;
+  /** mm */
+  x?: number;
+  /** mm */
+  y?: number;
+  /** mm */
+  x1?: number;
+  /** mm */
+  y1?: number;
+  /** mm */
+  x2?: number;
+  /** mm */
+  y2?: number;
+  /** mm */
+  thickness?: number;
+  /** mm */
+  height?: number;
+  /** [r, g, b], 0..255 */
+  color?: [number, number, number];
+}
+
+export function parseSetPropertiesEdit(value: unknown, what: string): SetPropertiesEdit {
+  return objectOf(record(value, what), what, {op: [(v: unknown, w: string) => literal(v, ["set-properties"] as const, w), true, undefined], kind: [(v: unknown, w: string) => literal(v, ["wall", "marker"] as const, w), true, undefined], index: [(v: unknown, w: string) => num(v, w, true, 0, undefined, false, false), true, undefined], x: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), false, undefined], y: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), false, undefined], x1: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), false, undefined], y1: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), false, undefined], x2: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), false, undefined], y2: [(v: unknown, w: string) => num(v, w, false, -100000, 100000, false, false), false, undefined], thickness: [(v: unknown, w: string) => num(v, w, false, 1, 10000, false, false), false, undefined], height: [(v: unknown, w: string) => num(v, w, false, 1, 10000, false, false), false, undefined], color: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => num(v, w, true, 0, 255, false, false), false, 3, 3) as [number, number, number], false, undefined]}) as unknown as SetPropertiesEdit;
 }
 
 export interface ProgramRoot {
