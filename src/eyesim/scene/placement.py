@@ -43,6 +43,12 @@ def _robot_extent(robot_type: RobotType) -> tuple[float, float, float, float]:
     return x0, y0, x1, y1
 
 
+def chassis_extent(robot_type: RobotType) -> tuple[float, float, float, float]:
+    """The chassis' floor-plan box (x0, y0, x1, y1 mm, robot frame) as the physics builds its hull,
+    without the wheels: the robot editor puts its PSD presets on its edges."""
+    return _box_extent(hull_colliders(robot_type))
+
+
 def _box_extent(colliders: tuple[Collider, ...]) -> tuple[float, float, float, float]:
     """The floor-plan bounding box (x0, y0, x1, y1, mm, object frame) of an object's colliders."""
     if not colliders:

@@ -45,6 +45,7 @@ from eyesim.scene.diagnostics import Diagnostics
 from eyesim.scene.drives import DRIVES, drive_named
 from eyesim.scene.jsonpos import json_positions
 from eyesim.scene.loader import read_document
+from eyesim.scene.placement import chassis_extent
 from eyesim.scene.robi import write_robi
 from eyesim.viewer import messages
 from eyesim.viewer.mesh_message import has_mesh, mesh_message
@@ -431,7 +432,8 @@ class RobotEditor:
     async def _sources(self, request: web.Request) -> web.Response:
         files = await asyncio.get_running_loop().run_in_executor(None, robot_files, self.root)
         return web.json_response({"builtins": builtins.robot_names(), "files": files,
-                                  "drives": [d.name for d in DRIVES]})
+                                  "drives": [d.name for d in DRIVES],
+                                  "drive_parts": {d.name: list(d.parts) for d in DRIVES}})
 
     async def _open(self, request: web.Request) -> web.Response:
         return await _answer(request, self._opened)
@@ -466,7 +468,7 @@ class RobotEditor:
                 self.preview.close()
             self.preview = sim
             preview = await _off_loop(preview_of, sim, f"{PREFIX}/mesh/preview")
-        return {"problems": problems, "preview": preview, "robi": write_robi(robot)}
+        return {"problems": problems, "preview": preview, "robi": write_robi(robot), "chassis": list(chassis_extent(robot))}
 
     async def _save(self, request: web.Request) -> web.Response:
         return await _answer(request, self._saved)

@@ -1436,10 +1436,12 @@ export interface RobotSources {
   /** robot files under the scene folder */
   files: string[];
   drives: string[];
+  /** by drive, the drive-dependent robot fields it can use (the others are not offered) */
+  drive_parts: { [key: string]: string[] };
 }
 
 export function parseRobotSources(value: unknown, what: string): RobotSources {
-  return objectOf(record(value, what), what, {builtins: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined, undefined) as string[], true, undefined], files: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined, undefined) as string[], true, undefined], drives: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined, undefined) as string[], true, undefined]}) as unknown as RobotSources;
+  return objectOf(record(value, what), what, {builtins: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined, undefined) as string[], true, undefined], files: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined, undefined) as string[], true, undefined], drives: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined, undefined) as string[], true, undefined], drive_parts: [(v: unknown, w: string) => mapOf(record(v, w), w, (v: unknown, w: string) => list(v, w, (v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined, undefined) as string[]) as { [key: string]: string[] }, true, undefined]}) as unknown as RobotSources;
 }
 
 export interface OpenRobot {
@@ -1569,10 +1571,12 @@ export interface CheckedRobot {
   preview: RobotPreview | null;
   /** the robot as a .robi file */
   robi?: string;
+  /** the chassis' floor-plan box [x0, y0, x1, y1] (mm, robot frame): the PSD presets sit on its edges */
+  chassis?: [number, number, number, number];
 }
 
 export function parseCheckedRobot(value: unknown, what: string): CheckedRobot {
-  return objectOf(record(value, what), what, {problems: [(v: unknown, w: string) => list(v, w, parseRobotProblem, true, undefined, undefined) as RobotProblem[], true, undefined], preview: [(v: unknown, w: string): RobotPreview | null => either<RobotPreview | null>(v, w, [parseRobotPreview, (v: unknown, w: string) => literal(v, [null] as const, w)], "RobotPreview or null"), true, undefined], robi: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined]}) as unknown as CheckedRobot;
+  return objectOf(record(value, what), what, {problems: [(v: unknown, w: string) => list(v, w, parseRobotProblem, true, undefined, undefined) as RobotProblem[], true, undefined], preview: [(v: unknown, w: string): RobotPreview | null => either<RobotPreview | null>(v, w, [parseRobotPreview, (v: unknown, w: string) => literal(v, [null] as const, w)], "RobotPreview or null"), true, undefined], robi: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), false, undefined], chassis: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), false, 4, 4) as [number, number, number, number], false, undefined]}) as unknown as CheckedRobot;
 }
 
 export interface SavedRobot {

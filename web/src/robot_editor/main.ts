@@ -11,6 +11,18 @@ import { SchemaForm, pointerOf, type Json, type JsonObject, type Schema } from "
 import { TestDrive } from "./test_drive";
 
 const CHECK_DELAY_MS = 250;
+/** Where the PSD presets put a sensor on the chassis box [x0, y0, x1, y1] (mm), and its heading. */
+const PSD_PRESETS: [string, (box: number[]) => { x: number; y: number; heading: number }][] = [
+  ["Front", ([, , x1]) => ({ x: x1, y: 0, heading: 0 })],
+  ["Left", ([x0, , x1, y1]) => ({ x: (x0 + x1) / 2, y: y1, heading: 90 })],
+  ["Right", ([x0, y0, x1]) => ({ x: (x0 + x1) / 2, y: y0, heading: -90 })],
+  ["Back", ([x0]) => ({ x: x0, y: 0, heading: 180 })],
+];
+
+/** A file name made of a robot's name: "My bot" -> "My_bot". */
+function fileNameOf(name: string): string {
+  return name.trim().replace(/[^\w.-]+/g, "_").replace(/^[.]+/, "") || "robot";
+}
 
 function byId<T extends HTMLElement>(id: string): T {
   const found = document.getElementById(id);
@@ -29,6 +41,12 @@ class RobotEditorPage {
   private pending = 0;
   private timer: number | null = null;
   private robi = "";
+  /** by drive, the drive-dependent values it can use; other drives' parts are not offered */
+  private driveParts: Record<string, string[]> = {};
+  /** the robot's chassis box on the floor plan (mm), for the PSD presets */
+  private chassis: number[] | null = null;
+  /** the file name last proposed for saving: it follows the robot's name until the user types another */
+  private proposed = "";
   private readonly preview: RobotPreview;
   private readonly drive: TestDrive;
   private readonly formBox = byId<HTMLElement>("forms");
@@ -52,12 +70,15 @@ class RobotEditorPage {
     byId("open").addEventListener("click", () => void this.open());
     byId("try").addEventListener("click", () => void this.tryIt());
     byId("save").addEventListener("click", () => void this.save(false));
+    byId("add-to-scene").addEventListener("click", () => void this.addToScene());
   }
 
   async start(): Promise<void> {
     this.schema = (await call("GET /robot-editor/api/schema")) as Schema;
-    this.form = new SchemaForm(this.schema, (path, value) => this.change(path, value), () => this.renderForms());
     const sources = await call("GET /robot-editor/api/sources");
+    this.driveParts = sources.drive_parts;
+    this.form = new SchemaForm(this.schema, (path, value) => this.change(path, value), () => this.renderForms(),
+      (key) => this.offered(key));
     const select = byId<HTMLSelectElement>("source");
     const group = (label: string, items: [string, string][]) => {
       if (items.length === 0) return;
@@ -84,7 +105,8 @@ class RobotEditorPage {
       this.origin = opened.origin;
       this.builtin = opened.builtin;
       const name = typeof this.robot.name === "string" ? this.robot.name : "robot";
-      byId<HTMLInputElement>("save-path").value = opened.origin ?? `${name}.robi`;
+      this.proposed = opened.origin ?? `${fileNameOf(name)}.robi`;
+      byId<HTMLInputElement>("save-path").value = this.proposed;
       this.setStatus(`Opened ${source.replace(/^\w+:/, "")}`);
       this.renderForms();
       await this.check();
@@ -96,7 +118,40 @@ class RobotEditorPage {
   private renderForms(): void {
     if (!this.form || !this.robot) return;
     this.formBox.replaceChildren(...this.form.render(this.robot));
+    this.addPsdPresets();
     this.showProblems();
+  }
+
+  /** A value or part the robot's drive can use (values of no drive in particular always). */
+  private offered(key: string): boolean {
+    const dependent = Object.values(this.driveParts).some((parts) => parts.includes(key));
+    return !dependent || (this.driveParts[String(this.robot?.drive)] ?? []).includes(key);
+  }
+
+  /** Buttons on each PSD that put it on the front, left, right or back edge of the chassis, facing out. */
+  private addPsdPresets(): void {
+    const psds = Array.isArray(this.robot?.psds) ? (this.robot.psds as JsonObject[]) : [];
+    psds.forEach((psd, index) => {
+      const box = this.form?.fields.get(`/psds/${index}`);
+      if (!box) return;
+      const row = element("div", "psd-presets");
+      row.append(element("span", "field-name", "Place at"));
+      for (const [label, place] of PSD_PRESETS) {
+        const button = element("button", "", label);
+        button.type = "button";
+        button.dataset.preset = label.toLowerCase();
+        button.title = `On the chassis' ${label.toLowerCase()} edge, facing out`;
+        button.addEventListener("click", () => {
+          if (!this.chassis) return;
+          const at = place(this.chassis);
+          for (const [key, value] of Object.entries(at)) psd[key] = Math.round(value * 10) / 10;
+          this.renderForms();
+          this.scheduleCheck();
+        });
+        row.append(button);
+      }
+      box.querySelector("legend")?.after(row);
+    });
   }
 
   private change(path: (string | number)[], value: Json | undefined): void {
@@ -109,7 +164,19 @@ class RobotEditorPage {
       else owner[Number(last)] = value;
     } else if (value === undefined) delete (owner as JsonObject)[last];
     else (owner as JsonObject)[last] = value;
+    if (path.length === 1 && last === "drive") this.renderForms(); // another drive offers other parts
+    if (path.length === 1 && last === "name") this.followName();
     this.scheduleCheck();
+  }
+
+  /** "Save as" follows the robot's name (in the same folder, with the same suffix) until the user
+   *  types a file name of their own. */
+  private followName(): void {
+    const input = byId<HTMLInputElement>("save-path");
+    if (input.value !== this.proposed || typeof this.robot?.name !== "string") return;
+    const folder = input.value.slice(0, input.value.lastIndexOf("/") + 1);
+    const suffix = /\.json$/i.test(input.value) ? ".json" : ".robi";
+    this.proposed = input.value = `${folder}${fileNameOf(this.robot.name)}${suffix}`;
   }
 
   private scheduleCheck(): void {
@@ -130,6 +197,7 @@ class RobotEditorPage {
       const checked = await call("POST /robot-editor/api/check", this.request());
       this.problems = checked.problems;
       this.robi = checked.robi ?? "";
+      this.chassis = checked.chassis ?? this.chassis;
       this.showProblems();
       if (checked.preview) {
         this.preview.show(checked.preview.scene, checked.preview, `robot:${this.origin}:${this.builtin}`);
@@ -184,6 +252,7 @@ class RobotEditorPage {
     const errors = this.problems.filter((p) => p.kind === "error").length;
     byId<HTMLButtonElement>("save").disabled = errors > 0;
     byId<HTMLButtonElement>("try").disabled = errors > 0;
+    byId<HTMLButtonElement>("add-to-scene").disabled = errors > 0;
   }
 
   /** A part picked in the preview: its section of the form comes into view, highlighted. */
@@ -231,7 +300,8 @@ class RobotEditorPage {
     }
   }
 
-  async save(overwrite: boolean): Promise<void> {
+  /** Saves the robot; the path saved (relative to the scene folder), or null when it was not. */
+  async save(overwrite: boolean): Promise<string | null> {
     const path = byId<HTMLInputElement>("save-path").value.trim();
     try {
       const saved = await call("POST /robot-editor/api/save", { ...this.request(), path, overwrite });
@@ -239,15 +309,41 @@ class RobotEditorPage {
       this.setStatus(`Saved ${saved.path}${saved.loads ? " (it loads" : " (it does not load"}` +
         `${warnings ? `, ${warnings} warning(s)` : ""})`);
       this.origin = saved.path;
+      return saved.loads ? saved.path : null;
     } catch (error) {
       if (error instanceof RouteError && error.status === 409 && !overwrite) {
-        if (window.confirm(`${path} exists. Overwrite it?`)) await this.save(true);
-        else this.setStatus(`Not saved: ${path} exists`);
-        return;
+        if (window.confirm(`${path} exists. Overwrite it?`)) return this.save(true);
+        this.setStatus(`Not saved: ${path} exists`);
+        return null;
       }
       this.setStatus(messageOf(error), true);
+      return null;
     }
   }
+
+  /** Saves the robot, then places it in the scene the simulator runs, on a free spot near the
+   *  floor's centre (the simulator moves it clear of walls and bodies); a running scene goes on. */
+  async addToScene(): Promise<void> {
+    const path = await this.save(false);
+    if (path === null) return;
+    try {
+      const before = await call("GET /scenes/state");
+      const { width, height } = before.items.floor;
+      // robot files are saved in the folder the simulator started in: the first scene root
+      const state = await call("POST /scenes/edit", {
+        op: "add-robot", file: { root: 0, path }, x: (width ?? 2000) / 2, y: (height ?? 2000) / 2, phi: 0,
+      });
+      const robot = state.items.robots[state.items.robots.length - 1];
+      if (!before.editing) await call("POST /scenes/edit", { editing: false });
+      this.setStatus(`Added to the scene as robot ${state.items.robots.length} at ` +
+        `(${Math.round(robot.x)}, ${Math.round(robot.y)})${state.moved ? ", clear of what was there" : ""}`);
+      this.added += 1;
+    } catch (error) {
+      this.setStatus(`Not added to the scene: ${messageOf(error)}`, true);
+    }
+  }
+
+  private added = 0; // robots added to the scene (tests wait for it)
 
   private setStatus(text: string, error = false): void {
     this.status.textContent = text;
@@ -265,6 +361,7 @@ class RobotEditorPage {
       screenOf: (point: number[]) => this.preview.screenOf(point),
       preview: () => this.lastPreview,
       drive: () => this.drive.last,
+      added: () => this.added,
       select: (pointer: string) => this.select(pointer),
       pointerOf,
     };

@@ -1,5 +1,6 @@
 // Forms generated from the published robot JSON Schema: one section per part, one field per value.
-// Nothing here knows a robot part by name, so a component the schema gains shows up by itself.
+// Nothing here knows a robot part by name, so a component the schema gains shows up by itself;
+// which values the robot's drive can use is the page's to say (`offered`).
 
 import { element } from "../dom";
 
@@ -42,6 +43,8 @@ export class SchemaForm {
     private readonly changed: ChangeHandler,
     /** Redraw the whole form (after a part was added or removed). */
     private readonly rebuild: () => void,
+    /** Whether a robot value or part (by its key) is offered; one not offered shows only while set. */
+    private readonly offered: (key: string) => boolean = () => true,
   ) {}
 
   resolve(schema: Schema): Schema {
@@ -61,6 +64,9 @@ export class SchemaForm {
     for (const [key, property] of Object.entries(this.root.properties ?? {})) {
       const schema = this.resolve(property);
       if (schema.const !== undefined) continue; // format and version: not for editing
+      const value = document[key];
+      const set = value !== undefined && value !== null && !(Array.isArray(value) && value.length === 0);
+      if (!this.offered(key) && !(set && isPart(schema, this))) continue; // a part stays while set: it can be removed
       if (isPart(schema, this)) {
         sections.push(this.part(key, schema, document));
       } else {

@@ -41,6 +41,9 @@ class DriveArchetype:
     # type has wheels; "" when other components move it. A name, not an import: declarations sit
     # below the physics (docs/architecture.md, "Layers"), robot/drives/ resolves it.
     component: str = ""
+    # The robot fields of drive-dependent parts (robot schema keys) this drive can use; the robot
+    # editor offers only these (an arm rides on wheels too: the Picker).
+    parts: tuple[str, ...] = ()
     # A warning (message, code) about a robot type of this drive that cannot move, else None.
     check: Callable[[RobotType], tuple[str, str] | None] = lambda robot: None
 

@@ -12,4 +12,4 @@ def check(robot) -> tuple[str, str] | None:
 
 DRIVE = DriveArchetype("arm", "ARM", noun="a manipulator arm on a fixed base", aliases=("arm_drive",),
                        machine_type=MachineType.PLATFORM, mounted=True,
-                       check=check)
+                       parts=("arm",), check=check)

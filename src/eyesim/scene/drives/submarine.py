@@ -9,4 +9,4 @@ def check(robot) -> tuple[str, str] | None:
 
 
 DRIVE = DriveArchetype("submarine", "SUBMARINE", noun="a submarine", aliases=("submarine_drive",), swims=True,
-                       check=check)
+                       parts=("thrusters", "buoyancy", "drag", "start_depth"), check=check)
