@@ -85,9 +85,10 @@ lint: $(INSTALLED)
 viewer:
 	cd web && npm ci --no-audit --no-fund && npm run build
 
-# Regenerate from protocol/protocol.json the protocol tables and the pass-through layers of the API
-# (eyebot.h declarations, C wrappers, eye modules), and from protocol/viewer.schema.json the viewer
-# channel's TypeScript types and parsers and the server's copy of its schema.
+# Regenerate from protocol/protocol.json the protocol tables, the pass-through layers of the API
+# (eyebot.h declarations, C wrappers, eye modules) and the RoBIOS constants (eyebot.h's defines,
+# eye/constants.py, eyesim/protocol/constants.py), and from protocol/viewer.schema.json the viewer
+# channel's TypeScript types and parsers and the package's copy of the schema.
 protocol:
 	$(PYTHON) protocol/generate.py
 

@@ -144,3 +144,11 @@ def test_the_generator_refuses_a_constant_it_cannot_write(entry, message):
     changed["constants"][-1]["constants"].append(entry)
     with pytest.raises(SystemExit, match=message):
         robios_constants.load(changed)
+
+
+def test_the_viewer_schemas_soft_keys_are_the_key_constants():
+    """The one copy left outside Python and C: the viewer schema (JSON, for the browser too) lists
+    the soft keys a key command may press; they must be KEY1..KEY4."""
+    schema = json.loads((ROOT / "protocol" / "viewer.schema.json").read_text())
+    keys = schema["$defs"]["KeyCommand"]["properties"]["key"]["enum"]
+    assert keys == [sim_constants.KEY1, sim_constants.KEY2, sim_constants.KEY3, sim_constants.KEY4]

@@ -1,9 +1,10 @@
-"""RoBIOS camera group: CAMInit/CAMRelease and colour and gray frames from the robot's camera.
+"""RoBIOS camera group: CAMInit and colour and gray frames from the robot's camera (CAMRelease only
+stops it: protocol.json's "calls").
 
 A frame is drawn, turned gray and encoded on the render thread (physics/render_worker.py), not on
 the simulation thread, which serves every program: CAMGet's reply is Deferred."""
 
-from eyesim.commands.errors import CommandError, require
+from eyesim.commands.errors import CommandError, component_of
 from eyesim.net.session import Deferred
 from eyesim.physics.render import to_gray
 from eyesim.protocol import constants, encode_image_reply
@@ -18,7 +19,7 @@ NAMES = ", ".join(f"{name} {value}" for name, value in CAMERA_RESOLUTIONS.items(
 
 
 def _camera(robot) -> Camera:
-    return require(robot.component(Camera), robot, "camera")
+    return component_of(robot, Camera)
 
 
 def _started(robot) -> Camera:
@@ -38,11 +39,6 @@ def cam_init(sim, robot, request):
     width, height = RESOLUTIONS[resolution]
     camera.start(width, height)
     return (0, width, height)
-
-
-def cam_release(sim, robot, request):
-    _camera(robot).stop()
-    return (0,)
 
 
 def cam_get(sim, robot, request):
@@ -68,7 +64,6 @@ def _image(robot, request, gray: bool) -> Deferred:
 
 HANDLERS = {
     "CAM_INIT": cam_init,
-    "CAM_RELEASE": cam_release,
     "CAM_GET": cam_get,
     "CAM_GET_GRAY": cam_get_gray,
 }

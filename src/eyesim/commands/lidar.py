@@ -1,11 +1,12 @@
-"""RoBIOS LIDAR group: the scanner's field, tilt and beam count, and one scan per LIDARGet."""
+"""RoBIOS LIDAR group: the scanner's field, tilt and beam count (LIDARGet and SIMLaserScan only take
+a scan, an int32 array encoded as it is: protocol.json's "calls")."""
 
-from eyesim.commands.errors import CommandError, require
+from eyesim.commands.errors import CommandError, component_of
 from eyesim.robot.components.lidar import MAX_POINTS, LidarScanner
 
 
 def _scanner(robot) -> LidarScanner:
-    return require(robot.component(LidarScanner), robot, "lidar")
+    return component_of(robot, LidarScanner)
 
 
 def lidar_set(sim, robot, request):
@@ -20,12 +21,4 @@ def lidar_set(sim, robot, request):
     return (0,)
 
 
-def lidar_get(sim, robot, request):
-    return (0, _scanner(robot).scan())  # int32 array: encoded without a list
-
-
-def sim_laser_scan(sim, robot, request):
-    return (0, _scanner(robot).laser_scan())
-
-
-HANDLERS = {"LIDAR_SET": lidar_set, "LIDAR_GET": lidar_get, "SIM_LASER_SCAN": sim_laser_scan}
+HANDLERS = {"LIDAR_SET": lidar_set}

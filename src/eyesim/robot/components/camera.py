@@ -24,6 +24,7 @@ class Camera(Component):
     """Pan turns the camera left (positive) or right about the robot's z axis, tilt then raises
     (positive) or lowers it; both in degrees from looking straight ahead."""
 
+    noun = "camera"
     def __init__(self, spec: CameraSpec, context):
         self.spec = spec
         self.robot = context.robot

@@ -28,6 +28,8 @@ class LidarScanner(Component):
     plane is tilted about the robot's y axis: a positive tilt lowers the front beams and
     raises the back ones."""
 
+    noun = "lidar"
+
     def __init__(self, spec: LidarSpec, context):
         self.spec = spec
         self.robot = context.robot
