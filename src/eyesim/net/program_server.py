@@ -18,7 +18,10 @@ its replies for STALL_TIMEOUT, or lets them pile up beyond MAX_BACKLOG, is disco
 logged reason, and its buffers are given back. A run holds at most MAX_CONNECTIONS connections
 (past it, the oldest that has not said HELLO makes room, or the new one is refused, and logged);
 one that has not sent its handshake within HANDSHAKE_TIMEOUT is closed; and when the process runs out of descriptors, accepting rests for a second instead of
-spinning on a listener it cannot serve."""
+spinning on a listener it cannot serve. A connection whose socket is not being read cannot see its
+program close it (the end of the stream waits behind unread requests): on Linux the socket's TCP
+state shows it, looked at once a second, so a program that pipelined blocking calls and left
+frees its robot and descriptor."""
 
 from __future__ import annotations
 
@@ -45,11 +48,23 @@ STALL_TIMEOUT = 30.0  # s a program may leave its replies unread (a debugger's b
 MAX_CONNECTIONS = 256  # open program connections of one run (a class's robots are far fewer)
 HANDSHAKE_TIMEOUT = 5.0  # s from connecting to the HELLO before a connection is closed
 ACCEPT_REST = 1.0  # s the listeners rest after the process ran out of file descriptors
+TCP_CLOSE_WAIT = 8  # Linux's TCP state once the peer has closed its end (include/net/tcp_states.h)
 
 
 def version_refusal(version: int) -> str:
     return (f"protocol version {version} is not supported; this simulator speaks version {g.VERSION} "
             f"(rebuild the program with this EyeSim's `eyesim cc`)")
+
+
+def peer_closed(sock: socket.socket) -> bool:
+    """Whether the program has closed its end, seen without reading the socket; False where the
+    system does not tell (only Linux has TCP_INFO)."""
+    if not hasattr(socket, "TCP_INFO"):
+        return False
+    try:
+        return sock.getsockopt(socket.IPPROTO_TCP, socket.TCP_INFO, 1)[0] == TCP_CLOSE_WAIT
+    except OSError:
+        return False
 
 
 def hello_version(message) -> int | None:
@@ -127,7 +142,7 @@ class ProgramConnection:
     def _take(self, data: bytes) -> None:
         """Decode requests up to the queue limit; the rest stays buffered until there is room."""
         try:
-            messages = self.decoder.feed(data, limit=MAX_QUEUED - self._held())
+            messages = self.decoder.feed(data, limit=MAX_QUEUED - self.held())
         except ProtocolError as error:
             log.warning("%s: %s; closing the connection", self.session.peer, error)
             self.send(encode_error(0, 0, error.code, str(error)))
@@ -171,13 +186,16 @@ class ProgramConnection:
             self._take(b"")
         self.update_interest()
 
-    def _held(self) -> int:
+    def reading(self) -> bool:
+        return bool(self._events & READ)
+
+    def held(self) -> int:
         """Requests of this program the simulation holds: queued, and waiting in blocking calls
         (5,000 pipelined KEYWait requests were once all taken)."""
         return len(self.session.queued) + len(self.session.pending)
 
     def _has_room(self) -> bool:
-        return self._held() < MAX_QUEUED and self.backlog.size < READ_PAUSE_BACKLOG
+        return self.held() < MAX_QUEUED and self.backlog.size < READ_PAUSE_BACKLOG
 
     def update_interest(self) -> None:
         """Read while the program's queue and unread replies are small; write while replies wait."""
@@ -304,6 +322,10 @@ class ProgramSockets:
             elif connection.session.robot is None and now - connection.connected_at > self.handshake_timeout:
                 log.warning("%s: sent no handshake within %g s; closing the connection",
                             connection.session.peer, self.handshake_timeout)
+                connection.close()
+            elif not connection.reading() and peer_closed(connection.sock):
+                log.warning("%s: closed its connection while %d of its calls waited; closing it here too",
+                            connection.session.name, connection.held())
                 connection.close()
 
     def _evict_silent(self) -> bool:
