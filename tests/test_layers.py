@@ -1,9 +1,11 @@
-"""The package's layers: no import cycle between eyesim's top-level parts.
+"""The package's layers: no import cycle between eyesim's top-level parts, nor between modules.
 
 A static scan with `ast` of every `import eyesim.X` / `from eyesim.X import ...` in the package,
 lazy imports inside functions included, grouped by top-level part (a subpackage such as
 `eyesim.robot`, or a root module such as `eyesim.paths`). The part graph must have no cycle, and
 each part may import only parts on a lower layer of LAYERS (docs/architecture.md, "Layers").
+Inside a part, the module graph must have no cycle either (imports under `if TYPE_CHECKING:` aside:
+they never run).
 """
 
 import ast
@@ -74,6 +76,37 @@ def part_imports() -> dict[tuple[str, str], list[str]]:
     return edges
 
 
+def module_name(path: Path) -> str:
+    names = list(path.relative_to(PACKAGE.parent).with_suffix("").parts)
+    return ".".join(names[:-1] if names[-1] == "__init__" else names)
+
+
+def for_type_checkers(tree: ast.AST) -> set[int]:
+    """The nodes under `if TYPE_CHECKING:` (ids)."""
+    return {id(inner) for node in ast.walk(tree)
+            if isinstance(node, ast.If) and "TYPE_CHECKING" in ast.unparse(node.test) for inner in ast.walk(node)}
+
+
+def module_imports() -> dict[tuple[str, str], list[str]]:
+    """(importing module, imported module) -> the places; `from package import name` counts as an
+    import of the submodule when `name` is one, else of the package."""
+    paths = {module_name(path): path for path in sorted(PACKAGE.rglob("*.py"))}
+    edges: dict[tuple[str, str], list[str]] = defaultdict(list)
+    for module, path in paths.items():
+        tree = ast.parse(path.read_text(), str(path))
+        skipped = for_type_checkers(tree)
+        for node in ast.walk(tree):
+            if id(node) in skipped:
+                continue
+            names = [alias.name for alias in node.names] if isinstance(node, ast.ImportFrom) else [""]
+            for target in imported_modules(node, module, path.name == "__init__.py"):
+                for name in names:
+                    imported = f"{target}.{name}" if f"{target}.{name}" in paths else target
+                    if imported in paths and imported != module:
+                        edges[(module, imported)].append(f"{path.relative_to(PACKAGE.parent)}:{node.lineno}")
+    return edges
+
+
 def cycles(edges) -> list[list[str]]:
     graph = defaultdict(set)
     for a, b in edges:
@@ -104,6 +137,22 @@ def test_no_import_cycle_between_parts():
     found = cycles(edges)
     pairs = sorted({(c[i], c[i + 1]) for c in found for i in range(len(c) - 1)})
     assert not found, "import cycles: " + "; ".join(" -> ".join(c) for c in found) + "\n" + describe(edges, pairs)
+
+
+def test_no_import_cycle_between_modules():
+    edges = module_imports()
+    found = cycles(edges)
+    pairs = sorted({(c[i], c[i + 1]) for c in found for i in range(len(c) - 1)})
+    assert not found, "import cycles: " + "; ".join(" -> ".join(c) for c in found) + "\n" + describe(edges, pairs)
+
+
+def test_the_module_scan_finds_a_cycle_and_ignores_type_checking_imports():
+    """The check above can fail: a cycle of two modules is found; an import for type checkers is not one."""
+    edges = {("a", "b"): ["a.py:1"], ("b", "a"): ["b.py:3"], ("b", "c"): ["b.py:4"]}
+    assert cycles(edges) == [["a", "b", "a"]]
+    tree = ast.parse("from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n    from eyesim.core import engine\n")
+    imports = [node for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)]
+    assert [id(node) in for_type_checkers(tree) for node in imports] == [False, True]
 
 
 def test_every_part_has_a_layer():

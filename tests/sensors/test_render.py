@@ -14,7 +14,7 @@ from support.scenes import arena
 from support.simulator import running_simulation
 
 from eyesim.core.engine import Simulation
-from eyesim.physics import render, render_gl
+from eyesim.physics import render_gl, renderer_choice
 from eyesim.physics.render_raycast import RayCastRenderer
 from eyesim.robot.components.camera import Camera
 from eyesim.scene.description import Wall
@@ -144,7 +144,7 @@ def test_no_image_is_rendered_unless_a_program_asks(monkeypatch):
             calls.append(view)
             return np.zeros((view.height, view.width, 3), dtype=np.uint8)
 
-    monkeypatch.setattr(render, "camera_renderer", lambda: Counting())
+    monkeypatch.setattr(renderer_choice, "camera_renderer", lambda: Counting())
     with running_simulation(arena(robots=((500, 500, 0), (1500, 500, 0))), "deterministic", expect=(1,)) as (sim, port):
         client = ProgramClient(port)
         client.hello("1")
@@ -160,8 +160,8 @@ def test_no_image_is_rendered_unless_a_program_asks(monkeypatch):
 def test_without_opengl_the_ray_caster_takes_over_with_a_notice():
     env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
     env["MUJOCO_GL"] = "glfw"  # GLFW cannot make a context without a display
-    result = subprocess.run([sys.executable, "-c", "from eyesim.physics import render; "
-                             "print(render.camera_renderer().name)"], capture_output=True, text=True, env=env)
+    result = subprocess.run([sys.executable, "-c", "from eyesim.physics import renderer_choice; "
+                             "print(renderer_choice.camera_renderer().name)"], capture_output=True, text=True, env=env)
     assert result.stdout.strip() == "raycast"
     notices = [line for line in result.stderr.splitlines() if line.startswith("eyesim:")]
     assert notices == ["eyesim: no OpenGL context (tried glfw); cameras use the CPU ray caster"]

@@ -15,7 +15,7 @@ from support.scenes import arena
 from support.rooms import square_room, write_scene
 from support.simulator import running_simulation
 
-from eyesim.physics import render
+from eyesim.physics import renderer_choice
 from eyesim.protocol import generated as g
 
 CAM5MP = 5
@@ -43,8 +43,8 @@ class GatedRenderer:
 
 @pytest.fixture
 def gated(monkeypatch):
-    renderer = GatedRenderer(render.camera_renderer)
-    monkeypatch.setattr(render, "camera_renderer", lambda: renderer)
+    renderer = GatedRenderer(renderer_choice.camera_renderer)
+    monkeypatch.setattr(renderer_choice, "camera_renderer", lambda: renderer)
     yield renderer
     renderer.gate.set()
 
@@ -137,7 +137,7 @@ def test_a_frame_that_cannot_be_drawn_is_an_error_reply_and_the_simulation_goes_
         def render(self, world, view, data=None):
             raise RuntimeError("the renderer broke")
 
-    monkeypatch.setattr(render, "camera_renderer", lambda: Broken())
+    monkeypatch.setattr(renderer_choice, "camera_renderer", lambda: Broken())
     with running_simulation(arena(robots=((500, 500, 0), (1500, 500, 180))), "realtime") as (sim, port):
         camera, other = ProgramClient(port), ProgramClient(port)
         camera.hello("1")

@@ -1,16 +1,13 @@
-"""Camera images of the MuJoCo world: what a view is, how it is lit, and which renderer draws it.
+"""Camera images of the MuJoCo world: what a view is and how it is lit, shared by both renderers.
 
 Two renderers draw the same picture: MuJoCo's OpenGL renderer (render_gl.py) wherever an OpenGL
-context can be made, and a CPU ray caster (render_raycast.py) everywhere else. The choice is made
-once per process, on the first camera use, and announced in one line on stderr. The simulator
-draws on its render thread (render_worker.py), off the simulation thread."""
+context can be made, and a CPU ray caster (render_raycast.py) everywhere else; which one a process
+uses is renderer_choice.py's. The simulator draws on its render thread (render_worker.py), off the
+simulation thread."""
 
 from __future__ import annotations
 
 import logging
-import os
-import sys
-import threading
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -27,9 +24,6 @@ TOP_LIGHT_DIFFUSE = 0.5
 BACKGROUND = (0, 0, 0)  # what a ray that hits nothing shows
 NEAR = 0.005  # m: nearest distance a camera sees
 FAR = 50.0  # m
-
-# MUJOCO_GL values that switch OpenGL off (as MuJoCo reads them).
-GL_OFF = ("disable", "disabled", "off", "false", "0")
 
 
 @dataclass(frozen=True)
@@ -122,49 +116,3 @@ def to_gray(image: np.ndarray) -> np.ndarray:
     total += image[..., 2]
     total //= 3
     return total.astype(np.uint8)
-
-
-# -- choosing the renderer -----------------------------------------------------------------------
-_lock = threading.Lock()
-_renderer = None
-
-
-def camera_renderer():
-    """The process's renderer: OpenGL when a context can be made, else the ray caster. Chosen and
-    used on the render thread (render_worker.py): an OpenGL renderer draws on the thread that made it."""
-    global _renderer
-    with _lock:
-        if _renderer is None:
-            _renderer = _choose()
-        return _renderer
-
-
-def close_renderer() -> None:
-    """Free the process's renderer (the render thread calls it as the process ends)."""
-    global _renderer
-    with _lock:
-        if _renderer is not None and hasattr(_renderer, "close"):
-            _renderer.close()
-        _renderer = None
-
-
-def _choose():
-    from eyesim.physics import render_gl
-    from eyesim.physics.render_raycast import RayCastRenderer
-
-    requested = os.environ.get("MUJOCO_GL", "").strip().lower()
-    if requested in GL_OFF:
-        _notice(f"cameras use the CPU ray caster (MUJOCO_GL={requested})")
-        return RayCastRenderer()
-    try:
-        backend = render_gl.choose_backend(requested)
-        renderer = render_gl.GlRenderer(backend)
-    except render_gl.NoOpenGL as error:
-        _notice(f"no OpenGL context ({error}); cameras use the CPU ray caster")
-        return RayCastRenderer()
-    log.info("cameras render with OpenGL (%s)", backend)
-    return renderer
-
-
-def _notice(text: str) -> None:
-    print(f"eyesim: {text}", file=sys.stderr, flush=True)

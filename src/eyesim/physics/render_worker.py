@@ -8,7 +8,7 @@ the camera's view; here, the image drawn from that copy and turned into its repl
 therefore the same whenever it is drawn, which keeps deterministic runs bit-identical.
 
 One thread for the whole process, started by the first camera: it chooses the renderer
-(render.camera_renderer; the OpenGL probe and context are made here, and the context stays with
+(renderer_choice.camera_renderer; the OpenGL probe and context are made here, and the context stays with
 this thread) and draws frames in the order they come. A thread per camera or per CAMInit gave the
 allocator an arena per thread whose freed memory stayed. The thread is not a daemon: when the
 main thread ends it finishes what it is doing, frees the renderer and ends before the interpreter
@@ -26,7 +26,7 @@ from typing import Callable
 import mujoco
 import numpy as np
 
-from eyesim.physics import render
+from eyesim.physics import render, renderer_choice
 
 log = logging.getLogger("eyesim")
 
@@ -71,7 +71,7 @@ class Frame:
             if self.cancelled:
                 self.error = "not drawn: nobody waits for it any more"
             else:
-                self.image = render.camera_renderer().render(self.world, self.view, self.data)
+                self.image = renderer_choice.camera_renderer().render(self.world, self.view, self.data)
                 self.result = self.finish(self.image)
         except Exception:
             self.error = traceback.format_exc()
@@ -151,12 +151,12 @@ def _run() -> None:
             job._draw()
         else:
             _prepare(*job)
-    render.close_renderer()
+    renderer_choice.close_renderer()
 
 
 def _prepare(world, width: int, height: int) -> None:
     try:
-        renderer = render.camera_renderer()
+        renderer = renderer_choice.camera_renderer()
         if hasattr(renderer, "prepare"):
             renderer.prepare(world, width, height)
     except Exception:  # the first frame meets the same problem and reports it
