@@ -196,3 +196,35 @@ def test_inspector_snapping_moved_clear_clean_save_and_one_recording(browser_con
         assert len(end) == 2
         for recorded, placed in zip(end, edited["robots"]):  # standing where they were put, give or take a mm
             assert abs(recorded["pos"][0] * 1000 - placed["x"]) < 2 and abs(recorded["pos"][1] * 1000 - placed["y"]) < 2
+
+
+def test_a_drop_with_no_free_place_near_it_is_refused_and_the_object_goes_back(browser_context, tmp_path):
+    """A can dropped into the middle of a block of S4s 10 mm apart (no room for it within five of
+    its sizes): refused with the reason, and the can is back where it was."""
+    robots = "".join(f"S4 {600 + 190 * i} {500 + 160 * j} 0\n" for i in range(5) for j in range(6))
+    (tmp_path / "block.sim").write_text(f"{robots}Can 1700 1700 0\n")
+    with simulator_with_viewer("block.sim", cwd=tmp_path) as (_, url):
+        viewer = open_viewer(browser_context, url)
+        page = viewer.page
+        page.set_default_timeout(SLOW)
+        page.select_option("#view-mode", "top")
+        page.click("#edit-scene")
+        page.wait_for_selector("#editor:not([hidden])")
+        page.wait_for_function("() => window.eyesimEditor.current?.editing")
+        count = edits(page)
+        start, end = screen_of(page, 1700 + 10, 1700 + 10), screen_of(page, 970 + 10, 900 + 10)
+        page.mouse.move(*start)
+        page.mouse.down()
+        page.mouse.move(*end, steps=6)
+        # the physics has the can in the block while the button is down
+        page.wait_for_function("() => Math.abs((window.eyesimViewer.objectPose(1)?.pos[0] ?? 0) - 0.97) < 0.01")
+        page.mouse.up()
+        wait_for_edits(page, count + 1)
+        message = page.inner_text("#editor-message")
+        assert "object 'Can' at (970, 900) overlaps robot 'S4' and there is no free place within 5 of its sizes" \
+            in message, message
+        assert state(page)["items"]["objects"][0]["x"] == 1700
+        page.wait_for_function("() => { const p = window.eyesimViewer.objectPose(1)?.pos;"
+                               " return p && Math.abs(p[0] - 1.7) < 0.002 && Math.abs(p[1] - 1.7) < 0.002; }")
+        save_screenshot(page, "scene-inspector-4-refused")
+        assert viewer.errors == []
