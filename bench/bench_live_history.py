@@ -1,4 +1,4 @@
-"""What the viewer's live history (eyesim/web/live_history.py) costs the process it lives in: the
+"""What the viewer's live history (eyesim/record/live_history.py) costs the process it lives in: the
 pause of a full pass of Python's garbage collector over it (measured with gc.callbacks, as a
 collection happens on its own in a running simulator), its memory, and what scrubbing back costs
 (a frame, the paths, a plotted series).
@@ -20,8 +20,8 @@ import tracemalloc
 
 from common import print_table, write_results
 
-from eyesim.web.live_history import HISTORY_SECONDS, LiveHistory
-from eyesim.web.timeline import FrameCursor, answer
+from eyesim.record.live_history import HISTORY_SECONDS, LiveHistory
+from eyesim.record.timeline import FrameCursor, answer
 
 SNAPSHOTS_PER_SECOND = 30
 

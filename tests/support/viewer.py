@@ -8,7 +8,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 from support.simulator import running_simulation
 
-from eyesim.net.io_thread import IoThread
+from eyesim.web.io_thread import IoThread
 from eyesim.web.server import ViewerServer
 
 

@@ -21,7 +21,7 @@ from support.programs import simulator_with_viewer  # noqa: E402
 from support.scenes import arena  # noqa: E402
 from support.simulator import running_simulation  # noqa: E402
 
-from eyesim.net.io_thread import IoThread  # noqa: E402
+from eyesim.web.io_thread import IoThread  # noqa: E402
 from eyesim.programs.launcher import Launcher  # noqa: E402
 from eyesim.protocol.channel_schema import ROUTES, route_answer_problems  # noqa: E402
 from eyesim.web.scene_files import SceneRoots  # noqa: E402

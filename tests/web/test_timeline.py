@@ -18,8 +18,8 @@ from support.recordings import record_tour  # noqa: E402
 
 from eyesim.protocol.channel_schema import server_message_problems
 from eyesim.record import Recording
-from eyesim.web.live_history import LiveHistory
-from eyesim.web.timeline import FrameCursor, RecordingTimeline, answer
+from eyesim.record.live_history import LiveHistory
+from eyesim.record.timeline import FrameCursor, RecordingTimeline, answer
 
 
 @pytest.fixture(scope="module")

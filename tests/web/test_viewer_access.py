@@ -20,7 +20,7 @@ from support.scenes import arena  # noqa: E402
 from support.simulator import running_simulation  # noqa: E402
 from support.viewer import run_async, viewer_simulation  # noqa: E402
 
-from eyesim.net.io_thread import IoThread  # noqa: E402
+from eyesim.web.io_thread import IoThread  # noqa: E402
 from eyesim.web.access import AccessPolicy, is_loopback  # noqa: E402
 from eyesim.web.server import ViewerServer  # noqa: E402
 

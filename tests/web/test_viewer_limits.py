@@ -13,9 +13,9 @@ from support.client import ProgramClient
 from support.scenes import arena
 from support.viewer import run_async, viewer_simulation
 
-from eyesim.web.live_history import MAX_CHUNKS, LiveHistory
+from eyesim.record.live_history import MAX_CHUNKS, LiveHistory
 from eyesim.web.server import CONSOLE_BACKLOG, MAX_COMMAND_BYTES, PANEL_CHARACTERS
-from eyesim.web.timeline import STREAM_BACKLOG
+from eyesim.record.timeline import STREAM_BACKLOG
 
 
 @pytest.fixture
@@ -100,7 +100,7 @@ def test_long_console_chunks_are_cut_and_late_browsers_get_the_last_500(viewer_s
 
 
 def test_the_live_history_keeps_2000_chunks_per_robot_and_a_frame_carries_500():
-    from eyesim.web.timeline import FrameCursor
+    from eyesim.record.timeline import FrameCursor
 
     history = LiveHistory([1])
     history.add_snapshot({"type": "snapshot", "time": 0.0, "robots": [], "objects": [], "bodies": []}, [])

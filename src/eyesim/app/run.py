@@ -212,7 +212,7 @@ def simulate(args, cleanup: contextlib.ExitStack) -> int:
     if not args.headless:
         from eyesim.web.server import ViewerServer
 
-        from eyesim.net.io_thread import IoThread  # the viewer's asyncio: not imported by headless runs
+        from eyesim.web.io_thread import IoThread  # the viewer's asyncio: not imported by headless runs
 
         io = IoThread()
         io.start()

@@ -28,7 +28,7 @@ from eyesim.paths import CASE_RECORDING as RECORDING
 from eyesim.protocol import channel_schema
 from eyesim.record.recording import Recording, RecordingError
 from eyesim.viewer import messages
-from eyesim.web import timeline
+from eyesim.record import timeline
 from eyesim.web.access import AccessPolicy
 from eyesim.web.server import MAX_COMMAND_BYTES, TEXTURE_TYPES, _reject_constant, serve_app, static_file, viewer_url
 

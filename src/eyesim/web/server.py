@@ -27,9 +27,9 @@ from eyesim.protocol import generated as g
 from eyesim.protocol import channel_schema
 from eyesim.record.sampling import robot_state
 from eyesim.viewer import mesh_message, messages
-from eyesim.web import timeline
+from eyesim.record import timeline
 from eyesim.web.access import AccessPolicy
-from eyesim.web.live_history import LiveHistory
+from eyesim.record.live_history import LiveHistory
 from eyesim.web.program_control import ProgramControl
 from eyesim.web.program_sources import ProgramSources
 from eyesim.web.robot_editor import RobotEditor

@@ -16,7 +16,7 @@ from collections import defaultdict
 
 import numpy as np
 
-from eyesim.web.timeline import EventIndex
+from eyesim.record.timeline import EventIndex
 
 HISTORY_SECONDS = 120
 MAX_IMAGES = 1500  # per robot and kind: bounds memory when a program redraws its LCD all the time
@@ -57,7 +57,7 @@ class EncodedSamples:
 
 
 class LiveHistory:
-    """A timeline source (eyesim/web/timeline.py) over the last HISTORY_SECONDS; used on the I/O loop."""
+    """A timeline source (eyesim/record/timeline.py) over the last HISTORY_SECONDS; used on the I/O loop."""
 
     def __init__(self, robot_ids: list[int], seconds: float = HISTORY_SECONDS):
         self.robot_ids = list(robot_ids)

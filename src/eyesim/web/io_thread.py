@@ -1,4 +1,4 @@
-"""The I/O thread: one asyncio event loop that serves programs and browsers for the simulation."""
+"""The viewer's I/O thread: one asyncio event loop that serves the browsers (web/server.py)."""
 
 from __future__ import annotations
 
