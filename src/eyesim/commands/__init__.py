@@ -46,14 +46,16 @@ def calling(op: OpSpec):
     if not callable(method) or not cls.noun:
         raise RuntimeError(f"{op.name} calls {op.calls}: {class_name} needs the method and a noun")
     result_first = op.reply[0][0] == "result"
-    returns_value = len(op.reply) > result_first
+    if len(op.reply) > 2 or len(op.reply) == 2 and not result_first:
+        raise RuntimeError(f"{op.name} calls {op.calls}: a call's reply is a result, a value, or both")
+    # The reply's shape, chosen once: the method's value, after a 0 for a "result" field.
+    shape = (lambda value: (0, value)) if len(op.reply) == 2 else (lambda value: (0,)) if result_first \
+        else (lambda value: (value,))
 
     def handler(sim, robot, request):
         component = component_of(robot, cls)
         with checked_arguments():
-            value = method(component, *request.args)
-        reply = (value,) if returns_value else ()
-        return (0, *reply) if result_first else reply
+            return shape(method(component, *request.args))
 
     return handler
 
