@@ -79,13 +79,13 @@ def cases_cpu(out: Path) -> float:
     return sum(case["timing"].get("cpu_seconds", 0.0) for student in report["students"] for case in student["cases"])
 
 
-def case_times(out: Path) -> dict[str, list[float]]:
-    """Seconds per case inside the grader, by the submission's variant status."""
+def case_times(out: Path, entry: str = "case_seconds") -> dict[str, list[float]]:
+    """Seconds per case inside the grader (or its CPU seconds, `entry` cpu_seconds), by status."""
     report = json.loads((out / "report.json").read_text())
     times: dict[str, list[float]] = {}
     for student in report["students"]:
         for case in student["cases"]:
-            times.setdefault(case["status"], []).append(case["timing"]["case_seconds"])
+            times.setdefault(case["status"], []).append(case["timing"].get(entry, float("nan")))
     return times
 
 
@@ -116,13 +116,16 @@ def main() -> None:
             out = tmp / name.replace(" ", "").replace(",", "-").replace(":", "")
             seconds, cpu = timed(eyesim("grade", str(spec), str(tmp / "submissions"), "--out", str(out), "--fresh",
                                    *options), tmp)
-            if sandbox.bwrap() is not None:
-                cpu += cases_cpu(out)
+            in_cases = cases_cpu(out) if sandbox.bwrap() is not None else 0.0
+            grader_cpu, cpu = cpu, cpu + in_cases
             runs[name] = {"seconds": seconds, "cases": 2 * args.count,
                           "submissions_per_minute": args.count / seconds * 60, "cpu_seconds": cpu,
+                          "grader_cpu_seconds": grader_cpu, "cases_cpu_seconds": in_cases,
                           "cpu_bound_submissions_per_minute": 2 * 60 * args.count / cpu,
                           "case_seconds": {status: statistics.fmean(values)
                                            for status, values in case_times(out).items()},
+                          "case_cpu_seconds": {status: statistics.fmean(values)
+                                               for status, values in case_times(out, "cpu_seconds").items()},
                           "scores": {s["name"]: s["score"] for s in json.loads((out / "report.json").read_text())["students"]}}
         first = next(iter(runs.values()))["scores"]
         identical = all(run["scores"] == first for run in runs.values())
@@ -141,8 +144,12 @@ def main() -> None:
                            "ok case in grader", "x alone"))
         print(f"scaling 1 -> 2 workers: {results['scaling_1_to_2']:.2f}x; identical scores: {identical}")
         for name, run in runs.items():
+            print(f"  {name}: CPU seconds of the grader {run['grader_cpu_seconds']:.1f}, "
+                  f"of the cases {run['cases_cpu_seconds']:.1f}")
             print(f"  {name}: mean seconds per case by status: "
                   + ", ".join(f"{k} {v:.2f}" for k, v in sorted(run["case_seconds"].items())))
+            print(f"  {name}: mean CPU seconds per case by status: "
+                  + ", ".join(f"{k} {v:.2f}" for k, v in sorted(run["case_cpu_seconds"].items())))
         print(f"results: {write_results('grading', results)}")
 
 

@@ -194,3 +194,45 @@ def test_the_compiler_runs_with_limits(classes):
     case = case_of(classes["mixed"], "hostile_devzero")
     assert case["status"] == "compile_error"
     assert case["timing"]["case_seconds"] < 60
+
+
+LEAVER = r"""#include "eyebot.h"
+#include <stdio.h>
+int main(void) {
+  const char *places[] = {"/tmp/left", "/run/left", "/dev/shm/left", "../../../left", "left"};
+  int made = 0;
+  for (int i = 0; i < 5; i++) { FILE *f = fopen(places[i], "w"); if (f) { fputs("x", f); fclose(f); made++; } }
+  LCDPrintf("left %d done", made);
+  return 0;
+}"""
+
+FINDER = r"""#include "eyebot.h"
+#include <dirent.h>
+#include <string.h>
+#include <unistd.h>
+int main(void) {
+  const char *places[] = {"/tmp/left", "/run/left", "/dev/shm/left", "../../../left", "left"};
+  int found = 0, others = 0;
+  for (int i = 0; i < 5; i++) found += access(places[i], F_OK) == 0;
+  char here[4096];
+  getcwd(here, sizeof here);
+  DIR *up = opendir("../../..");  /* where the cases' folders are made: the grader's, or a warm runner's */
+  for (struct dirent *e; up && (e = readdir(up));)
+    if ((!strncmp(e->d_name, "case", 4) || !strncmp(e->d_name, "eyesim-", 7)) && !strstr(here, e->d_name)) others++;
+  LCDPrintf("found %d others %d done", found, others);
+  return 0;
+}"""
+
+
+def test_one_case_leaves_nothing_for_the_next(tmp_path):
+    """Graded one after the other by one worker (a warm runner's cases, where the grader is root):
+    what the first case wrote is not there for the second, nor are other cases' folders."""
+    (tmp_path / "spec.toml").write_text(SPEC)
+    write_submission(tmp_path / "class", "a_leaver", LEAVER)
+    write_submission(tmp_path / "class", "b_finder", FINDER)
+    done = grade(str(tmp_path / "spec.toml"), str(tmp_path / "class"), "--out", str(tmp_path / "out"),
+                 "--workers", "1", cwd=tmp_path)
+    assert done.returncode == 0, done.stdout + done.stderr
+    report = json.loads((tmp_path / "out" / "report.json").read_text())
+    assert lcd(report, "a_leaver") == "left 1 done"  # only in its own folder
+    assert lcd(report, "b_finder") == "found 0 others 0 done"

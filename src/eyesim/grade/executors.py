@@ -6,8 +6,10 @@ results as they finish; a case process gives the same result wherever it runs.""
 from __future__ import annotations
 
 import os
+import threading
 from concurrent.futures import ThreadPoolExecutor, as_completed
 
+from eyesim.grade import warm
 from eyesim.grade.isolation import failed_result, kill_running, run_case_isolated
 
 
@@ -24,18 +26,37 @@ class ExecutorError(Exception):
 
 
 class LocalPool:
-    """Threads that each wait on one case process at a time: `workers` processes at once."""
+    """Threads that each wait on one case process at a time: `workers` processes at once. Where
+    warm runners can be used (warm.py), each thread forks its cases from a runner of its own."""
 
     def __init__(self, workers: int | None = None):
         self.workers = workers or os.cpu_count() or 1
         self.description = f"local pool of {self.workers} worker(s)"
         self._pool: ThreadPoolExecutor | None = None
+        self._warm = warm.usable()
+        self._local = threading.local()
+        self._runners: list[warm.Runner] = []
+        self._runners_lock = threading.Lock()
 
     def run(self, tasks: list[dict]):
         self._pool = ThreadPoolExecutor(self.workers)
-        futures = {self._pool.submit(run_case_isolated, task): task for task in tasks}
+        futures = {self._pool.submit(self._run, task): task for task in tasks}
         for future in as_completed(futures):
             yield _result(futures[future], future)
+
+    def _run(self, task: dict) -> dict:
+        if not self._warm:
+            return run_case_isolated(task)
+        try:
+            runner = getattr(self._local, "runner", None)
+            if runner is None or runner.process.poll() is not None:  # the first case, or a case overran
+                runner = self._local.runner = warm.Runner()
+                with self._runners_lock:
+                    self._runners.append(runner)
+            return run_case_isolated(task, runner)
+        except warm.RunnerFailed:
+            self._warm = False  # the cases start cold, each in a bwrap sandbox of its own
+            return run_case_isolated(task)
 
     def close(self, abort: bool = False) -> None:
         """With `abort` (an interrupted run), cases still running are killed, not waited for."""
@@ -44,6 +65,10 @@ class LocalPool:
                 self._pool.shutdown(wait=False, cancel_futures=True)
                 kill_running()
             self._pool.shutdown(wait=True, cancel_futures=True)
+        with self._runners_lock:
+            runners, self._runners = self._runners, []
+        for runner in runners:
+            runner.close()
 
 
 class DaskCluster:

@@ -1,8 +1,9 @@
 """Running one case in a process of its own, wherever this function is called: in a thread of
 the local pool or in a Dask worker. The case process has its own port, its own temporary
 directory and its own process group (a job on Windows), and on Linux with bubblewrap a sandbox of
-its own (sandbox.py); when it overruns its case's wall-clock limit by HARD_MARGIN it is killed
-with everything in it, and the case is reported, not lost.
+its own (sandbox.py), or namespaces of its own when a warm runner forked it (warm.py); when it
+overruns its case's wall-clock limit by HARD_MARGIN it is killed with everything in it (a warm
+runner with it), and the case is reported, not lost.
 
 The case process answers with JSON on its standard output, never with a file in its work folder
 (which the submission could rewrite) nor with a pickle (which would run code in the grader). What
@@ -11,9 +12,11 @@ the grader knows itself (student, case, weight, key) it does not take from the a
 from __future__ import annotations
 
 import base64
+import contextlib
 import json
 import os
 import pickle
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -22,7 +25,7 @@ import time
 from pathlib import Path
 
 from eyesim import platform
-from eyesim.grade import sandbox
+from eyesim.grade import sandbox, warm
 
 HARD_MARGIN = 60.0  # s beyond the case's own watchdog (which stops programs gently) before killing
 CASE_PROCESSES = 256  # processes and threads a sandboxed case's user may have (simulator threads included)
@@ -47,8 +50,9 @@ def failed_result(task: dict, status: str, message: str) -> dict:
             "status": status, "score": 0.0, "checks": _not_run(case, message), "error": message, "artifacts": {}}
 
 
-def run_case_isolated(task: dict) -> dict:
-    """Grade one submission x case in a fresh `python -m eyesim.grade.case_run`; returns its result."""
+def run_case_isolated(task: dict, runner: warm.Runner | None = None) -> dict:
+    """Grade one submission x case in a fresh `python -m eyesim.grade.case_run`, or in a fresh
+    process forked by the warm `runner` (warm.py) when the case is to be sandboxed; returns its result."""
     started = time.perf_counter()
 
     def timed(result: dict) -> dict:
@@ -57,21 +61,29 @@ def run_case_isolated(task: dict) -> dict:
     unisolated = sandbox.why_not_isolated()
     if unisolated and task.get("require_isolation"):
         return timed(failed_result(task, "grader_error", f"refused: {unisolated} (--require-isolation)"))
-    with tempfile.TemporaryDirectory(prefix="eyesim-grade-") as tmp:
-        work = Path(tmp)
-        process, task = _start_case(task, work)
+    with contextlib.ExitStack() as stack:
+        if runner is not None and task.get("isolate", True):
+            folder, process = runner.start_case(sandbox.case_uid())
+            task, watched = dict(task, processes=CASE_PROCESSES), runner.process
+        else:
+            folder = None
+            process, task = _start_case(task, Path(stack.enter_context(tempfile.TemporaryDirectory(prefix="eyesim-grade-"))))
+            watched = process
         with _running_lock:
-            _running.add(process)
+            _running.add(watched)
+        timeout = task["case"].wall_clock + HARD_MARGIN
         try:
-            stdout, stderr = process.communicate(pickle.dumps(task), timeout=task["case"].wall_clock + HARD_MARGIN)
+            stdout, stderr = process.communicate(pickle.dumps(task), timeout=timeout)
         except subprocess.TimeoutExpired:
-            _kill_group(process)
-            return timed(failed_result(task, "timeout", f"the case took over {task['case'].wall_clock + HARD_MARGIN:g} s "
-                                                        f"of real time and was killed"))
+            _kill_group(watched)
+            return timed(failed_result(task, "timeout", f"the case took over {timeout:g} s of real time and was killed"))
         finally:
-            _kill_group(process)  # programs the case left behind in its group
+            if folder is None:
+                _kill_group(process)  # programs the case left behind in its group
+            else:
+                shutil.rmtree(folder, ignore_errors=True)  # its namespaces ended with it
             with _running_lock:
-                _running.discard(process)
+                _running.discard(watched)
         result = _read_result(stdout, task)
         if result is None:
             tail = stderr.decode(errors="replace")[-3000:]
