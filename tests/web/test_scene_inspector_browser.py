@@ -105,9 +105,10 @@ def test_inspector_snapping_moved_clear_clean_save_and_one_recording(browser_con
         assert state(page)["items"]["walls"] == [{"x1": 0, "y1": 1000, "x2": 1600, "y2": 1000, "thickness": 40,
                                                  "height": 120, "color": [16, 200, 32]}]
         assert page.inner_text("#editor-length") == "length 1600"
-        # a robot: its pose in numbers; no size or colour fields (its type has them)
+        # a robot: its pose in numbers; its size and colour are its type's: the floor it takes is shown
         page.click("#editor-items li[data-kind=robot][data-index='1']")
         assert not page.is_visible("#editor-thickness") and not page.is_visible("#editor-color")
+        assert page.inner_text("#editor-footprint") == "180 × 150 mm"
         page.fill("#editor-phi", "90")
         page.click("#editor-apply")
         wait_for_edits(page, count + 2)

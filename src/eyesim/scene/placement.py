@@ -43,6 +43,16 @@ def _robot_extent(robot_type: RobotType) -> tuple[float, float, float, float]:
     return x0, y0, x1, y1
 
 
+def footprint(body_type: RobotType | ObjectType) -> tuple[float, float]:
+    """The floor-plan size (mm along x, along y) a robot or object of this type takes when placed:
+    what must be free for it (the scene editor shows it)."""
+    if isinstance(body_type, RobotType):
+        x0, y0, x1, y1 = _robot_extent(body_type)
+    else:
+        x0, y0, x1, y1 = _box_extent(body_type.colliders)
+    return x1 - x0, y1 - y0
+
+
 def chassis_extent(robot_type: RobotType) -> tuple[float, float, float, float]:
     """The chassis' floor-plan box (x0, y0, x1, y1 mm, robot frame) as the physics builds its hull,
     without the wheels: the robot editor puts its PSD presets on its edges."""

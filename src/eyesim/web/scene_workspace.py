@@ -30,6 +30,7 @@ from pathlib import Path
 from aiohttp import web
 
 from eyesim.scene import SceneError, World, builtins, load_scene
+from eyesim.scene.placement import footprint
 from eyesim.web.recent_files import RecentFiles
 from eyesim.web.route_bodies import BadBody, checked_body
 from eyesim.web.scene_editing import Draft, EditError, apply, make_way, placed_body, saved_files, set_floor, settled
@@ -71,10 +72,16 @@ class SceneWorkspace:
     # -- answers ------------------------------------------------------------------------------
     def state(self) -> dict:
         place = self.roots.place_of(self.draft.file)
+        items = self.draft.items()
+        # the size a robot or object takes on the floor is its type's (the scene running has them all)
+        types = {"robots": self.sim.scene.robot_types, "objects": self.sim.scene.object_types}
+        for kind, known in types.items():
+            for item in items[kind]:
+                if item["type"] in known:
+                    item["footprint"] = list(footprint(known[item["type"]]))
         return {"editing": self.editing, "browse_at_start": self.browse_at_start, "file": str(self.draft.file),
                 "place": {"root": place[0], "path": place[1]} if place else None,
-                "can_undo": bool(self.undo_stack), "can_redo": bool(self.redo_stack),
-                "items": self.draft.items()}
+                "can_undo": bool(self.undo_stack), "can_redo": bool(self.redo_stack), "items": items}
 
     async def _files(self, request: web.Request) -> web.Response:
         query = request.query.get("q", "")[:200]

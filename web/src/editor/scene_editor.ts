@@ -114,6 +114,7 @@ export class SceneEditor {
           <label>x <input id="editor-x" type="number" /></label>
           <label>y <input id="editor-y" type="number" /></label>
           <label id="editor-phi-label">φ <input id="editor-phi" type="number" /></label>
+          <span id="editor-footprint" class="editor-note" title="the floor its type takes: change a robot's size in the robot editor"></span>
         </div>
         <div class="editor-row" id="editor-wall-ends" hidden>
           <label>x1 <input id="editor-x1" type="number" /></label><label>y1 <input id="editor-y1" type="number" /></label>
@@ -402,6 +403,8 @@ export class SceneEditor {
     }
     const color = (thing as { color?: number[] }).color;
     if (color) element<HTMLInputElement>(this.panel, "#editor-color").value = hexOf(color);
+    const size = (thing as { footprint?: number[] }).footprint;
+    element(this.panel, "#editor-footprint").textContent = size ? `${size.map(Math.round).join(" × ")} mm` : "";
     element(this.panel, "#editor-length").textContent = wall
       ? `length ${Math.round(Math.hypot(fields.x2 - fields.x1, fields.y2 - fields.y1))}` : "";
     if (kind === "robot") {

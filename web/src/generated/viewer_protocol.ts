@@ -933,12 +933,14 @@ export interface EditorRobot {
   x: number;
   y: number;
   phi: number;
+  /** mm along x and y its type takes on the floor (read-only: robot and object types have their size) */
+  footprint?: [number, number];
   /** absolute path */
   program: string | null;
 }
 
 export function parseEditorRobot(value: unknown, what: string): EditorRobot {
-  return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], x: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], y: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], phi: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], program: [(v: unknown, w: string): string | null => either<string | null>(v, w, [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), (v: unknown, w: string) => literal(v, [null] as const, w)], "string or null"), true, undefined]}) as unknown as EditorRobot;
+  return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], x: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], y: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], phi: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], footprint: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), false, 2, 2) as [number, number], false, undefined], program: [(v: unknown, w: string): string | null => either<string | null>(v, w, [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), (v: unknown, w: string) => literal(v, [null] as const, w)], "string or null"), true, undefined]}) as unknown as EditorRobot;
 }
 
 export interface EditorObject {
@@ -946,12 +948,14 @@ export interface EditorObject {
   x: number;
   y: number;
   phi: number;
+  /** mm along x and y its type takes on the floor (read-only: robot and object types have their size) */
+  footprint?: [number, number];
   /** one of the world file's own (a maze ball) */
   world: boolean;
 }
 
 export function parseEditorObject(value: unknown, what: string): EditorObject {
-  return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], x: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], y: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], phi: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], world: [bool, true, undefined]}) as unknown as EditorObject;
+  return objectOf(record(value, what), what, {type: [(v: unknown, w: string) => str(v, w, undefined, undefined, undefined), true, undefined], x: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], y: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], phi: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), true, undefined], footprint: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), false, 2, 2) as [number, number], false, undefined], world: [bool, true, undefined]}) as unknown as EditorObject;
 }
 
 export interface EditorMarker {
