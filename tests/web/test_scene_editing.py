@@ -16,7 +16,7 @@ from support.programs import eyesim_command  # noqa: E402
 from eyesim.protocol.channel_schema import route_request_problem
 from eyesim.scene import load_scene
 from eyesim.scene.builtins import DEFAULT_SCENE
-from eyesim.web.scene_editing import Draft, EditError, apply, saved_files
+from eyesim.scene.editing import Draft, EditError, apply, saved_files
 from eyesim.web.scene_files import FileAccessError, SceneRoots
 
 

@@ -7,7 +7,7 @@ import pytest
 
 from eyesim.protocol.channel_schema import route_request_problem
 from eyesim.scene import load_scene
-from eyesim.web.scene_editing import Draft, EditError, apply, make_way, placed_body, saved_files, settled
+from eyesim.scene.editing import Draft, EditError, apply, make_way, placed_body, saved_files, settled
 
 # A 2 m floor with one wall across the middle (y = 1000) and two S4s and a can below it.
 SCENE = """world room.wld

@@ -8,7 +8,7 @@ JSON routes under /scenes/ (behind the viewer's access checks like every route):
     POST /scenes/open            {"root", "path"}: replace the running scene with that file
     POST /scenes/new             {"width", "height"}: an empty floor of that size (mm), to build on
     POST /scenes/edit            {"editing": true|false}: start or end editing
-    POST /scenes/edit            {"op": ...}: one edit (eyesim/web/scene_editing.py)
+    POST /scenes/edit            {"op": ...}: one edit (eyesim/scene/editing.py)
     POST /scenes/undo, /redo
     POST /scenes/save            {"root", "path", "format": "sim"|"json", "overwrite": bool}
 
@@ -30,10 +30,10 @@ from pathlib import Path
 from aiohttp import web
 
 from eyesim.scene import SceneError, World, builtins, load_scene
+from eyesim.scene.editing import Draft, EditError, apply, make_way, placed_body, saved_files, set_floor, settled
 from eyesim.scene.placement import footprint
 from eyesim.web.recent_files import RecentFiles
 from eyesim.web.route_bodies import BadBody, checked_body
-from eyesim.web.scene_editing import Draft, EditError, apply, make_way, placed_body, saved_files, set_floor, settled
 from eyesim.web.scene_files import FileAccessError, SceneRoots
 from eyesim.web.simulation_calls import on_simulation
 
@@ -289,7 +289,7 @@ class SceneWorkspace:
 
 
 def _made_way(draft: Draft, op: dict) -> tuple[Draft, str]:
-    """The draft with the robot or object the edit put down moved clear (scene_editing.make_way)."""
+    """The draft with the robot or object the edit put down moved clear (scene.editing.make_way)."""
     body = placed_body(draft, op)
     if body is None:
         return draft, ""
