@@ -14,12 +14,12 @@ RoBIOS functions are called by their C names (`VWSetSpeed`) or by protocol op na
 
 from __future__ import annotations
 
-import socket
 import threading
 import traceback
 from dataclasses import dataclass, field
 
-from eyesim.protocol import FrameDecoder, decode_payload, encode_message, generated as g
+from eyesim.protocol import generated as g
+from eyesim.protocol.client import ProtocolClient, RemoteError
 
 _BY_FOLDED_NAME = {name.replace("_", ""): name for name in g.OPS_BY_NAME}
 
@@ -33,34 +33,22 @@ class RoBIOSError(Exception):
 
 
 class RobotClient:
+    """A program's connection, called like the API: `client.vw_set_speed(100, 0)` or
+    `client.call("VW_SET_SPEED", 100, 0)`; a reply of one value is that value."""
+
     def __init__(self, host: str, port: int, robot: int | str, program: str = "python-callable",
                  token: str | None = None):
-        self._sock = socket.create_connection((host, port))
-        self._sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
-        self._decoder = FrameDecoder()
-        self._inbox: list = []
-        self._next_id = 0
+        self._connection = ProtocolClient(port, host)
         self._lock = threading.Lock()
         _, self.robot_id, self.robot_name = self.call("HELLO", g.VERSION, str(robot), program, 0, token or "")
 
     def call(self, op_name: str, *args):
-        op = g.OPS_BY_NAME[op_name]
         with self._lock:
-            self._next_id += 1
-            self._sock.sendall(encode_message(op.code, g.KIND_REQUEST, self._next_id, args))
-            message = self._receive()
-        if message.kind == g.KIND_ERROR:
-            raise RoBIOSError(op_name, *decode_payload(g.ERROR_PAYLOAD, message.payload))
-        values = decode_payload(op.reply, message.payload)
+            try:
+                values = self._connection.call(op_name, *args)
+            except RemoteError as error:
+                raise RoBIOSError(op_name, error.code, error.message) from None
         return values[0] if len(values) == 1 else values
-
-    def _receive(self):
-        while not self._inbox:
-            data = self._sock.recv(65536)
-            if not data:
-                raise ConnectionError("the simulator closed the connection")
-            self._inbox += self._decoder.feed(data)
-        return self._inbox.pop(0)
 
     def __getattr__(self, name: str):
         op_name = _BY_FOLDED_NAME.get(name.upper().replace("_", ""))
@@ -69,11 +57,7 @@ class RobotClient:
         return lambda *args: self.call(op_name, *args)
 
     def close(self) -> None:
-        try:
-            self._sock.shutdown(socket.SHUT_RDWR)
-        except OSError:
-            pass
-        self._sock.close()
+        self._connection.close()
 
 
 @dataclass
