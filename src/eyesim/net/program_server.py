@@ -21,7 +21,9 @@ one that has not sent its handshake within HANDSHAKE_TIMEOUT is closed; and when
 spinning on a listener it cannot serve. A connection whose socket is not being read cannot see its
 program close it (the end of the stream waits behind unread requests): on Linux the socket's TCP
 state shows it, looked at once a second, so a program that pipelined blocking calls and left
-frees its robot and descriptor."""
+frees its robot and descriptor; and one that sends more while MAX_QUEUED of its calls wait (keys,
+times) is closed with an error: those calls could wait for ever, and the requests behind them
+would hide its close."""
 
 from __future__ import annotations
 
@@ -34,7 +36,7 @@ import time
 
 from eyesim.net import program_token
 from eyesim.net.backlog import Backlog
-from eyesim.net.session import Request, Session
+from eyesim.net.session import Deferred, Request, Session
 from eyesim.protocol import FrameDecoder, ProtocolError, decode_payload, encode_error, generated as g
 
 log = logging.getLogger("eyesim.net")
@@ -182,9 +184,29 @@ class ProgramConnection:
         self._refill()
 
     def _refill(self) -> None:
-        if not self.closed and self.decoder.pending_bytes and self._has_room():
-            self._take(b"")
+        if not self.closed and self.decoder.pending_bytes:
+            if self._has_room():
+                self._take(b"")
+            elif self._all_waiting():
+                self._refuse_more_waits()
+                return
         self.update_interest()
+
+    def _all_waiting(self) -> bool:
+        """Every request the cap holds is a blocking call waiting for its condition (a key, a time),
+        none is to be served: the requests behind them could wait for ever."""
+        session = self.session
+        return not session.queued and len(session.pending) >= MAX_QUEUED and \
+            not any(isinstance(pending, Deferred) for _, pending in session.pending)
+
+    def _refuse_more_waits(self) -> None:
+        """More calls than MAX_QUEUED waiting at once: no program makes them (one call at a time per
+        thread), and unread they would hide the program's close, keeping its robot taken."""
+        text = (f"more than {MAX_QUEUED} calls waiting at once (a program makes one call at a time per "
+                f"thread); closing the connection")
+        log.warning("%s: %s", self.session.name, text)
+        self.send(encode_error(0, 0, g.ERR_NOT_SUPPORTED, text))
+        self.close(flush=True)
 
     def reading(self) -> bool:
         return bool(self._events & READ)
