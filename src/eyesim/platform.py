@@ -16,7 +16,7 @@ import threading
 from dataclasses import dataclass
 from pathlib import Path
 
-WINDOWS = os.name == "nt"
+WINDOWS = sys.platform == "win32"
 MACOS = sys.platform == "darwin"
 
 if WINDOWS:
@@ -50,7 +50,7 @@ class Limits:
 def start(command: list[str], *, own_group: bool = False, limits: Limits = Limits(), **popen) -> subprocess.Popen:
     """subprocess.Popen with the program in a group of its own (`own_group`: ending it ends what it
     started) and under `limits`. On Windows a limited program always gets its own job."""
-    if WINDOWS:
+    if sys.platform == "win32":
         return _start_in_job(command, own_group or bool(limits), limits, popen)
     preexec = (lambda: _apply_rlimits(limits)) if limits else None
     return subprocess.Popen(command, preexec_fn=preexec, start_new_session=own_group, **popen)
@@ -59,7 +59,7 @@ def start(command: list[str], *, own_group: bool = False, limits: Limits = Limit
 def kill_tree(process: subprocess.Popen, own_group: bool) -> None:
     """End at once the program and, when it has a group (or job) of its own, all it started, even
     after the program itself has exited."""
-    if WINDOWS:
+    if sys.platform == "win32":
         job = _jobs.pop(process.pid, None)
         if job is not None:
             _kernel32.TerminateJobObject(job, _KILLED_EXIT_CODE)
@@ -92,7 +92,7 @@ def ask_to_end(process: subprocess.Popen) -> None:
 def release(process: subprocess.Popen) -> None:
     """The program has been waited for: free what `start` holds for it (its Windows job, whose
     closing also ends anything it left running)."""
-    if WINDOWS:
+    if sys.platform == "win32":
         job = _jobs.pop(process.pid, None)
         if job is not None:
             _kernel32.CloseHandle(job)
@@ -117,7 +117,9 @@ _KILLED_EXIT_CODE = 1  # what TerminateJobObject leaves as the exit code of the 
 _NOT_ENOUGH_QUOTA = 1816  # ERROR_NOT_ENOUGH_QUOTA: the exit code of a process over its job's CPU time
 _jobs: dict[int, int] = {}  # pid -> its job's handle
 
-if WINDOWS:
+# Spelled `sys.platform == "win32"` (as are the branches that use it), not WINDOWS: type checkers
+# then know that ctypes.WinDLL and the rest exist here, and skip it on other systems.
+if sys.platform == "win32":
     class _IoCounters(ctypes.Structure):
         _fields_ = [(name, ctypes.c_ulonglong) for name in
                     ("reads", "writes", "others", "read_bytes", "write_bytes", "other_bytes")]
@@ -153,50 +155,49 @@ if WINDOWS:
     _CREATE_NEW_PROCESS_GROUP = 0x200
 
 
-def _new_job(limits: Limits) -> int:
-    job = _kernel32.CreateJobObjectW(None, None)
-    if not job:
-        raise OSError(ctypes.get_last_error(), "cannot create a job object for the program")
-    info = _ExtendedLimits()
-    info.basic.flags = _LIMIT_KILL_ON_JOB_CLOSE
-    if limits.cpu_seconds is not None:
-        info.basic.flags |= _LIMIT_PROCESS_TIME
-        info.basic.per_process_user_time = int(limits.cpu_seconds * 10_000_000)  # 100 ns ticks
-    if limits.memory_bytes is not None:
-        info.basic.flags |= _LIMIT_PROCESS_MEMORY
-        info.process_memory = limits.memory_bytes
-    if limits.processes is not None:
-        info.basic.flags |= _LIMIT_ACTIVE_PROCESS
-        info.basic.active_processes = limits.processes
-    if not _kernel32.SetInformationJobObject(job, _EXTENDED_LIMIT_INFORMATION, ctypes.byref(info),
-                                             ctypes.sizeof(info)):
-        error = ctypes.get_last_error()
-        _kernel32.CloseHandle(job)
-        raise OSError(error, "cannot set the program's job limits")
-    return job
+    def _new_job(limits: Limits) -> int:
+        job = _kernel32.CreateJobObjectW(None, None)
+        if not job:
+            raise OSError(ctypes.get_last_error(), "cannot create a job object for the program")
+        info = _ExtendedLimits()
+        info.basic.flags = _LIMIT_KILL_ON_JOB_CLOSE
+        if limits.cpu_seconds is not None:
+            info.basic.flags |= _LIMIT_PROCESS_TIME
+            info.basic.per_process_user_time = int(limits.cpu_seconds * 10_000_000)  # 100 ns ticks
+        if limits.memory_bytes is not None:
+            info.basic.flags |= _LIMIT_PROCESS_MEMORY
+            info.process_memory = limits.memory_bytes
+        if limits.processes is not None:
+            info.basic.flags |= _LIMIT_ACTIVE_PROCESS
+            info.basic.active_processes = limits.processes
+        if not _kernel32.SetInformationJobObject(job, _EXTENDED_LIMIT_INFORMATION, ctypes.byref(info),
+                                                 ctypes.sizeof(info)):
+            error = ctypes.get_last_error()
+            _kernel32.CloseHandle(job)
+            raise OSError(error, "cannot set the program's job limits")
+        return job
 
-
-def _start_in_job(command: list[str], own_job: bool, limits: Limits, popen: dict) -> subprocess.Popen:
-    if not own_job:
-        return subprocess.Popen(command, **popen)
-    job = _new_job(limits)
-    flags = popen.pop("creationflags", 0) | _CREATE_SUSPENDED | _CREATE_NEW_PROCESS_GROUP
-    try:
-        process = subprocess.Popen(command, creationflags=flags, **popen)
-    except OSError:
-        _kernel32.CloseHandle(job)
-        raise
-    handle = int(process._handle)  # the process handle Popen holds (there is no public name for it)
-    assigned = _kernel32.AssignProcessToJobObject(job, handle)
-    _ntdll.NtResumeProcess(handle)
-    if not assigned:
-        error = ctypes.get_last_error()
-        process.kill()
-        process.wait()
-        _kernel32.CloseHandle(job)
-        raise OSError(error, "cannot put the program in its job object")
-    _jobs[process.pid] = job
-    return process
+    def _start_in_job(command: list[str], own_job: bool, limits: Limits, popen: dict) -> subprocess.Popen:
+        if not own_job:
+            return subprocess.Popen(command, **popen)
+        job = _new_job(limits)
+        flags = popen.pop("creationflags", 0) | _CREATE_SUSPENDED | _CREATE_NEW_PROCESS_GROUP
+        try:
+            process = subprocess.Popen(command, creationflags=flags, **popen)
+        except OSError:
+            _kernel32.CloseHandle(job)
+            raise
+        handle = int(process._handle)  # the process handle Popen holds (there is no public name for it)
+        assigned = _kernel32.AssignProcessToJobObject(job, handle)
+        _ntdll.NtResumeProcess(handle)
+        if not assigned:
+            error = ctypes.get_last_error()
+            process.kill()
+            process.wait()
+            _kernel32.CloseHandle(job)
+            raise OSError(error, "cannot put the program in its job object")
+        _jobs[process.pid] = job
+        return process
 
 
 # ---- Reading a program's output -----------------------------------------------------------------
