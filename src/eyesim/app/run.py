@@ -365,7 +365,7 @@ def start_recorders(sim, args) -> list:
 
     if args.record_rate is not None and not any(p.lower().endswith(".mcap") for p in args.record):
         raise UsageError("--record-rate applies to .mcap recordings: add --record FILE.mcap")
-    recorders = []
+    recorders: list[Recorder | TrajectoryRecorder] = []
     try:
         for path in args.record:
             if path.lower().endswith(".mcap"):

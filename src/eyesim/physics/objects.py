@@ -30,6 +30,8 @@ class FixedObjectError(Exception):
 class SceneObject:
     """An object in the simulation. `id` is its 1-based position in the scene's object list."""
 
+    world: PhysicsWorld  # the world it is in, from bind() once the model is compiled
+
     def __init__(self, object_id: int, object_type: ObjectType, placement: ObjectPlacement, body_name: str,
                  centre_height: float):
         self.id = object_id
@@ -37,7 +39,6 @@ class SceneObject:
         self.placement = placement
         self.body_name = body_name
         self.centre_height = centre_height  # m of the centre of mass above the object's base
-        self.world: PhysicsWorld | None = None
         self.body = -1
         self.geoms: list[int] = []  # colliders
         self.mesh_geoms: list[int] = []  # its .obj model's, when it has one

@@ -18,6 +18,7 @@ import mujoco
 import numpy as np
 
 from eyesim.physics import render
+from eyesim.physics.render import View  # by name: in the renderer's class, `render` is its method
 
 PROBE_TIMEOUT = 60.0  # s a trial child process may take (a loaded machine starts Python slowly)
 MAX_TEXTURE_SIDE = 4096  # pixels: the largest intermediate image a fisheye view renders
@@ -125,7 +126,7 @@ class GlRenderer:
         except Exception as error:  # whatever the GL stack raises when it cannot make a context
             raise NoOpenGL(f"{backend}: {error}") from None
 
-    def render(self, world, view: render.View, data=None) -> np.ndarray:
+    def render(self, world, view: View, data=None) -> np.ndarray:
         """The view's image, (height, width, 3) uint8, top row first; `data`: the physics state to
         draw (a copy of the world's), else the world's own."""
         self._gl.make_current()
@@ -154,16 +155,16 @@ class GlRenderer:
         self._gl.free()
 
     def _target(self, world) -> _Target:
-        for key, target in list(self._targets.items()):
-            if target.world() is None:  # that simulation is gone: free its GPU copy here, on the GL thread
-                target.free()
+        for key, old in list(self._targets.items()):
+            if old.world() is None:  # that simulation is gone: free its GPU copy here, on the GL thread
+                old.free()
                 del self._targets[key]
         target = self._targets.get(id(world))
         if target is None or target.world() is not world:
             target = self._targets[id(world)] = _Target(world)
         return target
 
-    def _perspective(self, model, data, target: _Target, view: render.View, width: int, height: int,
+    def _perspective(self, model, data, target: _Target, view: View, width: int, height: int,
                      fov: float) -> np.ndarray:
         """A pinhole image of `fov` degrees across its width."""
         target.ensure_size(width, height)
@@ -190,7 +191,7 @@ class GlRenderer:
         return image[::-1].copy()  # OpenGL's first row is the bottom one
 
 
-def _set_lights(scene, view: render.View) -> None:
+def _set_lights(scene, view: View) -> None:
     """The shared lights of render.py, in place of the model's: a headlight at the lens and a
     light from straight above."""
     head, top = scene.lights[0], scene.lights[1]

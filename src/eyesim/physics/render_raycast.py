@@ -10,6 +10,8 @@ cast for the whole image. Colours come from each geom's rgba (or its material's)
 
 from __future__ import annotations
 
+from typing import cast
+
 import mujoco
 import numpy as np
 
@@ -37,8 +39,10 @@ class RayCastRenderer:
         inside = render.camera_ray_axes(view.width, view.height, view.fov, view.fisheye)[3]
         forward = np.asarray(view.forward, dtype=np.float64)
         basis = np.stack([view.right, np.asarray(view.up, dtype=np.float64), forward])
-        # The rays in the world, one array per axis (camera frame: x right, y up, z forward).
-        columns = [sum(_ray_axis(view, k) * float(basis[k, axis]) for k in range(3)) for axis in range(3)]
+        # The rays in the world, one array per axis (camera frame: x right, y up, z forward); an array
+        # each, though sum() is typed as 0 for no terms.
+        columns = [cast(np.ndarray, sum(_ray_axis(view, k) * float(basis[k, axis]) for k in range(3)))
+                   for axis in range(3)]
         origin = np.asarray(view.position, dtype=np.float64)
 
         geoms = _visible_geoms(model, view.own_body)

@@ -42,7 +42,7 @@ class Frame:
         self.world, self.view, self.finish = world, view, finish
         self.data = _copy_state(world)
         self.image: np.ndarray | None = None
-        self.result = None
+        self.result: object = None
         self.error: str | None = None
         self.cancelled = False  # nobody waits for it any more: not drawn if not begun
         self._done = threading.Event()

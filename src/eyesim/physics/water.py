@@ -25,8 +25,10 @@ class Water:
 
 
 def water_of(scene: Scene) -> Water | None:
+    # (mypy cannot see RobotType's fields: scene/parts assembles it with make_dataclass)
     swimming = any(drive_of(scene.robot_types[p.type_name]).swims
-                   or scene.robot_types[p.type_name].buoyancy is not None for p in scene.robots)
+                   or scene.robot_types[p.type_name].buoyancy is not None  # type: ignore[attr-defined]
+                   for p in scene.robots)
     if not swimming:
         return None
     walls = scene.world.walls

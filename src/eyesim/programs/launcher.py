@@ -9,6 +9,7 @@ import threading
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import IO, cast
 
 from eyesim import paths, platform
 from eyesim.programs import sources
@@ -133,7 +134,7 @@ class Launcher:
         robot_id_ = robot_id
         self.sim.call(lambda sim: sim.expected_programs.add(robot_id_))
         try:
-            run.process = platform.start(
+            process = run.process = platform.start(
                 [*command_for(run.path), *options.args], own_group=options.own_group, limits=options.limits,
                 cwd=options.cwd or (run.source or run.path).parent, env=env,
                 stdin=subprocess.DEVNULL if options.stdin is None else subprocess.PIPE,
@@ -144,10 +145,10 @@ class Launcher:
             self.sim.call(lambda sim: sim.program_gone(robot_id_))
             return run
         self.sim.call(lambda sim: sim.events.program(robot_id_, "started", run.name, None))
-        output = ProgramOutput({"stdout": run.process.stdout, "stderr": run.process.stderr},
+        output = ProgramOutput({"stdout": process.stdout, "stderr": process.stderr},
                                lambda stream, text: self._show(run, stream, text))
         self._outputs[id(run)] = output
-        pid = run.process.pid
+        pid = process.pid
 
         def watch(sim):
             output.watch(sim.network)
@@ -155,10 +156,10 @@ class Launcher:
 
         self.sim.on_loop(watch)
         if options.stdin is not None:
-            feeder = threading.Thread(target=self._feed, args=(run,), daemon=True)
+            feeder = threading.Thread(target=self._feed, args=(process, options.stdin), daemon=True)
             feeder.start()
             self._threads.append(feeder)
-        waiter = threading.Thread(target=self._wait, args=(run,), daemon=True)
+        waiter = threading.Thread(target=self._wait, args=(run, process), daemon=True)
         self._threads.append(waiter)
         self._waiters[id(run)] = waiter
         waiter.start()
@@ -186,7 +187,7 @@ class Launcher:
         for run in self.runs:
             if run.process is not None and run.process.poll() is not None:
                 self._waiters[id(run)].join(timeout=2.0)
-                self._take_output(run)
+                self._take_output(run, run.process)
 
     def _let_finish(self, seconds: float) -> None:
         """Wait up to `seconds` in all for programs to end by themselves, and up to ENDING_GRACE for
@@ -205,21 +206,21 @@ class Launcher:
                 except subprocess.TimeoutExpired:
                     pass
 
-    def _feed(self, run: ProgramRun) -> None:
-        data = run.options.stdin
+    def _feed(self, process: subprocess.Popen, data: str | bytes) -> None:
+        stdin = cast(IO[bytes], process.stdin)  # a pipe: started with stdin=PIPE
         try:
-            run.process.stdin.write(data.encode() if isinstance(data, str) else data)
-            run.process.stdin.close()
+            stdin.write(data.encode() if isinstance(data, str) else data)
+            stdin.close()
         except OSError:
             pass  # the program ended without reading all of it
 
-    def _take_output(self, run: ProgramRun) -> None:
+    def _take_output(self, run: ProgramRun, process: subprocess.Popen) -> None:
         """The program exited: the rest of its output, and why it ended if it crashed. On the
         simulation thread, or while no loop runs."""
         output = self._outputs.pop(id(run), None)
         if output is not None:
             output.finish()  # its last words first, then why it ended
-            self.sim.program_outputs.pop(run.process.pid, None)
+            self.sim.program_outputs.pop(process.pid, None)
             if run.crash is not None:
                 self._show(run, "stderr", f"eyesim: {run.name} {run.crash}\n")
 
@@ -248,14 +249,14 @@ class Launcher:
                 target.write(f"[robot {run.robot_id}] {text.rstrip(chr(10))}\n")
                 target.flush()
 
-    def _wait(self, run: ProgramRun) -> None:
-        run.exit_code = run.process.wait()
+    def _wait(self, run: ProgramRun, process: subprocess.Popen) -> None:
+        run.exit_code = process.wait()
         if not run.options.own_group:
-            platform.release(run.process)  # a group of its own is ended (and released) by _end
+            platform.release(process)  # a group of its own is ended (and released) by _end
         robot_id = run.robot_id
 
         def exited(sim):
-            self._take_output(run)
+            self._take_output(run, process)
             sim.events.program(robot_id, "exited", run.name, run.exit_code)
             sim.program_gone(robot_id)
 
@@ -274,19 +275,19 @@ class Launcher:
             return
         run.stopped_by_us = True
         platform.ask_to_end(run.process)
-        self._end(run, grace)
+        self._end(run.process, run.options.own_group, grace)
         self._waiters[id(run)].join(timeout=grace)
 
     @staticmethod
-    def _end(run: ProgramRun, grace: float) -> None:
+    def _end(process: subprocess.Popen, own_group: bool, grace: float) -> None:
         """Wait `grace` s for a program asked to end, then kill it; and whatever it started in its group."""
         try:
-            run.process.wait(timeout=grace)
+            process.wait(timeout=grace)
         except subprocess.TimeoutExpired:
-            platform.kill_tree(run.process, run.options.own_group)
-            run.process.wait()
-        if run.options.own_group:
-            platform.kill_tree(run.process, own_group=True)  # what it started and left running
+            platform.kill_tree(process, own_group)
+            process.wait()
+        if own_group:
+            platform.kill_tree(process, own_group=True)  # what it started and left running
 
     def latest(self, robot_id: int) -> ProgramRun | None:
         """The robot's most recent program run, if it had one."""
@@ -305,10 +306,10 @@ class Launcher:
                 platform.ask_to_end(run.process)
         for run in self.runs:
             if run.process is not None:
-                self._end(run, grace)
+                self._end(run.process, run.options.own_group, grace)
         for thread in self._threads:
             thread.join(timeout=grace)
         for run in self.runs:  # the loop has ended: what they printed last is taken in here
             if run.process is not None:
-                self._take_output(run)
+                self._take_output(run, run.process)
 

@@ -62,6 +62,10 @@ class LiveHistory:
     def __init__(self, robot_ids: list[int], seconds: float = HISTORY_SECONDS):
         self.robot_ids = list(robot_ids)
         self.keep_us = round(seconds * 1e6)
+        self.clear()
+
+    def clear(self) -> None:
+        """Forget all history (time went back: a new simulation)."""
         self.times = array("q")  # of the snapshots
         self.snapshots: list[str] = []  # as JSON text
         self.tracks: dict[int, tuple[array, array]] = defaultdict(lambda: (array("q"), array("d")))  # times, poses
@@ -122,9 +126,6 @@ class LiveHistory:
 
     def add_psd(self, robot_id: int, time_us: int, reading: dict) -> None:
         self.psd[robot_id].append(time_us, reading)
-
-    def clear(self) -> None:
-        self.__init__(self.robot_ids, self.keep_us / 1e6)
 
     def _trim(self) -> None:
         oldest = self.times[-1] - self.keep_us

@@ -83,8 +83,6 @@ class Recording:
         if schemas.SCENE not in topics:
             raise RecordingError(f"{self.path} is an MCAP file but not an EyeSim recording (it has no {schemas.SCENE} channel)")
         self.metadata = {m.name: dict(m.metadata) for m in self._reader.iter_metadata()}
-        self.scene: dict | None = None  # the first scene's (see segments)
-        self.description: dict | None = None
         self.segments: list[Segment] = []
         self.pose_times: list[int] = []
         self._frames: dict[str, int] = {}
@@ -131,7 +129,9 @@ class Recording:
                 self.inputs.append((time_us, data))
         if not self.segments:
             raise RecordingError(f"{self.path} is an MCAP file but not an EyeSim recording (its {schemas.SCENE} channel is empty)")
-        self.scene, self.description = self.segments[0].scene, self.segments[0].description
+        first = self.segments[0]
+        self.scene: dict = first.scene  # the first scene's (see segments)
+        self.description: dict = first.description
         # Frames that came with an edited scene have no pose before it: NaN there.
         width = 7 * len(self._frames)
         poses = [row if len(row) == width else row + [np.nan] * (width - len(row)) for row in poses]

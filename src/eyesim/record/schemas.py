@@ -148,13 +148,13 @@ ROBOT_SCHEMAS = {"state": "eyesim.RobotState", "lcd": "foxglove.CompressedImage"
                  "command": "eyesim.Command", "input": "eyesim.Input"}
 
 
-def schema_of(topic: str) -> str | None:
+def schema_of(topic: str) -> str:
     if topic in TOPIC_SCHEMAS:
         return TOPIC_SCHEMAS[topic]
     parts = topic.split("/")
-    if len(parts) == 4 and parts[1] == "robot":
-        return ROBOT_SCHEMAS.get(parts[3])
-    return None
+    if len(parts) == 4 and parts[1] == "robot" and parts[3] in ROBOT_SCHEMAS:
+        return ROBOT_SCHEMAS[parts[3]]
+    raise KeyError(f"{topic}: no message schema is declared for this recording topic")
 
 
 def schema_bytes(name: str) -> bytes:

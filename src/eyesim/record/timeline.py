@@ -154,10 +154,11 @@ class FrameCursor:
                 messages.append(json.dumps(source.scene_message(segment, new_scene=True)))
                 self.time_us = None
             self.segment = segment.index
-        afresh = self.time_us is None or time_us < self.time_us
+        # going on from the time shown last, or afresh (the first time, or back in time)
+        after_us = self.time_us if self.time_us is not None and self.time_us <= time_us else -math.inf
+        afresh = after_us == -math.inf
         if afresh:
             self.sent.clear()
-        after_us = -math.inf if afresh else self.time_us
         since_us = segment.start_us if segment is not None else -math.inf
         self.time_us = time_us
         for robot_id in robot_ids:

@@ -48,7 +48,7 @@ class TopView:
         if floor_image:
             texture = Image.open(io.BytesIO(floor_image)).convert("RGB")
             box = [round(v) for v in (*corners[0], *corners[1])]
-            image.paste(texture.resize((box[2] - box[0], box[3] - box[1])), box[:2])
+            image.paste(texture.resize((box[2] - box[0], box[3] - box[1])), (box[0], box[1]))
         else:
             draw.rectangle(corners, fill=FLOOR)
         for wall in self.scene["walls"]:
@@ -61,14 +61,22 @@ class TopView:
             draw.ellipse([x - r, y - r, x + r, y + r], fill=tuple(marker["color"][:3]))
         return image
 
-    def draw(self, snapshot: dict, paths: dict[int, list[tuple[float, float]]] | None = None,
+    def draw(self, snapshot: dict | None, paths: dict[int, list[tuple[float, float]]] | None = None,
              label: str = "") -> Image.Image:
-        """A frame: the snapshot's poses (and `rays`), each robot's path so far, `label` in a corner."""
+        """A frame: the snapshot's poses (and `rays`; the arena alone without a snapshot: a recording
+        with no pose samples), each robot's path so far, `label` in a corner."""
         image = self.background.copy()
         draw = ImageDraw.Draw(image)
         for points in (paths or {}).values():
             if len(points) > 1:
                 draw.line([self.pixel(x, y) for x, y in points], fill=PATH, width=2)
+        if snapshot is not None:
+            self._draw_poses(draw, snapshot)
+        if label:
+            draw.text((MARGIN + 4, MARGIN + 2), label, fill=TEXT)
+        return image
+
+    def _draw_poses(self, draw: ImageDraw.ImageDraw, snapshot: dict) -> None:
         for ray in snapshot.get("rays", []):
             origin = self.pixel(*ray["origin"][:2])
             ends = ray["ends"]
@@ -82,9 +90,6 @@ class TopView:
         for pose in snapshot["robots"]:
             if pose["id"] in robots:
                 self._robot(draw, robots[pose["id"]], pose)
-        if label:
-            draw.text((MARGIN + 4, MARGIN + 2), label, fill=TEXT)
-        return image
 
     def _footprint(self, x: float, y: float, heading: float, length: float, width: float) -> list:
         c, s = math.cos(heading), math.sin(heading)

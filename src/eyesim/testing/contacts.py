@@ -85,13 +85,14 @@ class ContactTracker:
             contact.end = sim.time
             self.parted[pair] = contact
         for pair in pairs - self.touching.keys():
-            contact = self.parted.pop(pair, None)
-            if contact is not None and sim.time - contact.end <= REJOIN + 1e-9:
-                contact.end = None  # the same collision goes on
+            parted = self.parted.pop(pair, None)
+            if parted is not None and sim.time - parted.end <= REJOIN + 1e-9:
+                parted.end = None  # the same collision goes on
+                self.touching[pair] = parted
             else:
                 contact = Contact(self.things[pair[0]], self.things[pair[1]], sim.time)
                 self.contacts.append(contact)
-            self.touching[pair] = contact
+                self.touching[pair] = contact
 
     def of(self, thing: Thing, with_kind: str = "any") -> list[Contact]:
         """Episodes of `thing` touching something of a kind ('robot', 'object', 'wall' or 'any')."""

@@ -42,13 +42,13 @@ def eyesim_cc(_eyesim_build_dir):
     """eyesim_cc(source, *flags, language='cc') -> the executable `eyesim cc` built from a C file
     (language='c++' for C++); built once per session and set of flags. A compile error fails
     the test with the compiler's messages."""
+    from pathlib import Path
+
     from eyesim.testing import CompileError, compile_program
 
-    built = {}
+    built: dict[tuple, Path] = {}  # (source, flags, language) -> executable
 
     def build(source, *flags, language: str = "cc"):
-        from pathlib import Path
-
         source = Path(source).resolve()
         key = (source, flags, language)
         if key not in built:

@@ -116,6 +116,8 @@ class RobotView:
 
     def read_file(self, name: str) -> bytes:
         """A file the program wrote, relative to its working directory."""
+        if self.workdir is None:
+            raise ValueError(f"robot {self.id} runs no program: it has no working directory to read {name} from")
         return (self.workdir / name).read_bytes()
 
     def serial_output(self, interface: int = 0) -> bytes:

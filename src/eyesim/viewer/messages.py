@@ -217,7 +217,7 @@ def robot_io(robot) -> dict | None:
 
 # -- the timeline -----------------------------------------------------------------------------------
 def timeline(mode: str, name: str | None = None, start: float | None = None, end: float | None = None) -> dict:
-    message = {"type": "timeline", "mode": mode}
+    message: dict[str, object] = {"type": "timeline", "mode": mode}
     if name is not None:
         message.update(name=name, start=start, end=end)
     return message
