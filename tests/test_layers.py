@@ -5,7 +5,7 @@ lazy imports inside functions included, grouped by top-level part (a subpackage 
 `eyesim.robot`, or a root module such as `eyesim.paths`). The part graph must have no cycle, and
 each part may import only parts on a lower layer of LAYERS (docs/architecture.md, "Layers").
 Inside a part, the module graph must have no cycle either (imports under `if TYPE_CHECKING:` aside:
-they never run).
+they never run). The modules of a part kind's folder (`eyesim.parts.<kind>`) count by their role.
 """
 
 import ast
@@ -27,6 +27,10 @@ LAYERS = [
     ["testing", "grade", "app"],
 ]
 ENTRY_POINTS = {"__init__", "__main__"}  # the public API and `python -m eyesim` sit above everything
+# A part kind's folder (eyesim/parts/<kind>/) cuts across the layers: each of its modules sits on the
+# layer of its role, and its packages (docstrings only) on the lowest.
+PART_FOLDERS = "parts"
+ROLES = {"declaration": "scene", "component": "robot"}
 
 
 def part_of(module: str) -> str | None:
@@ -35,6 +39,8 @@ def part_of(module: str) -> str | None:
     names = module.split(".")
     if names[0] != "eyesim" or len(names) < 2:
         return None
+    if names[1] == PART_FOLDERS:
+        return ROLES.get(names[3]) if len(names) > 3 else "scene"
     if not ((PACKAGE / f"{names[1]}.py").exists() or (PACKAGE / names[1] / "__init__.py").exists()):
         return None
     return names[1]
@@ -158,7 +164,7 @@ def test_the_module_scan_finds_a_cycle_and_ignores_type_checking_imports():
 def test_every_part_has_a_layer():
     layered = {part for layer in LAYERS for part in layer}
     parts = {p.stem if p.suffix == ".py" else p.name for p in PACKAGE.iterdir()
-             if (p.suffix == ".py" or (p / "__init__.py").exists())} - ENTRY_POINTS
+             if (p.suffix == ".py" or (p / "__init__.py").exists())} - ENTRY_POINTS - {PART_FOLDERS}
     assert parts == layered, f"parts without a layer: {sorted(parts - layered)}; layers without a part: {sorted(layered - parts)}"
 
 
@@ -177,3 +183,11 @@ def test_the_scan_sees_lazy_and_relative_imports():
     assert found == ["eyesim.web", "eyesim.core.engine"]
     relative = ast.parse("from ..scene import loader\n").body[0]
     assert imported_modules(relative, "eyesim.robot.build", False) == ["eyesim.scene"]
+
+
+def test_every_module_of_a_part_folder_has_a_role():
+    """A declaration is read with the robot files, below the physics; a component is the robot's."""
+    modules = {path.stem for path in (PACKAGE / PART_FOLDERS).glob("*/*.py")} - {"__init__"}
+    assert modules and modules <= set(ROLES), f"modules of no known role: {sorted(modules - set(ROLES))}"
+    assert part_of("eyesim.parts.bumper.declaration") == "scene"
+    assert part_of("eyesim.parts.bumper.component") == "robot"

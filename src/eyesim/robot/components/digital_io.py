@@ -1,6 +1,9 @@
-"""The I/O board's 16 digital lines: inputs the outside drives (viewer, scripts), outputs the program sets."""
+"""The I/O board's 16 digital lines: inputs the outside drives (viewer, scripts) or a part's switch
+is wired to (a bumper), outputs the program sets."""
 
 from __future__ import annotations
+
+from typing import Callable
 
 from eyesim.robot.component import Component
 
@@ -10,11 +13,13 @@ DIRECTIONS = {"i": "input", "o": "output", "I": "input with pull-up", "J": "inpu
 
 class DigitalLines(Component):
     """Every line starts as a plain input. An input reads the level the outside drives; undriven,
-    it reads 1 with a pull-up ('I') and 0 otherwise. An output reads what the program wrote."""
+    it reads 1 with a pull-up ('I') and 0 otherwise. An output reads what the program wrote. A
+    line wired to a part reads the part's level as an input, whatever the outside drives."""
 
     noun = "digital I/O"
 
     def __init__(self):
+        self.wired: dict[int, tuple[str, Callable[[], int]]] = {}  # index -> (the part, its level)
         self.reset()
 
     def reset(self) -> None:
@@ -32,6 +37,8 @@ class DigitalLines(Component):
         if direction not in DIRECTIONS:
             raise ValueError(f"direction {direction!r} is not 'i' (input), 'o' (output), "
                              f"'I' (input, pull-up) or 'J' (input, pull-down)")
+        if direction == "o" and index in self.wired:
+            raise ValueError(f"digital line {line} is wired to {self.wired[index][0]}: it can only be an input")
         self.directions[index] = direction
 
     def write(self, line: int, level: int) -> None:
@@ -42,9 +49,18 @@ class DigitalLines(Component):
             raise ValueError(f"level {level} is not 0 or 1")
         self.outputs[index] = level
 
+    def wire(self, line: int, part: str, level: Callable[[], int]) -> None:
+        """A part's switch is wired to an input line (once, while the robot is built)."""
+        index = self._index(line)
+        if index in self.wired:
+            raise ValueError(f"digital line {line} is already wired to {self.wired[index][0]}")
+        self.wired[index] = (part, level)
+
     def drive(self, line: int, level: int | None) -> None:
         """The outside puts a level on a line (None: lets go of it)."""
         index = self._index(line)
+        if index in self.wired:
+            raise ValueError(f"digital line {line} is wired to {self.wired[index][0]}; it cannot be driven")
         if level not in (0, 1, None):
             raise ValueError(f"level {level!r} is not 0, 1 or null (not driven)")
         self.driven[index] = level
@@ -53,6 +69,8 @@ class DigitalLines(Component):
         index = self._index(line)
         if self.directions[index] == "o":
             return self.outputs[index]
+        if index in self.wired:
+            return self.wired[index][1]()
         if self.driven[index] is not None:
             return self.driven[index]
         return 1 if self.directions[index] == "I" else 0

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import dataclasses
 
+from eyesim.parts.bumper import declaration as bumper
 from eyesim.scene.parts import arm, body, camera, drive, lidar, psd, thrusters, water, wheels
 from eyesim.scene.parts.part import Part
 
@@ -18,6 +19,7 @@ PARTS: tuple[Part, ...] = (
     body.PART,
     wheels.PART,
     psd.PART,
+    bumper.PART,
     camera.PART,
     lidar.PART,
     thrusters.PART,
