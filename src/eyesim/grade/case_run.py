@@ -28,11 +28,12 @@ COMPILE_TIMEOUT = 120  # s
 # The compiler's limits: `#include "/dev/zero"` makes cc1 ask for gigabytes, a generated source for hours.
 COMPILE_LIMITS = dict(cpu_seconds=60, memory_bytes=2 << 30, file_bytes=256 << 20)
 FILE_BYTES = 64 << 20  # the largest file a graded program may write
-# A case's recording, at rates that make recording every case cheaper than running a failed one
-# again to record it: the 100 Hz poses and 30 Hz LCD images of `eyesim run --record` cost 4-5 times
-# the simulation (PNG-encoding a changing LCD), these about a fifth of it.
-RECORDING_POSE_RATE = 50.0  # Hz of simulated time
-RECORDING_LCD_RATE = 10.0  # at most, per robot
+# A case is recorded while it is graded, at rates that keep that cheap: `eyesim run --record`'s
+# 100 Hz poses and 30 Hz LCD images cost 4-6 times the simulation (PNG-encoding a changing LCD),
+# these about as much as the simulation (the viewer interpolates between poses). That is less than
+# running the failed cases again to record them once about half of the cases fail.
+RECORDING_POSE_RATE = 25.0  # Hz of simulated time
+RECORDING_LCD_RATE = 5.0  # at most, per robot
 
 
 def _tail(text: str) -> str:
