@@ -1,18 +1,20 @@
 """Soak and load of a real `eyesim run` process (realtime, with its viewer), all on 127.0.0.1.
 
-Soak (--minutes, default 10): 50 well-behaved C programs (programs/poll_load.c: PSDGet and
-VWGetPosition in a loop) beside fuzzing clients that send random, mutated and truncated frames of
-every operation, browser tabs that open and close, and attackers (issue 25): bursts of idle
-sockets that never say HELLO (past the connection cap), and a program pipelining thousands of
-KEYWait requests without reading. Reported: calls served, errors, the
-well-behaved programs' worst latency, and the simulator's memory (RSS), file descriptors and
-threads before and after.
+Soak (--minutes, default 10): first a quiet baseline (--baseline-minutes, default 2) of 50
+well-behaved C programs (programs/poll_load.c: PSDGet and VWGetPosition in a loop) alone, then the
+same programs beside fuzzing clients that send random, mutated and truncated frames of every
+operation, browser tabs that open and close, and attackers (issue 25): bursts of idle sockets that
+never say HELLO (past the connection cap), a program pipelining thousands of KEYWait requests
+without reading, and handshakes with forged program tokens. The run requires its tokens, as a
+run does by default. Reported: calls served, errors, the well-behaved programs' p99 with the
+attackers against the quiet baseline of the same run (ratio), and the simulator's memory (RSS),
+file descriptors (named, when their count grows) and threads before and after.
 
 Load (--load, after the soak; --minutes 0 for the load alone): 100 programs connected at once each
 calling in a loop, 200 browser tabs opened at once and closed, 500 connect/disconnect cycles of
 programs. Each must be served with no failed call; descriptors and threads must come back.
 
-Run:  python3 bench/soak.py [--minutes 10] [--programs 50] [--load]
+Run:  python3 bench/soak.py [--minutes 10] [--baseline-minutes 2] [--programs 50] [--load]
       python3 bench/soak.py --minutes 0.5 --load        (a smoke run, about 2 minutes)
 Exit status 1 when a check fails. Every loop is bounded in count and in time."""
 
@@ -24,6 +26,7 @@ import json
 import os
 import random
 import re
+import statistics
 import struct
 import subprocess
 import sys
@@ -37,6 +40,7 @@ from common import BENCH, build_c, eyesim, print_table, write_results
 sys.path.insert(0, str(BENCH.parent / "tests"))
 from support.client import ProgramClient, RemoteError  # noqa: E402
 from support.memory import rss_mb  # noqa: E402
+from support.simulator import token_for  # noqa: E402
 
 from eyesim.protocol import encode_frame, encode_payload, generated as g  # noqa: E402
 
@@ -56,13 +60,14 @@ class Simulator:
         self.log_path = BENCH / "results" / f"{name}.log"
         self.log = open(self.log_path, "w")
         self.process = subprocess.Popen(eyesim("run", scene, "--port", "0", "--viewer-port", "0", "--clock",
-                                               "realtime", "--no-token"), stdout=subprocess.PIPE, stderr=self.log, text=True,
+                                               "realtime"), stdout=subprocess.PIPE, stderr=self.log, text=True,
                                         cwd=BENCH)
-        self.port = self.viewer_port = None
+        self.port = self.viewer_port = self.viewer_token = None
         deadline = time.monotonic() + 60
         for line in self.process.stdout:
-            found = re.search(r"viewer: http://[^:]+:(\d+)/", line)
-            self.viewer_port = int(found.group(1)) if found else self.viewer_port
+            found = re.search(r"viewer: http://[^:]+:(\d+)/\?token=(\S+)", line)
+            if found:
+                self.viewer_port, self.viewer_token = int(found.group(1)), found.group(2)
             found = re.search(r"programs connect to [\d.]+:(\d+)", line)
             if found:
                 self.port = int(found.group(1))
@@ -77,8 +82,13 @@ class Simulator:
     def resources(self) -> dict:
         pid = self.process.pid
         names = sorted(open(f"/proc/{pid}/task/{task}/comm").read().strip() for task in os.listdir(f"/proc/{pid}/task"))
-        return {"rss_mb": round(rss_mb(pid), 1), "fds": len(os.listdir(f"/proc/{pid}/fd")),
+        fds = sorted(_fd_target(pid, fd) for fd in os.listdir(f"/proc/{pid}/fd"))
+        return {"rss_mb": round(rss_mb(pid), 1), "fds": len(fds), "fd_targets": fds,
                 "threads": len(names), "thread_names": names}
+
+    @property
+    def program_token(self) -> str:
+        return token_for(self.port)
 
     def tracebacks(self) -> int:
         self.log.flush()
@@ -91,6 +101,13 @@ class Simulator:
         except subprocess.TimeoutExpired:
             self.process.kill()
         self.log.close()
+
+
+def _fd_target(pid: int, fd: str) -> str:
+    try:
+        return re.sub(r"\[\d+\]", "[...]", os.readlink(f"/proc/{pid}/fd/{fd}"))  # socket:[inode] -> socket:[...]
+    except OSError:
+        return "gone"
 
 
 def scene_file(robots: int) -> str:
@@ -109,7 +126,7 @@ def scene_file(robots: int) -> str:
 def start_programs(program, port: int, robots: range, seconds: float) -> list[subprocess.Popen]:
     return [subprocess.Popen([str(program), f"{seconds:g}"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                              text=True, env=dict(os.environ, EYESIM_HOST=HOST, EYESIM_PORT=str(port),
-                                                 EYESIM_ROBOT=str(robot)))
+                                                 EYESIM_ROBOT=str(robot), EYESIM_TOKEN=token_for(port)))
             for robot in robots]
 
 
@@ -133,7 +150,8 @@ def collect_programs(programs: list[subprocess.Popen], timeout: float) -> dict:
             failures.append(f"no result line: {out!r}")
     return {"programs": len(programs), "served": sum(1 for r in rows if r[0] > 0), "calls": int(sum(r[0] for r in rows)),
             "max_latency_ms": max((r[3] for r in rows), default=0) / 1000,
-            "worst_p99_ms": max((r[2] for r in rows), default=0) / 1000, "failures": failures}
+            "worst_p99_ms": max((r[2] for r in rows), default=0) / 1000,
+            "median_p99_ms": statistics.median(r[2] for r in rows) / 1000 if rows else 0, "failures": failures}
 
 
 # -- fuzz traffic -------------------------------------------------------------------------------------------
@@ -209,9 +227,9 @@ def fuzzer(port: int, robot: int, until: float, seed: int, counts: dict, lock: t
 
 
 # -- browser tabs ----------------------------------------------------------------------------------------------
-async def open_tab(session: aiohttp.ClientSession, port: int, read_for: float) -> bool:
+async def open_tab(session: aiohttp.ClientSession, port: int, token: str, read_for: float) -> bool:
     """Open the viewer's WebSocket, read for a while, close; True when the scene arrived."""
-    async with session.ws_connect(f"ws://{HOST}:{port}/ws", max_msg_size=0) as ws:
+    async with session.ws_connect(f"ws://{HOST}:{port}/ws?token={token}", max_msg_size=0) as ws:
         first = await ws.receive(timeout=30)
         ok = first.type == aiohttp.WSMsgType.TEXT and json.loads(first.data)["type"] == "scene"
         end = time.monotonic() + read_for
@@ -223,22 +241,22 @@ async def open_tab(session: aiohttp.ClientSession, port: int, read_for: float) -
         return ok
 
 
-async def tabs_coming_and_going(port: int, until: float) -> dict:
+async def tabs_coming_and_going(port: int, token: str, until: float) -> dict:
     """Tabs opened and closed one after another (each reads 0.5-3 s), two at a time."""
     rng = random.Random(7)
     opened = failed = 0
     async with aiohttp.ClientSession() as session:
         while time.monotonic() < until:
-            results = await asyncio.gather(*(open_tab(session, port, rng.uniform(0.5, 3)) for _ in range(2)),
+            results = await asyncio.gather(*(open_tab(session, port, token, rng.uniform(0.5, 3)) for _ in range(2)),
                                            return_exceptions=True)
             opened += len(results)
             failed += sum(1 for r in results if r is not True)
     return {"opened": opened, "failed": failed}
 
 
-async def many_tabs(port: int, count: int) -> dict:
+async def many_tabs(port: int, token: str, count: int) -> dict:
     async with aiohttp.ClientSession(connector=aiohttp.TCPConnector(limit=0)) as session:
-        results = await asyncio.wait_for(asyncio.gather(*(open_tab(session, port, 1.0) for _ in range(count)),
+        results = await asyncio.wait_for(asyncio.gather(*(open_tab(session, port, token, 1.0) for _ in range(count)),
                                                         return_exceptions=True), timeout=300)
     failures = [r for r in results if r is not True]
     return {"opened": count, "failed": len(failures),
@@ -246,12 +264,15 @@ async def many_tabs(port: int, count: int) -> dict:
 
 
 # -- the runs --------------------------------------------------------------------------------------------------
-def soak(minutes: float, programs: int, program) -> dict:
+def soak(minutes: float, baseline_minutes: float, programs: int, program) -> dict:
     seconds = minutes * 60
     simulator = Simulator(scene_file(programs + FUZZ_ROBOTS + 1), "soak")  # and one for the KEYWait flooder
     try:
         warm_up(simulator, programs + 1)
         before = simulator.resources()
+        quiet = collect_programs(start_programs(program, simulator.port, range(1, programs + 1), baseline_minutes * 60),
+                                 timeout=baseline_minutes * 60 + 120)
+        after_quiet = simulator.resources()
         start = time.monotonic()
         until = start + seconds
         well_behaved = start_programs(program, simulator.port, range(1, programs + 1), seconds)
@@ -259,8 +280,10 @@ def soak(minutes: float, programs: int, program) -> dict:
         lock = threading.Lock()
         fuzzers = [threading.Thread(target=fuzzer, args=(simulator.port, programs + 1 + k, until, k, counts, lock))
                    for k in range(FUZZ_ROBOTS)]
-        attacks = {"idle_sockets": 0, "idle_refused_or_closed": 0, "key_waits_sent": 0}
+        attacks = {"idle_sockets": 0, "idle_refused_or_closed": 0, "key_waits_sent": 0, "forged_tokens": 0,
+                   "forged_refused": 0}
         attackers = [threading.Thread(target=idle_sockets, args=(simulator.port, until, attacks, lock)),
+                     threading.Thread(target=forged_tokens, args=(simulator.port, until, attacks, lock)),
                      threading.Thread(target=key_wait_flood, args=(simulator.port, programs + FUZZ_ROBOTS + 1, until,
                                                                    attacks, lock))]
         for thread in fuzzers + attackers:
@@ -268,15 +291,18 @@ def soak(minutes: float, programs: int, program) -> dict:
         samples = []
         sampler = threading.Thread(target=sample_memory, args=(simulator, start, until, samples))
         sampler.start()
-        tabs = asyncio.run(tabs_coming_and_going(simulator.viewer_port, until))
+        tabs = asyncio.run(tabs_coming_and_going(simulator.viewer_port, simulator.viewer_token, until))
         result = collect_programs(well_behaved, timeout=seconds + 120)
         sampler.join(60)
         for thread in fuzzers + attackers:
             thread.join(60)
         time.sleep(SETTLE)
         after = simulator.resources()
-        return {"minutes": minutes, "well_behaved": result, "fuzz": counts, "attacks": attacks, "tabs": tabs,
-                "rss_mb_by_minute": samples,
+        return {"minutes": minutes, "well_behaved": result, "baseline": quiet, "baseline_minutes": baseline_minutes,
+                "p99_ratio": _ratio(result["median_p99_ms"], quiet["median_p99_ms"]),
+                "worst_p99_ratio": _ratio(result["worst_p99_ms"], quiet["worst_p99_ms"]),
+                "fuzz": counts, "attacks": attacks, "tabs": tabs,
+                "rss_mb_by_minute": samples, "after_baseline": after_quiet,
                 "before": before,
                 "after": after, "tracebacks": simulator.tracebacks(), "simulator_alive": simulator.process.poll() is None}
     finally:
@@ -310,6 +336,27 @@ def idle_sockets(port: int, until: float, attacks: dict, lock: threading.Lock) -
         with lock:
             attacks["idle_sockets"] += len(held)
             attacks["idle_refused_or_closed"] += closed
+
+
+def forged_tokens(port: int, until: float, attacks: dict, lock: threading.Lock) -> None:
+    """Handshakes with a wrong program token, ten a second: each must be refused (ERR_BAD_TOKEN)."""
+    rng = random.Random(25)
+    while time.monotonic() < until - 1:
+        refused = False
+        try:
+            client = ProgramClient(port, HOST, token="".join(rng.choice("abcdef0123456789") for _ in range(32)))
+            try:
+                client.hello()
+            except RemoteError as error:
+                refused = error.code == g.ERR_BAD_TOKEN
+            finally:
+                client.close()
+        except OSError:
+            pass  # refused at the connection cap while the idle sockets fill it
+        with lock:
+            attacks["forged_tokens"] += 1
+            attacks["forged_refused"] += refused
+        time.sleep(0.1)
 
 
 def key_wait_flood(port: int, robot: int, until: float, attacks: dict, lock: threading.Lock) -> None:
@@ -354,7 +401,7 @@ def warm_up(simulator: Simulator, robot: int) -> None:
     client.call("CAM_INIT", 1)
     client.call("CAM_GET")
     client.close()
-    asyncio.run(many_tabs(simulator.viewer_port, 2))
+    asyncio.run(many_tabs(simulator.viewer_port, simulator.viewer_token, 2))
     time.sleep(SETTLE)
 
 
@@ -364,7 +411,7 @@ def load(program) -> dict:
         warm_up(simulator, 1)
         before = simulator.resources()
         programs = collect_programs(start_programs(program, simulator.port, range(1, 101), 10), timeout=180)
-        tabs = asyncio.run(many_tabs(simulator.viewer_port, 200))
+        tabs = asyncio.run(many_tabs(simulator.viewer_port, simulator.viewer_token, 200))
         cycles = connect_cycles(simulator.port, 500)
         time.sleep(SETTLE)
         after = simulator.resources()
@@ -421,9 +468,9 @@ def checks(soaked: dict | None, loaded: dict | None) -> list[str]:
             problems.append(f"{name}: {run['tracebacks']} tracebacks in its log")
         for resource in ("fds", "threads"):
             if run["after"][resource] > run["before"][resource]:
-                problems.append(f"{name}: {resource} {run['before'][resource]} -> {run['after'][resource]}"
-                                + (f" {run['before']['thread_names']} -> {run['after']['thread_names']}"
-                                   if resource == "threads" else ""))
+                names = "thread_names" if resource == "threads" else "fd_targets"
+                problems.append(f"{name}: {resource} {run['before'][resource]} -> {run['after'][resource]}: "
+                                f"{_difference(run['before'][names], run['after'][names])}")
     if soaked:
         behaved = soaked["well_behaved"]
         if behaved["failures"] or behaved["served"] != behaved["programs"]:
@@ -431,6 +478,12 @@ def checks(soaked: dict | None, loaded: dict | None) -> list[str]:
                             f"failures {behaved['failures'][:3]}")
         if soaked["tabs"]["failed"]:
             problems.append(f"soak: {soaked['tabs']['failed']} tabs failed")
+        quiet = soaked["baseline"]
+        if quiet["failures"] or quiet["served"] != quiet["programs"]:
+            problems.append(f"soak baseline: {quiet['served']}/{quiet['programs']} served, failures {quiet['failures'][:3]}")
+        attacks = soaked["attacks"]
+        if attacks["forged_refused"] < attacks["forged_tokens"] * 0.5:
+            problems.append(f"soak: only {attacks['forged_refused']} of {attacks['forged_tokens']} forged tokens refused")
     if loaded:
         programs = loaded["programs"]
         if programs["failures"] or programs["served"] != programs["programs"]:
@@ -444,11 +497,14 @@ def checks(soaked: dict | None, loaded: dict | None) -> list[str]:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--minutes", type=float, default=10.0, help="length of the soak (0: none)")
+    parser.add_argument("--baseline-minutes", type=float, default=2.0,
+                        help="the well-behaved programs alone first, the baseline of their p99")
     parser.add_argument("--programs", type=int, default=50, help="well-behaved C programs during the soak")
     parser.add_argument("--load", action="store_true", help="also the load scenario (100 programs, 200 tabs, 500 cycles)")
     arguments = parser.parse_args()
     program = build_c(BENCH / "programs" / "poll_load.c", BUILD / "poll_load")
-    soaked = soak(arguments.minutes, arguments.programs, program) if arguments.minutes > 0 else None
+    soaked = (soak(arguments.minutes, arguments.baseline_minutes, arguments.programs, program)
+              if arguments.minutes > 0 else None)
     if soaked:
         behaved, fuzz = soaked["well_behaved"], soaked["fuzz"]
         print_table(f"Soak: {arguments.minutes:g} min, {arguments.programs} well-behaved programs, "
@@ -457,11 +513,17 @@ def main() -> None:
                         ("programs served", f"{behaved['served']}/{behaved['programs']}"),
                         ("max latency (ms)", f"{behaved['max_latency_ms']:.1f}"),
                         ("worst p99 (ms)", f"{behaved['worst_p99_ms']:.2f}"),
+                        ("median p99 / worst p99, quiet baseline (ms)",
+                         f"{soaked['baseline']['median_p99_ms']:.2f} / {soaked['baseline']['worst_p99_ms']:.2f}"),
+                        ("p99 with attackers / quiet: median, worst",
+                         f"{soaked['p99_ratio']:.2f}, {soaked['worst_p99_ratio']:.2f}"),
                         ("fuzz frames / connections", f"{fuzz['sent']} / {fuzz['connections']}"),
                         ("fuzz replies / error replies", f"{fuzz['replies']} / {fuzz['error_replies']}"),
                         ("idle sockets / refused or closed", f"{soaked['attacks']['idle_sockets']} / "
                                                              f"{soaked['attacks']['idle_refused_or_closed']}"),
                         ("KEYWait requests pipelined", soaked["attacks"]["key_waits_sent"]),
+                        ("forged tokens / refused", f"{soaked['attacks']['forged_tokens']} / "
+                                                    f"{soaked['attacks']['forged_refused']}"),
                         ("tabs opened / failed", f"{soaked['tabs']['opened']} / {soaked['tabs']['failed']}"),
                         *_resources(soaked), ("tracebacks in the log", soaked["tracebacks"]),
                         ("RSS (MB) by minute", " ".join(f"{m:g}:{mb:.0f}" for m, mb in soaked["rss_mb_by_minute"]))],
@@ -479,6 +541,22 @@ def main() -> None:
     write_results("soak", {"soak": soaked, "load": loaded, "problems": problems})
     print("\n" + ("\n".join(problems) if problems else "all checks passed"))
     sys.exit(1 if problems else 0)
+
+
+def _ratio(value: float, baseline: float) -> float:
+    return value / baseline if baseline else float("inf")
+
+
+def _difference(before: list[str], after: list[str]) -> str:
+    """What `after` has more of than `before` (descriptor targets, thread names)."""
+    left = list(before)
+    extra = []
+    for item in after:
+        if item in left:
+            left.remove(item)
+        else:
+            extra.append(item)
+    return ", ".join(extra) or "(none new)"
 
 
 def _resources(run: dict) -> list[tuple]:
