@@ -38,9 +38,11 @@ build/demo: src/eyesim/examples/programs/demo.c $(INSTALLED)
 	$(BIN)/eyesim cc -O2 -Wall -Wextra src/eyesim/examples/programs/demo.c -o $@
 
 # Debian packages the tests need, installed when missing (needs root): headless Chromium for the
-# browser tests, software OpenGL (EGL and OSMesa) for the cameras' OpenGL renderer, and bubblewrap
-# for the grader's sandbox.
-SYSTEM_PACKAGES := chromium libegl1 libgl1-mesa-dri libosmesa6 bubblewrap
+# browser tests, software OpenGL (EGL and OSMesa) for the cameras' OpenGL renderer, bubblewrap
+# for the grader's sandbox, and Node.js with npm for the viewer's type check (`make lint`) unless
+# npm is already there (from NodeSource or nvm, say).
+NODE_PACKAGES := $(if $(shell command -v npm),,nodejs npm)
+SYSTEM_PACKAGES := chromium libegl1 libgl1-mesa-dri libosmesa6 bubblewrap $(NODE_PACKAGES)
 
 .PHONY: system-packages
 system-packages:
@@ -77,9 +79,19 @@ $(VENV)/.ziglang: $(BIN)/python
 	$(BIN)/pip install --quiet "ziglang>=0.13"
 	touch $@
 
-# Pyflakes-level checks of the Python code (pyproject.toml [tool.ruff]): unused or undefined names.
-lint: $(INSTALLED)
+# The checks `make test` starts with (docs/developing.md, "Checks"): pyflakes-level checks of the
+# Python code (ruff: unused or undefined names), the types of the packages pyproject.toml's
+# [tool.mypy] lists (mypy), and the types of the viewer's TypeScript (tsc --noEmit).
+lint: $(INSTALLED) web/node_modules/.package-lock.json
 	$(BIN)/ruff check src tests bench tools protocol
+	$(BIN)/mypy
+	cd web && npm run --silent typecheck
+
+# The viewer's npm packages as web/package-lock.json pins them, from the npm registry; Node.js and
+# npm from Debian when there is no npm (NODE_PACKAGES).
+web/node_modules/.package-lock.json: web/package-lock.json
+	@$(MAKE) --no-print-directory system-packages SYSTEM_PACKAGES="$(NODE_PACKAGES)"
+	cd web && npm ci --no-audit --no-fund
 
 # Rebuild the browser bundle committed in src/eyesim/web/static (needs Node.js and npm).
 viewer:

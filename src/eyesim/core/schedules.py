@@ -273,6 +273,7 @@ class LockstepSchedule:
         session.woke(time.perf_counter())
 
     def several_threads(self, session: Session) -> None:
+        assert session.robot is not None  # asked only once the handshake has bound a robot
         log.warning("robot %d (%s): RoBIOS calls come from more than one thread of the program; their "
                     "order follows the operating system's scheduling, so this deterministic run may not "
                     "repeat exactly (docs/running.md#time)", session.robot.id, session.program or "program")

@@ -5,9 +5,12 @@ from __future__ import annotations
 import logging
 from collections import deque
 from dataclasses import dataclass, field
-from typing import Callable, Protocol
+from typing import TYPE_CHECKING, Callable, Protocol
 
 from eyesim.protocol.ops import OpSpec
+
+if TYPE_CHECKING:
+    from eyesim.robot.robot import Robot
 
 log = logging.getLogger("eyesim")
 BUSY_WAIT_GRACE = 0.5  # s of wall time; see Session.blocked
@@ -19,7 +22,8 @@ class Connection(Protocol):
 
     def send(self, data: bytes) -> None: ...
 
-    def close(self) -> None: ...
+    def close(self, flush: bool = False) -> None:
+        """Close the connection; with `flush`, first send what is queued for it."""
 
     def resume(self) -> None:
         """A queued request was taken: there may be room to read more."""
@@ -69,6 +73,8 @@ class Deferred(Pending):
     that time, so the reply comes at the same simulation time in every run. `answered()` runs on
     the simulation thread when it leaves."""
 
+    wake_us: int  # 0 until the engine sets it (Schedule.defer)
+
     def __init__(self, work, answered: Callable[[], None] = lambda: None):
         # not Pending.__init__: a bound method kept on the instance would make a reference cycle,
         # and the frame's megabytes would wait for the garbage collector
@@ -89,7 +95,7 @@ class Deferred(Pending):
 class Session:
     connection: Connection
     peer: str = ""
-    robot: object | None = None  # the Robot, once the handshake bound one
+    robot: Robot | None = None  # once the handshake bound one
     program: str = ""
     pid: int = 0
     local_time_us: int = 0  # the program's own clock in deterministic mode
@@ -160,6 +166,7 @@ class Session:
             if now_wall - self.last_request_wall <= BUSY_WAIT_GRACE:
                 return True
             self.timer_starting = False
+            self.last_request_wall = now_wall  # the busy-wait grace (blocked) starts now, not at the last call
             log.warning("%s: the library's timer thread made no call; timers will not run", self.name)
         return not self.next_queue() and not self.blocked(now_wall)
 
