@@ -75,6 +75,13 @@ def segment_distance(point: np.ndarray, start: np.ndarray, end: np.ndarray) -> f
     return float(np.linalg.norm(start + t * along - point))
 
 
+STANDING_STILL = """() => {
+    const pose = window.eyesimViewer.robotPose(1), last = window.lastPlace;
+    if (!last || Math.hypot(...pose.pos.map((v, i) => v - last.pos[i])) > 1e-4) window.lastPlace = pose;
+    return pose.time - window.lastPlace.time >= 0.2;
+}"""  # robot 1 has moved under 0.1 mm for 0.2 s of simulation time
+
+
 def click_beside_psd_beam(page, robot: int, psd: int, beside: float = 4.0) -> None:
     """Clicks `beside` pixels off the drawn beam of the robot's PSD, at a point of its outer part
     that is at least 12 px from every other PSD beam (so only this one can be meant)."""
@@ -180,6 +187,7 @@ def test_clicking_a_psd_beam_in_a_live_run_plots_it_without_moving_the_robot(bro
         page.click("#plots-toggle")
         page.wait_for_function("() => window.eyesimViewer.consoleText(1).includes('done')", timeout=20_000)
         page.wait_for_function(WORLD_VIEW_SIZED)
+        page.wait_for_function(STANDING_STILL)  # it may coast a little after its last VWSetSpeed
         pose = viewer.state("robotPose", 1)["pos"]
         click_beside_psd_beam(page, robot=1, psd=1)
         page.wait_for_function("() => window.eyesimViewer.plotted().length === 1")
