@@ -11,6 +11,7 @@ from pathlib import Path
 import pytest
 from browser import open_viewer, robot_panel
 from browser import save_screenshot as screenshot
+from test_scene_switch_browser import open_scene
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.programs import simulator_with_viewer  # noqa: E402
@@ -111,6 +112,7 @@ def test_edit_compile_fix_save_and_restart_from_the_page(browser_context, tmp_pa
 def test_a_refused_file_and_a_robot_without_a_program_say_why(browser_context, tmp_path):
     shutil.copy(SCENES_DIR / "arena.wld", tmp_path)
     (tmp_path / "lab.sim").write_text("world arena.wld\nS4 500 500 0\n")
+    (tmp_path / "street.sim").write_text("world arena.wld\nCar 500 500 0\n")
     (tmp_path / "wander.py").write_text("from eye import *\nLCDPrintf('wander')\nif True\n    pass\n")
     with simulator_with_viewer("lab.sim", cwd=tmp_path) as (_, url):
         viewer = open_viewer(browser_context, url)
@@ -138,4 +140,11 @@ def test_a_refused_file_and_a_robot_without_a_program_say_why(browser_context, t
             assert box["x"] <= inner["x"] and inner["x"] + inner["width"] <= box["x"] + box["width"] + 0.5, control
             assert box["y"] <= inner["y"] < box["y"] + box["height"], control
         screenshot(page, "program-editor-1024x700")
+        # Another scene: its robot 1 is not the one the editor was opened for; the file stays open.
+        open_scene(page, "street.sim")
+        page.wait_for_function(f"() => {EDITOR}.robot === null && {EDITOR}.file === 'wander.py'")
+        assert "is gone" in page.evaluate(f"() => {EDITOR}")["message"]
+        assert editor.locator(".program-editor-restart").is_disabled()
+        assert not editor.locator(".program-editor-compile").is_disabled()
+        screenshot(page, "program-editor-scene-switched")
         assert viewer.errors == []

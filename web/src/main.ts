@@ -31,6 +31,7 @@ document.addEventListener(EDIT_PROGRAM, (event) => {
   programEditor ??= import("./program_editor/program_editor").then(({ ProgramEditor }) => {
     const editor = new ProgramEditor(byId("world").parentElement!, viewer.panels.catalog);
     viewer.connectionWatchers.push((connected) => editor.setEnabled(connected));
+    viewer.sceneWatchers.push((scene) => editor.sceneChanged(scene.new_scene, scene.robots.map((r) => r.id)));
     (window as unknown as { eyesimProgramEditor: ProgramEditor }).eyesimProgramEditor = editor;
     return editor;
   });

@@ -151,6 +151,15 @@ export class ProgramEditor {
     this.robot = null;
   }
 
+  /** Another scene, or the same one with other robots: a robot that is not the same one any more
+   * is let go (Restart off; the file stays open to save and compile). */
+  sceneChanged(newScene: boolean, robots: number[]): void {
+    if (this.robot === null || (!newScene && robots.includes(this.robot))) return;
+    this.say(`robot ${this.robot} of the last scene is gone: Restart is off, Save and Compile still work`, "");
+    this.robot = null;
+    this.updateButtons();
+  }
+
   /** Off while disconnected: nothing can be saved or run. */
   setEnabled(enabled: boolean): void {
     this.enabled = enabled;
@@ -312,7 +321,8 @@ export class ProgramEditor {
     this.compileButton.disabled = off || this.file?.kind === "header";
     this.restartButton.disabled = off || this.file?.kind === "header" || this.robot === null;
     this.choice.disabled = !this.enabled || this.busy;
-    this.title.textContent = this.file ? `${this.file.path}${this.dirty ? " •" : ""} · robot ${this.robot}` : `robot ${this.robot ?? ""}`;
+    const robot = this.robot === null ? "" : `robot ${this.robot}`;
+    this.title.textContent = this.file ? `${this.file.path}${this.dirty ? " •" : ""}${robot ? ` · ${robot}` : ""}` : robot;
     this.title.title = this.dirty ? "unsaved changes" : "";
   }
 
