@@ -174,6 +174,7 @@ def test_inspector_snapping_moved_clear_clean_save_and_one_recording(browser_con
         page.fill("#save-name", "saved.sim")
         page.click("#save-confirm")
         wait_for_edits(page, count + 5)
+        page.wait_for_function("() => document.querySelector('#scene-name').textContent === 'saved.sim'")
         saved = load_scene(room / "saved.sim")
         assert [d.code for d in saved.warnings] == []
         assert [(r.pose.x, r.pose.y, r.pose.phi) for r in saved.robots] == \

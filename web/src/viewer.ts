@@ -178,6 +178,11 @@ export class Viewer {
     }
   }
 
+  /** The running scene now has this file name (saved under a new one). */
+  showSceneName(name: string): void {
+    this.toolbar.showSceneName(name);
+  }
+
   /** Looking at a recording or the past, rather than following a live run. */
   private get reviewing(): boolean {
     return this.timeline.current.mode !== "live";

@@ -534,5 +534,7 @@ export class SceneEditor {
       return state;
     });
     if (saved.length) this.say(`Saved ${saved.map((p) => placeText(p, this.roots)).join(" and ")}`, false);
+    const scene = saved.find((p) => /\.(sim|json)$/i.test(p.path));
+    if (scene) this.viewer.showSceneName(scene.path.split("/").pop()!); // the toolbar names what was saved
   }
 }
