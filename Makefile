@@ -80,10 +80,11 @@ $(VENV)/.ziglang: $(BIN)/python
 	touch $@
 
 # The checks `make test` starts with (docs/developing.md, "Checks"): pyflakes-level checks of the
-# Python code (ruff: unused or undefined names), the types of the packages pyproject.toml's
+# Python code (ruff: unused or undefined names), its layout (ruff format), the types of the packages pyproject.toml's
 # [tool.mypy] lists (mypy), and the types of the viewer's TypeScript (tsc --noEmit).
 lint: $(INSTALLED) web/node_modules/.package-lock.json
 	$(BIN)/ruff check src tests bench tools protocol
+	$(BIN)/ruff format --check src tests bench tools protocol
 	$(BIN)/mypy
 	cd web && npm run --silent typecheck
 

@@ -81,7 +81,9 @@ class OneThreadClient:
         self.sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
         self.sock.setblocking(False)
         self.decoder = FrameDecoder()
-        self.call(encode_message(g.OP_HELLO, g.KIND_REQUEST, 1, (g.VERSION, "1", "bench", os.getpid(), self.server.token)))
+        self.call(
+            encode_message(g.OP_HELLO, g.KIND_REQUEST, 1, (g.VERSION, "1", "bench", os.getpid(), self.server.token))
+        )
 
     def call(self, frame: bytes) -> None:
         self.sock.send(frame)
@@ -109,8 +111,11 @@ def main() -> int:
     results = {"bare_sockets_us": bare_sockets(args.calls) * 1e6}
     client = OneThreadClient()
     try:
-        for name, op, values in (("OSGetCount", g.OP_OS_GET_COUNT, ()), ("PSDGet", g.OP_PSD_GET, (1,)),
-                                 ("VWGetPosition", g.OP_VW_GET_POSITION, ())):
+        for name, op, values in (
+            ("OSGetCount", g.OP_OS_GET_COUNT, ()),
+            ("PSDGet", g.OP_PSD_GET, (1,)),
+            ("VWGetPosition", g.OP_VW_GET_POSITION, ()),
+        ):
             frame = encode_message(op, g.KIND_REQUEST, 2, values)
             results[f"{name}_us"] = best_cpu_per_call(lambda: client.call(frame), args.calls) * 1e6
     finally:
@@ -118,8 +123,11 @@ def main() -> int:
     base = results["bare_sockets_us"]
     rows = [("socket calls alone (baseline)", f"{base:.1f}", "")]
     rows += [(name[:-3], f"{us:.1f}", f"{us - base:.1f}") for name, us in results.items() if name != "bare_sockets_us"]
-    print_table(f"CPU per call, one thread, best of {REPEATS} x {args.calls} (us)", rows,
-                ("call", "CPU per call", "beyond the socket calls"))
+    print_table(
+        f"CPU per call, one thread, best of {REPEATS} x {args.calls} (us)",
+        rows,
+        ("call", "CPU per call", "beyond the socket calls"),
+    )
     print(f"wrote {write_results('call_path', results)}")
     return 0
 

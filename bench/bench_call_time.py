@@ -30,9 +30,13 @@ def run_program(script, call_time: float) -> tuple[float, float, int]:
     """(simulated ms, wall ms, iterations) of one program run: the best real-time factor of REPEATS."""
     best = None
     for _ in range(REPEATS):
-        result = subprocess.run(eyesim("run", "--headless", "--port", "0", "--call-time", f"{call_time:g}",
-                                       "--program", f"1={script}"),
-                                capture_output=True, text=True, cwd=BENCH, timeout=300)
+        result = subprocess.run(
+            eyesim("run", "--headless", "--port", "0", "--call-time", f"{call_time:g}", "--program", f"1={script}"),
+            capture_output=True,
+            text=True,
+            cwd=BENCH,
+            timeout=300,
+        )
         line = next((line for line in result.stdout.splitlines() if line.startswith("[robot 1] ")), None)
         if result.returncode != 0 or line is None:
             raise RuntimeError(f"{script.name} with --call-time {call_time:g} failed:\n{result.stdout}{result.stderr}")
@@ -58,20 +62,39 @@ def main() -> int:
             simulated, wall, iterations = run_program(script, call_time)
             factor = simulated / wall
             baseline = baseline or factor
-            entry = {"simulated_ms": simulated, "wall_ms": wall, "iterations": iterations,
-                     "real_time_factor": factor, "vs_baseline": factor / baseline}
+            entry = {
+                "simulated_ms": simulated,
+                "wall_ms": wall,
+                "iterations": iterations,
+                "real_time_factor": factor,
+                "vs_baseline": factor / baseline,
+            }
             pause = ""
             if mode == "count":
                 entry["vs_eyesim_v2"] = simulated / (1000 * EYESIM_V2_CALL_MS)
                 pause = f"{entry['vs_eyesim_v2']:.2f}"
             results.setdefault(mode, {})[f"{call_time:g}"] = entry
-            rows.append((mode, f"{call_time:g}", f"{simulated:.0f}", f"{wall:.0f}", iterations, f"{factor:.1f}x",
-                         f"{factor / baseline:.2f}", pause))
-    print_table("Per-call time: deterministic headless runs (best of 3)", rows,
-                ("program", "call ms", "sim ms", "wall ms", "iterations", "real time", "vs call time 0",
-                 "pause vs EyeSim V2"))
-    print(f"EyeSim V2: {EYESIM_V2_CALL_MS} ms per call, so the 1000-call pause took about "
-          f"{EYESIM_V2_CALL_MS:.1f} s; targets: poll >= 10x, lab >= 50x real time")
+            rows.append(
+                (
+                    mode,
+                    f"{call_time:g}",
+                    f"{simulated:.0f}",
+                    f"{wall:.0f}",
+                    iterations,
+                    f"{factor:.1f}x",
+                    f"{factor / baseline:.2f}",
+                    pause,
+                )
+            )
+    print_table(
+        "Per-call time: deterministic headless runs (best of 3)",
+        rows,
+        ("program", "call ms", "sim ms", "wall ms", "iterations", "real time", "vs call time 0", "pause vs EyeSim V2"),
+    )
+    print(
+        f"EyeSim V2: {EYESIM_V2_CALL_MS} ms per call, so the 1000-call pause took about "
+        f"{EYESIM_V2_CALL_MS:.1f} s; targets: poll >= 10x, lab >= 50x real time"
+    )
     print(f"wrote {write_results('call_time', results)}")
     return 0
 

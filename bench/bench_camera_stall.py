@@ -65,8 +65,13 @@ def timed_round_trip(client: ProgramClient) -> tuple[float, float]:
 
 def describe(samples: list[float]) -> dict:
     ordered = sorted(samples)
-    return {"calls": len(samples), "median_ms": statistics.median(samples), "p99_ms": quantile(ordered, 0.99),
-            "p999_ms": quantile(ordered, 0.999), "max_ms": ordered[-1]}
+    return {
+        "calls": len(samples),
+        "median_ms": statistics.median(samples),
+        "p99_ms": quantile(ordered, 0.99),
+        "p999_ms": quantile(ordered, 0.999),
+        "max_ms": ordered[-1],
+    }
 
 
 def quantile(ordered: list[float], q: float) -> float:
@@ -96,19 +101,37 @@ def main() -> int:
             stop(simulator)
     times = list(times)
     first_frame_at, times = times[-1], times[:-1]
-    phases = {"alone": describe(baseline),
-              "CAMInit and the first frame": describe([ms for at, ms in during if at <= first_frame_at]),
-              "the later frames": describe([ms for at, ms in during if at > first_frame_at])}
+    phases = {
+        "alone": describe(baseline),
+        "CAMInit and the first frame": describe([ms for at, ms in during if at <= first_frame_at]),
+        "the later frames": describe([ms for at, ms in during if at > first_frame_at]),
+    }
     alone = phases["alone"]
     for r in phases.values():
         r["p99_ratio"], r["p999_ratio"] = r["p99_ms"] / alone["p99_ms"], r["p999_ms"] / alone["p999_ms"]
-    rows = [(name, r["calls"], f"{r['median_ms']:.3f}", f"{r['p99_ms']:.3f}", f"{r['p999_ms']:.3f}", f"{r['max_ms']:.1f}",
-             f"{r['p99_ratio']:.2f}", f"{r['p999_ratio']:.2f}") for name, r in phases.items()]
-    print_table("Program B's PSDGet round trip (ms)", rows,
-                ("while", "calls", "median", "p99", "p99.9", "max", "p99 / alone", "p99.9 / alone"))
+    rows = [
+        (
+            name,
+            r["calls"],
+            f"{r['median_ms']:.3f}",
+            f"{r['p99_ms']:.3f}",
+            f"{r['p999_ms']:.3f}",
+            f"{r['max_ms']:.1f}",
+            f"{r['p99_ratio']:.2f}",
+            f"{r['p999_ratio']:.2f}",
+        )
+        for name, r in phases.items()
+    ]
+    print_table(
+        "Program B's PSDGet round trip (ms)",
+        rows,
+        ("while", "calls", "median", "p99", "p99.9", "max", "p99 / alone", "p99.9 / alone"),
+    )
     frames = times[1:]
-    print(f"\nProgram A: CAMInit(CAM5MP) {times[0]:.1f} ms; CAMGet first {frames[0]:.0f} ms, then median "
-          f"{statistics.median(frames[1:]):.0f} ms ({len(frames)} frames)")
+    print(
+        f"\nProgram A: CAMInit(CAM5MP) {times[0]:.1f} ms; CAMGet first {frames[0]:.0f} ms, then median "
+        f"{statistics.median(frames[1:]):.0f} ms ({len(frames)} frames)"
+    )
     write_results("camera_stall", {"other_program": phases, "cam_init_ms": times[0], "cam_get_ms": frames})
     return 0
 

@@ -102,11 +102,26 @@ def main() -> None:
 
         # Baseline: the correct submission's case alone, as `eyesim run` runs it.
         good = tmp / "good"
-        subprocess.run(eyesim("cc", "-O2", str(EXAMPLES_DIR / "programs" / "wall_follow.c"), "-o", str(good)),
-                       check=True, cwd=tmp)
-        alone, alone_cpu = min(timed(eyesim("run", "--headless", "--port", "0", str(EXAMPLES_DIR / "scenes" / "wall_follow.sim"),
-                                 "--program", f"1={good}", "--key", f"1:KEY4@{args.seconds - 5:g}"), tmp)
-                    for _ in range(3))  # ends when the program does, as the grader's case does
+        subprocess.run(
+            eyesim("cc", "-O2", str(EXAMPLES_DIR / "programs" / "wall_follow.c"), "-o", str(good)), check=True, cwd=tmp
+        )
+        alone, alone_cpu = min(
+            timed(
+                eyesim(
+                    "run",
+                    "--headless",
+                    "--port",
+                    "0",
+                    str(EXAMPLES_DIR / "scenes" / "wall_follow.sim"),
+                    "--program",
+                    f"1={good}",
+                    "--key",
+                    f"1:KEY4@{args.seconds - 5:g}",
+                ),
+                tmp,
+            )
+            for _ in range(3)
+        )  # ends when the program does, as the grader's case does
 
         runs = {}
         configurations = [("local, 1 worker", ["--workers", "1"]), ("local, 2 workers", ["--workers", "2"])]
@@ -114,42 +129,77 @@ def main() -> None:
             configurations.append(("Dask local:2", ["--cluster", "local:2"]))
         for name, options in configurations:
             out = tmp / name.replace(" ", "").replace(",", "-").replace(":", "")
-            seconds, cpu = timed(eyesim("grade", str(spec), str(tmp / "submissions"), "--out", str(out), "--fresh",
-                                   *options), tmp)
+            seconds, cpu = timed(
+                eyesim("grade", str(spec), str(tmp / "submissions"), "--out", str(out), "--fresh", *options), tmp
+            )
             in_cases = cases_cpu(out) if sandbox.bwrap() is not None else 0.0
             grader_cpu, cpu = cpu, cpu + in_cases
-            runs[name] = {"seconds": seconds, "cases": 2 * args.count,
-                          "submissions_per_minute": args.count / seconds * 60, "cpu_seconds": cpu,
-                          "grader_cpu_seconds": grader_cpu, "cases_cpu_seconds": in_cases,
-                          "cpu_bound_submissions_per_minute": 2 * 60 * args.count / cpu,
-                          "case_seconds": {status: statistics.fmean(values)
-                                           for status, values in case_times(out).items()},
-                          "case_cpu_seconds": {status: statistics.fmean(values)
-                                               for status, values in case_times(out, "cpu_seconds").items()},
-                          "scores": {s["name"]: s["score"] for s in json.loads((out / "report.json").read_text())["students"]}}
+            runs[name] = {
+                "seconds": seconds,
+                "cases": 2 * args.count,
+                "submissions_per_minute": args.count / seconds * 60,
+                "cpu_seconds": cpu,
+                "grader_cpu_seconds": grader_cpu,
+                "cases_cpu_seconds": in_cases,
+                "cpu_bound_submissions_per_minute": 2 * 60 * args.count / cpu,
+                "case_seconds": {status: statistics.fmean(values) for status, values in case_times(out).items()},
+                "case_cpu_seconds": {
+                    status: statistics.fmean(values) for status, values in case_times(out, "cpu_seconds").items()
+                },
+                "scores": {s["name"]: s["score"] for s in json.loads((out / "report.json").read_text())["students"]},
+            }
         first = next(iter(runs.values()))["scores"]
         identical = all(run["scores"] == first for run in runs.values())
-        results = {"submissions": args.count, "cases_per_submission": 2, "simulated_seconds": args.seconds,
-                   "eyesim_run_alone_seconds": alone,
-                   "eyesim_run_alone_cpu_seconds": alone_cpu, "runs": runs, "identical_scores": identical,
-                   "scaling_1_to_2": runs["local, 1 worker"]["seconds"] / runs["local, 2 workers"]["seconds"]}
-        rows = [(name, f"{run['seconds']:.1f} s", f"{run['submissions_per_minute']:.1f}", f"{run['cpu_seconds']:.1f} s",
-                 f"{run['cpu_bound_submissions_per_minute']:.1f}",
-                 f"{run['case_seconds'].get('ok', float('nan')):.2f} s",
-                 f"{run['case_seconds'].get('ok', float('nan')) / alone:.2f}")
-                for name, run in runs.items()]
-        print_table(f"{args.count} submissions x 2 cases, {args.seconds:g} s simulated; "
-                    f"the correct case alone with eyesim run: {alone:.2f} s ({alone_cpu:.2f} s CPU)",
-                    rows, ("configuration", "wall time", "submissions/min", "CPU time", "cpu-bound submissions/min",
-                           "ok case in grader", "x alone"))
+        results = {
+            "submissions": args.count,
+            "cases_per_submission": 2,
+            "simulated_seconds": args.seconds,
+            "eyesim_run_alone_seconds": alone,
+            "eyesim_run_alone_cpu_seconds": alone_cpu,
+            "runs": runs,
+            "identical_scores": identical,
+            "scaling_1_to_2": runs["local, 1 worker"]["seconds"] / runs["local, 2 workers"]["seconds"],
+        }
+        rows = [
+            (
+                name,
+                f"{run['seconds']:.1f} s",
+                f"{run['submissions_per_minute']:.1f}",
+                f"{run['cpu_seconds']:.1f} s",
+                f"{run['cpu_bound_submissions_per_minute']:.1f}",
+                f"{run['case_seconds'].get('ok', float('nan')):.2f} s",
+                f"{run['case_seconds'].get('ok', float('nan')) / alone:.2f}",
+            )
+            for name, run in runs.items()
+        ]
+        print_table(
+            f"{args.count} submissions x 2 cases, {args.seconds:g} s simulated; "
+            f"the correct case alone with eyesim run: {alone:.2f} s ({alone_cpu:.2f} s CPU)",
+            rows,
+            (
+                "configuration",
+                "wall time",
+                "submissions/min",
+                "CPU time",
+                "cpu-bound submissions/min",
+                "ok case in grader",
+                "x alone",
+            ),
+        )
         print(f"scaling 1 -> 2 workers: {results['scaling_1_to_2']:.2f}x; identical scores: {identical}")
         for name, run in runs.items():
-            print(f"  {name}: CPU seconds of the grader {run['grader_cpu_seconds']:.1f}, "
-                  f"of the cases {run['cases_cpu_seconds']:.1f}")
-            print(f"  {name}: mean seconds per case by status: "
-                  + ", ".join(f"{k} {v:.2f}" for k, v in sorted(run["case_seconds"].items())))
-            print(f"  {name}: mean CPU seconds per case by status: "
-                  + ", ".join(f"{k} {v:.2f}" for k, v in sorted(run["case_cpu_seconds"].items())))
+            print(
+                f"  {name}: CPU seconds of the grader {run['grader_cpu_seconds']:.1f}, "
+                f"of the cases {run['cases_cpu_seconds']:.1f}"
+            )
+            print(
+                f"  {name}: mean seconds per case by status: "
+                + ", ".join(f"{k} {v:.2f}" for k, v in sorted(run["case_seconds"].items()))
+            )
+            print(
+                f"  {name}: mean CPU seconds per case by status: "
+                + ", ".join(f"{k} {v:.2f}" for k, v in sorted(run["case_cpu_seconds"].items()))
+            )
         print(f"results: {write_results('grading', results)}")
 
 

@@ -30,9 +30,22 @@ def build_speed_program() -> Path:
     robios = BENCH.parent / "robios"
     output = BUILD / "ip_speed"
     BUILD.mkdir(parents=True, exist_ok=True)
-    subprocess.run(["cc", "-O2", "-std=c11", "-D_GNU_SOURCE", f"-I{robios / 'include'}", f"-I{robios / 'src'}",
-                    str(BENCH / "programs" / "ip_speed.c"), str(robios / "src" / "ip.c"), "-o", str(output),
-                    "-lpthread"], check=True)
+    subprocess.run(
+        [
+            "cc",
+            "-O2",
+            "-std=c11",
+            "-D_GNU_SOURCE",
+            f"-I{robios / 'include'}",
+            f"-I{robios / 'src'}",
+            str(BENCH / "programs" / "ip_speed.c"),
+            str(robios / "src" / "ip.c"),
+            "-o",
+            str(output),
+            "-lpthread",
+        ],
+        check=True,
+    )
     return output
 
 
@@ -67,8 +80,10 @@ def python_layer() -> dict[str, dict[str, float]]:
         "IPCol2Gray": (lambda: eye.IPCol2Gray(colour), lambda: raw.IPCol2Gray(colour, out)),
         "IPPRGB2Hue": (lambda: eye.IPPRGB2Hue(10, 200, 30), lambda: raw.IPPRGB2Hue(10, 200, 30)),
     }
-    return {name: {"eye_us": best_of(200, wrapped), "ctypes_us": best_of(200, plain)}
-            for name, (wrapped, plain) in calls.items()}
+    return {
+        name: {"eye_us": best_of(200, wrapped), "ctypes_us": best_of(200, plain)}
+        for name, (wrapped, plain) in calls.items()
+    }
 
 
 PYTHON_ROUNDTRIP = textwrap.dedent("""
@@ -134,21 +149,32 @@ def main() -> int:
     for name in RESOLUTIONS:
         speeds = results["c"][name]
         rows = [(f, f"{us:.0f}", f"{us / speeds['memcpy']:.1f}x") for f, us in speeds.items()]
-        print_table(f"C image processing, {name} (microseconds per call, best of 5)", rows,
-                    ("function", "us", "vs memcpy"))
+        print_table(
+            f"C image processing, {name} (microseconds per call, best of 5)", rows, ("function", "us", "vs memcpy")
+        )
         print()
     results["python_layer"] = python_layer()
-    rows = [(f, f"{r['eye_us']:.1f}", f"{r['ctypes_us']:.1f}", f"{r['eye_us'] / r['ctypes_us']:.2f}x")
-            for f, r in results["python_layer"].items()]
-    print_table("Python: through eye vs plain ctypes, QVGA (microseconds per call)", rows,
-                ("function", "eye", "ctypes", "ratio"))
+    rows = [
+        (f, f"{r['eye_us']:.1f}", f"{r['ctypes_us']:.1f}", f"{r['eye_us'] / r['ctypes_us']:.2f}x")
+        for f, r in results["python_layer"].items()
+    ]
+    print_table(
+        "Python: through eye vs plain ctypes, QVGA (microseconds per call)",
+        rows,
+        ("function", "eye", "ctypes", "ratio"),
+    )
     print()
     results["roundtrip"] = round_trips()
     c, py = results["roundtrip"]["c"], results["roundtrip"]["python"]
-    rows = [(name, f"{r['median_ms'] * 1000:.0f}", f"{r['p99_ms'] * 1000:.0f}", f"{r['median_ms'] / c['median_ms']:.2f}x")
-            for name, r in (("C", c), ("Python (eye)", py))]
-    print_table(f"OSGetCount round trip, {CALLS} calls, realtime (microseconds)", rows,
-                ("program", "median", "p99", "median vs C"))
+    rows = [
+        (name, f"{r['median_ms'] * 1000:.0f}", f"{r['p99_ms'] * 1000:.0f}", f"{r['median_ms'] / c['median_ms']:.2f}x")
+        for name, r in (("C", c), ("Python (eye)", py))
+    ]
+    print_table(
+        f"OSGetCount round trip, {CALLS} calls, realtime (microseconds)",
+        rows,
+        ("program", "median", "p99", "median vs C"),
+    )
     print(f"wrote {write_results('ip', results)}")
     return 0
 

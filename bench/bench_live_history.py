@@ -31,11 +31,27 @@ def fill(history: LiveHistory, robots: int, psd_rate: int) -> None:
         t = step / SNAPSHOTS_PER_SECOND
         time_us = round(t * 1e6)
         history.add_snapshot(
-            {"type": "snapshot", "time": t, "objects": [], "bodies": [],
-             "robots": [{"id": r, "pos": [0.1 * r + t / 100, 0.5, 0.05], "quat": [1.0, 0.0, 0.0, t / 1000], "battery": 8.1}
-                        for r in range(1, robots + 1)]},
-            [{"robot": r, "odometry": {"x": t / 100, "y": 0.5, "phi": 0.01}, "speed": {"v": 0.01, "w": 0.0},
-              "encoders": {"1": step, "2": step}, "battery": 8.1} for r in range(1, robots + 1)])
+            {
+                "type": "snapshot",
+                "time": t,
+                "objects": [],
+                "bodies": [],
+                "robots": [
+                    {"id": r, "pos": [0.1 * r + t / 100, 0.5, 0.05], "quat": [1.0, 0.0, 0.0, t / 1000], "battery": 8.1}
+                    for r in range(1, robots + 1)
+                ],
+            },
+            [
+                {
+                    "robot": r,
+                    "odometry": {"x": t / 100, "y": 0.5, "phi": 0.01},
+                    "speed": {"v": 0.01, "w": 0.0},
+                    "encoders": {"1": step, "2": step},
+                    "battery": 8.1,
+                }
+                for r in range(1, robots + 1)
+            ],
+        )
         for r in range(1, robots + 1):
             for k in range(psd_rate // SNAPSHOTS_PER_SECOND):
                 history.add_psd(r, time_us + k, {"robot": r, "psd": 1, "distance_mm": 500 + k})
@@ -85,18 +101,32 @@ def main() -> None:
     tracemalloc.stop()
     full = statistics.median(full_collections(5))
     frame, paths, series = asyncio.run(scrub(history))
-    rows = [("full GC pass, no history", f"{empty * 1000:.1f} ms"),
-            ("full GC pass, with the history", f"{full * 1000:.1f} ms"),
-            ("objects the GC tracks", f"{len(gc.get_objects())}"),
-            ("history memory", f"{size / 1e6:.0f} MB"),
-            ("frame at the middle", f"{frame * 1000:.1f} ms"), ("paths", f"{paths * 1000:.1f} ms"),
-            ("two series", f"{series * 1000:.1f} ms")]
-    print_table(f"Live history of {arguments.robots} robots, {HISTORY_SECONDS} s, "
-                f"{arguments.psd_rate} PSD readings/s each", rows, ("what", "cost"))
-    write_results("live_history", {"robots": arguments.robots, "psd_rate": arguments.psd_rate,
-                                   "gc_pass_ms": {"empty": empty * 1000, "full": full * 1000},
-                                   "history_bytes": size, "frame_ms": frame * 1000, "paths_ms": paths * 1000,
-                                   "series_ms": series * 1000})
+    rows = [
+        ("full GC pass, no history", f"{empty * 1000:.1f} ms"),
+        ("full GC pass, with the history", f"{full * 1000:.1f} ms"),
+        ("objects the GC tracks", f"{len(gc.get_objects())}"),
+        ("history memory", f"{size / 1e6:.0f} MB"),
+        ("frame at the middle", f"{frame * 1000:.1f} ms"),
+        ("paths", f"{paths * 1000:.1f} ms"),
+        ("two series", f"{series * 1000:.1f} ms"),
+    ]
+    print_table(
+        f"Live history of {arguments.robots} robots, {HISTORY_SECONDS} s, {arguments.psd_rate} PSD readings/s each",
+        rows,
+        ("what", "cost"),
+    )
+    write_results(
+        "live_history",
+        {
+            "robots": arguments.robots,
+            "psd_rate": arguments.psd_rate,
+            "gc_pass_ms": {"empty": empty * 1000, "full": full * 1000},
+            "history_bytes": size,
+            "frame_ms": frame * 1000,
+            "paths_ms": paths * 1000,
+            "series_ms": series * 1000,
+        },
+    )
 
 
 if __name__ == "__main__":

@@ -38,8 +38,9 @@ def scene_file(programs: int) -> str:
     size = 400 * side + 400
     path = BUILD / f"load_{programs}.sim"
     world = BUILD / f"load_{programs}.wld"
-    world.write_text(f"floor {size} {size}\n0 0 {size} 0\n{size} 0 {size} {size}\n{size} {size} 0 {size}\n"
-                     f"0 {size} 0 0\n")
+    world.write_text(
+        f"floor {size} {size}\n0 0 {size} 0\n{size} 0 {size} {size}\n{size} {size} 0 {size}\n0 {size} 0 0\n"
+    )
     placements = "".join(f"S4 {400 + 400 * (i % side)} {400 + 400 * (i // side)} 90\n" for i in range(robots))
     path.write_text(f"world {world.name}\n" + placements)
     return str(path)
@@ -66,13 +67,20 @@ def cpu_seconds(pid: int) -> float:
 
 def run(programs: int, seconds: float, call_time: float) -> dict:
     program = build_c(BENCH / "programs" / "poll_load.c", BUILD / "poll_load")
-    simulator, port = start_simulator(scene_file(programs), "--headless", "--clock", "realtime",
-                                      "--call-time", f"{call_time:g}")
+    simulator, port = start_simulator(
+        scene_file(programs), "--headless", "--clock", "realtime", "--call-time", f"{call_time:g}"
+    )
     try:
         stuck = non_reader(port, programs + 1)
-        clients = [subprocess.Popen(NICE + [str(program), str(seconds)], stdout=subprocess.PIPE, text=True,
-                                    env=dict(os.environ, EYESIM_PORT=str(port), EYESIM_ROBOT=str(robot)))
-                   for robot in range(1, programs + 1)]
+        clients = [
+            subprocess.Popen(
+                NICE + [str(program), str(seconds)],
+                stdout=subprocess.PIPE,
+                text=True,
+                env=dict(os.environ, EYESIM_PORT=str(port), EYESIM_ROBOT=str(robot)),
+            )
+            for robot in range(1, programs + 1)
+        ]
         cpu_before = cpu_seconds(simulator.pid)
         rows = [list(map(float, client.communicate()[0].split())) for client in clients]
         simulator_cpu = (cpu_seconds(simulator.pid) - cpu_before) / seconds
@@ -80,12 +88,17 @@ def run(programs: int, seconds: float, call_time: float) -> dict:
     finally:
         stop(simulator)
     calls = [r[0] for r in rows]
-    return {"programs": programs, "call_time_ms": call_time,
-            "real_time": min(r[4] for r in rows) / 1000 / seconds,
-            "calls_per_s": sum(calls) / seconds, "fairness": max(calls) / max(1, min(calls)),
-            "p50_ms": sorted(r[1] for r in rows)[len(rows) // 2] / 1000,
-            "p99_ms": max(r[2] for r in rows) / 1000, "max_ms": max(r[3] for r in rows) / 1000,
-            "simulator_cpu": simulator_cpu}
+    return {
+        "programs": programs,
+        "call_time_ms": call_time,
+        "real_time": min(r[4] for r in rows) / 1000 / seconds,
+        "calls_per_s": sum(calls) / seconds,
+        "fairness": max(calls) / max(1, min(calls)),
+        "p50_ms": sorted(r[1] for r in rows)[len(rows) // 2] / 1000,
+        "p99_ms": max(r[2] for r in rows) / 1000,
+        "max_ms": max(r[3] for r in rows) / 1000,
+        "simulator_cpu": simulator_cpu,
+    }
 
 
 def main() -> int:
@@ -95,13 +108,35 @@ def main() -> int:
     parser.add_argument("--call-time", type=float, nargs="+", default=[0.0, 4.0])
     args = parser.parse_args()
     results = [run(n, args.seconds, t) for t in args.call_time for n in args.programs]
-    rows = [(r["call_time_ms"], r["programs"], f"{r['real_time']:.2f}x", f"{r['calls_per_s']:.0f}",
-             f"{r['fairness']:.2f}", f"{r['p50_ms']:.3f}", f"{r['p99_ms']:.2f}", f"{r['max_ms']:.1f}",
-             f"{r['simulator_cpu']:.0%}")
-            for r in results]
-    print_table(f"Polling programs in realtime mode, {args.seconds:g} s each, plus one that never reads",
-                rows, ("call time ms", "programs", "real time", "calls/s", "max/min calls", "p50 ms",
-                       "p99 ms", "max ms", "simulator CPU"))
+    rows = [
+        (
+            r["call_time_ms"],
+            r["programs"],
+            f"{r['real_time']:.2f}x",
+            f"{r['calls_per_s']:.0f}",
+            f"{r['fairness']:.2f}",
+            f"{r['p50_ms']:.3f}",
+            f"{r['p99_ms']:.2f}",
+            f"{r['max_ms']:.1f}",
+            f"{r['simulator_cpu']:.0%}",
+        )
+        for r in results
+    ]
+    print_table(
+        f"Polling programs in realtime mode, {args.seconds:g} s each, plus one that never reads",
+        rows,
+        (
+            "call time ms",
+            "programs",
+            "real time",
+            "calls/s",
+            "max/min calls",
+            "p50 ms",
+            "p99 ms",
+            "max ms",
+            "simulator CPU",
+        ),
+    )
     print("targets: real time >= 0.95x (20, 100 programs), max/min <= 2, >= 20000 calls/s, p99 <= 5 ms (20)")
     print(f"wrote {write_results('load', {'runs': results})}")
     return 0

@@ -42,8 +42,9 @@ def best_ms(action, repeats: int = 7) -> float:
 def scene(directory: Path):
     (directory / "room.wld").write_text("floor 2000 2000\n")
     sim_file = directory / "models.sim"
-    sim_file.write_text(f'world room.wld\nobj "{STOP_SIGN}"\nrobi "{S4BLUE}"\n'
-                        'S4blue 500 1000 0\nStopSign 1000 1000 0\n')
+    sim_file.write_text(
+        f'world room.wld\nobj "{STOP_SIGN}"\nrobi "{S4BLUE}"\nS4blue 500 1000 0\nStopSign 1000 1000 0\n'
+    )
     return load_scene(sim_file)
 
 
@@ -51,7 +52,8 @@ def without_models(description):
     return dataclasses.replace(
         description,
         robot_types={k: dataclasses.replace(t, model=None) for k, t in description.robot_types.items()},
-        object_types={k: dataclasses.replace(t, model=None) for k, t in description.object_types.items()})
+        object_types={k: dataclasses.replace(t, model=None) for k, t in description.object_types.items()},
+    )
 
 
 def read_rows() -> list[tuple]:
@@ -65,15 +67,19 @@ def read_rows() -> list[tuple]:
 
         reading = best_ms(cold_read, repeats=3)
         triangles = sum(len(p.triangles) for p in meshes.read_obj(path).parts)
-        rows.append((str(path.relative_to(CORPUS)), triangles, round(baseline, 3), round(reading, 1),
-                     round(reading / baseline)))
+        rows.append(
+            (str(path.relative_to(CORPUS)), triangles, round(baseline, 3), round(reading, 1), round(reading / baseline))
+        )
     return rows
 
 
 def main() -> None:
     results = {"read": read_rows()}
-    print_table("Reading the real .obj files (cold)", results["read"],
-                ("file", "triangles", "read bytes ms", "read_obj ms", "x bytes"))
+    print_table(
+        "Reading the real .obj files (cold)",
+        results["read"],
+        ("file", "triangles", "read bytes ms", "read_obj ms", "x bytes"),
+    )
 
     with tempfile.TemporaryDirectory() as directory:
         with_models = scene(Path(directory))

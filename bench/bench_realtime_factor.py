@@ -46,8 +46,9 @@ def square_drivers_scene(count: int) -> Scene:
     size = columns * CELL
     walls = (Wall(0, 0, size, 0), Wall(size, 0, size, size), Wall(size, size, 0, size), Wall(0, size, 0, 0))
     s4 = load_robot_type("S4")
-    placements = tuple(RobotPlacement(s4.name, Pose(CELL * (i % columns) + 150, CELL * (i // columns) + 150, 0))
-                       for i in range(count))
+    placements = tuple(
+        RobotPlacement(s4.name, Pose(CELL * (i % columns) + 150, CELL * (i // columns) + 150, 0)) for i in range(count)
+    )
     return Scene("bench", World("bench", size, size, walls), robot_types={s4.name: s4}, robots=placements)
 
 
@@ -167,6 +168,7 @@ def hook_costs(sim: Simulation, steps: int) -> dict[str, float]:
             start = clock()
             hook(dt)
             spent[kind] += clock() - start
+
         return call
 
     idle = timed("idle", lambda dt: None)
@@ -188,8 +190,10 @@ def hook_costs(sim: Simulation, steps: int) -> dict[str, float]:
         done = sim.steps - start
     finally:
         sim._before_step, sim._after_step, sim._tick = before, after, ticks
-    return {kind: max(0.0, (total / done - timing * calls[kind]) / len(sim.robots) * 1e6)
-            for kind, total in sorted(spent.items())}
+    return {
+        kind: max(0.0, (total / done - timing * calls[kind]) / len(sim.robots) * 1e6)
+        for kind, total in sorted(spent.items())
+    }
 
 
 def measure(count: int, wall_seconds: float, repeats: int = REPEATS) -> dict:
@@ -204,32 +208,65 @@ def measure(count: int, wall_seconds: float, repeats: int = REPEATS) -> dict:
     step, mj_step = min(loop), min(bare)
     overhead = step - mj_step
     dt = sim.step_us / 1e6
-    return {"robots": count, "real_time_factor": dt / step, "bare_real_time_factor": dt / mj_step,
-            "step_us": step * 1e6, "mj_step_us": mj_step * 1e6,
-            "overhead_per_robot_us": overhead / count * 1e6, "mj_step_per_robot_us": mj_step / count * 1e6,
-            "overhead_ratio": overhead / mj_step,
-            "components_per_robot_us": hook_costs(sim, max(200, round(0.5 / step)))}
+    return {
+        "robots": count,
+        "real_time_factor": dt / step,
+        "bare_real_time_factor": dt / mj_step,
+        "step_us": step * 1e6,
+        "mj_step_us": mj_step * 1e6,
+        "overhead_per_robot_us": overhead / count * 1e6,
+        "mj_step_per_robot_us": mj_step / count * 1e6,
+        "overhead_ratio": overhead / mj_step,
+        "components_per_robot_us": hook_costs(sim, max(200, round(0.5 / step))),
+    }
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--robots", type=int, nargs="+", default=[1, 10, 50, 100])
     parser.add_argument("--seconds", type=float, default=2.0, help="wall time per measurement")
-    parser.add_argument("--repeats", type=int, default=REPEATS,
-                        help="measurements of each, the best counts (on a busy machine: many short ones)")
+    parser.add_argument(
+        "--repeats",
+        type=int,
+        default=REPEATS,
+        help="measurements of each, the best counts (on a busy machine: many short ones)",
+    )
     args = parser.parse_args()
     results = [measure(count, args.seconds, args.repeats) for count in args.robots]
-    rows = [(r["robots"], f"{r['real_time_factor']:.1f}x", f"{r['bare_real_time_factor']:.1f}x", f"{r['step_us']:.0f}",
-             f"{r['mj_step_us']:.0f}", f"{r['overhead_per_robot_us']:.1f}", f"{r['mj_step_per_robot_us']:.1f}",
-             f"{r['overhead_ratio']:.2f}") for r in results]
-    print_table("Real-time factor, S4 robots driving squares under VW control (--speed max)", rows,
-                ("robots", "real time", "bare mj_step", "step us", "mj_step us", "ours/robot us", "mujoco/robot us",
-                 "ours/mujoco"))
+    rows = [
+        (
+            r["robots"],
+            f"{r['real_time_factor']:.1f}x",
+            f"{r['bare_real_time_factor']:.1f}x",
+            f"{r['step_us']:.0f}",
+            f"{r['mj_step_us']:.0f}",
+            f"{r['overhead_per_robot_us']:.1f}",
+            f"{r['mj_step_per_robot_us']:.1f}",
+            f"{r['overhead_ratio']:.2f}",
+        )
+        for r in results
+    ]
+    print_table(
+        "Real-time factor, S4 robots driving squares under VW control (--speed max)",
+        rows,
+        (
+            "robots",
+            "real time",
+            "bare mj_step",
+            "step us",
+            "mj_step us",
+            "ours/robot us",
+            "mujoco/robot us",
+            "ours/mujoco",
+        ),
+    )
     print()
     kinds = sorted({kind for r in results for kind in r["components_per_robot_us"]})
-    print_table("Step hooks per robot and step (us), by component kind, timed in the loop", [
-        (r["robots"], *(f"{r['components_per_robot_us'].get(kind, 0):.2f}" for kind in kinds)) for r in results],
-        ("robots", *kinds))
+    print_table(
+        "Step hooks per robot and step (us), by component kind, timed in the loop",
+        [(r["robots"], *(f"{r['components_per_robot_us'].get(kind, 0):.2f}" for kind in kinds)) for r in results],
+        ("robots", *kinds),
+    )
     by_count = {r["robots"]: r for r in results}
     targets = []
     if 1 in by_count:

@@ -35,8 +35,14 @@ def run(*record: str) -> float:
     """Wall seconds of one headless run of SECONDS simulated seconds."""
     programs = [arg for robot in (1, 2, 3) for arg in ("--program", f"{robot}={BUILD / 'camera_patrol'}")]
     start = time.perf_counter()
-    subprocess.run(eyesim("run", str(BUILD / "patrol.sim"), "--headless", "--port", "0", "--until", str(SECONDS),
-                          *programs, *record), check=True, cwd=BUILD, stdout=subprocess.DEVNULL)
+    subprocess.run(
+        eyesim(
+            "run", str(BUILD / "patrol.sim"), "--headless", "--port", "0", "--until", str(SECONDS), *programs, *record
+        ),
+        check=True,
+        cwd=BUILD,
+        stdout=subprocess.DEVNULL,
+    )
     return time.perf_counter() - start
 
 
@@ -62,15 +68,26 @@ def main() -> None:
         megabytes = path.stat().st_size / 1e6
         per_minute = megabytes * 60 / SECONDS
         sizes = channel_bytes(path)
-        results["recordings"][f"{rate}Hz"] = {"file_mb": round(megabytes, 2), "mb_per_minute": round(per_minute, 2),
-                                              "wall_s": round(wall, 2), "wall_ratio": round(wall / baseline, 2),
-                                              "message_mb_by_channel": {k: round(v / 1e6, 2) for k, v in sizes.most_common()}}
-        rows.append((f"--record-rate {rate}", f"{megabytes:.1f}", f"{per_minute:.1f}", f"{wall:.1f}", f"{wall / baseline:.2f}"))
-    print_table(f"Recording {SECONDS} s of 3 robots with cameras (10 QVGA images/s each, LCD showing them)", rows,
-                ("run", "file MB", "MB/min", "wall s", "x baseline"))
+        results["recordings"][f"{rate}Hz"] = {
+            "file_mb": round(megabytes, 2),
+            "mb_per_minute": round(per_minute, 2),
+            "wall_s": round(wall, 2),
+            "wall_ratio": round(wall / baseline, 2),
+            "message_mb_by_channel": {k: round(v / 1e6, 2) for k, v in sizes.most_common()},
+        }
+        rows.append(
+            (f"--record-rate {rate}", f"{megabytes:.1f}", f"{per_minute:.1f}", f"{wall:.1f}", f"{wall / baseline:.2f}")
+        )
+    print_table(
+        f"Recording {SECONDS} s of 3 robots with cameras (10 QVGA images/s each, LCD showing them)",
+        rows,
+        ("run", "file MB", "MB/min", "wall s", "x baseline"),
+    )
     for rate, result in results["recordings"].items():
-        print(f"\n{rate}: message MB by channel (before zstd):",
-              ", ".join(f"{k} {v}" for k, v in result["message_mb_by_channel"].items()))
+        print(
+            f"\n{rate}: message MB by channel (before zstd):",
+            ", ".join(f"{k} {v}" for k, v in result["message_mb_by_channel"].items()),
+        )
     print(f"\nwrote {write_results('recording', results)}")
 
 

@@ -35,8 +35,9 @@ def c_echo(client, clients: int = 1) -> list[float]:
     server_binary = build_c(BENCH / "programs" / "echo_server.c", BUILD / "echo_server")
     server = subprocess.Popen([str(server_binary), str(clients)], stdout=subprocess.PIPE, text=True)
     port = server.stdout.readline().strip()
-    runs = [subprocess.Popen([str(client), port, str(CALLS)], stdout=subprocess.PIPE, text=True)
-            for _ in range(clients)]
+    runs = [
+        subprocess.Popen([str(client), port, str(CALLS)], stdout=subprocess.PIPE, text=True) for _ in range(clients)
+    ]
     outputs = [run.communicate()[0] for run in runs]
     server.wait(timeout=10)
     return [sample for output in outputs for sample in samples(output)]
@@ -69,9 +70,15 @@ def psd_get(programs: int = 1) -> list[float]:
     # bench_call_time.py); this measures the round trip itself.
     simulator, port = start_simulator(str(scene), "--headless", "--clock", "realtime", "--call-time", "0")
     try:
-        clients = [subprocess.Popen([str(program), str(CALLS)], stdout=subprocess.PIPE, text=True,
-                                    env=dict(os.environ, EYESIM_PORT=str(port), EYESIM_ROBOT=str(robot)))
-                   for robot in range(1, programs + 1)]
+        clients = [
+            subprocess.Popen(
+                [str(program), str(CALLS)],
+                stdout=subprocess.PIPE,
+                text=True,
+                env=dict(os.environ, EYESIM_PORT=str(port), EYESIM_ROBOT=str(robot)),
+            )
+            for robot in range(1, programs + 1)
+        ]
         outputs = [client.communicate()[0] for client in clients]
     finally:
         stop(simulator)
@@ -80,16 +87,30 @@ def psd_get(programs: int = 1) -> list[float]:
 
 def main() -> int:
     client = build_c(BENCH / "programs" / "echo_client.c", BUILD / "echo_client")
-    results = {"c_echo": summary(c_echo(client)), "python_echo": summary(python_echo(client)),
-               "psd_get": summary(psd_get()),
-               "c_echo_10_clients": summary(c_echo(client, 10)), "psd_get_10_programs": summary(psd_get(10))}
+    results = {
+        "c_echo": summary(c_echo(client)),
+        "python_echo": summary(python_echo(client)),
+        "psd_get": summary(psd_get()),
+        "c_echo_10_clients": summary(c_echo(client, 10)),
+        "psd_get_10_programs": summary(psd_get(10)),
+    }
     # each against the C echo with as many clients calling at once
     bases = {name: results["c_echo_10_clients" if "10" in name else "c_echo"]["median_ms"] for name in results}
-    rows = [(name, f"{r['mean_ms']:.3f}", f"{r['median_ms']:.3f}", f"{r['p99_ms']:.3f}",
-             f"{r['median_ms'] / bases[name]:.1f}x") for name, r in results.items()]
+    rows = [
+        (
+            name,
+            f"{r['mean_ms']:.3f}",
+            f"{r['median_ms']:.3f}",
+            f"{r['p99_ms']:.3f}",
+            f"{r['median_ms'] / bases[name]:.1f}x",
+        )
+        for name, r in results.items()
+    ]
     print_table(f"Round trip, {CALLS} calls (ms)", rows, ("what", "mean", "median", "p99", "median vs C echo"))
-    print("targets: PSDGet median <= 0.10 ms and <= 3x the C echo, p99 <= 0.5 ms, alone and with 10 programs "
-          "(EyeSim V2 published: mean 4.587, median 4.642)")
+    print(
+        "targets: PSDGet median <= 0.10 ms and <= 3x the C echo, p99 <= 0.5 ms, alone and with 10 programs "
+        "(EyeSim V2 published: mean 4.587, median 4.642)"
+    )
     print(f"wrote {write_results('roundtrip', results)}")
     return 0
 

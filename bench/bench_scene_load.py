@@ -48,9 +48,11 @@ def timed(action) -> float:
 
 def large_scenes(directory: Path) -> dict[str, Path]:
     """Generated scenes: walls in rows of short segments, robots and cans on grids (apart)."""
+
     def wld(name: str, walls: int) -> Path:
-        lines = ["floor 20000 20000"] + [f"{i % 150 * 100} {i // 150 * 100} {i % 150 * 100 + 50} {i // 150 * 100}"
-                                         for i in range(walls)]
+        lines = ["floor 20000 20000"] + [
+            f"{i % 150 * 100} {i // 150 * 100} {i % 150 * 100 + 50} {i // 150 * 100}" for i in range(walls)
+        ]
         path = directory / name
         path.write_text("\n".join(lines) + "\n")
         return path
@@ -63,12 +65,19 @@ def large_scenes(directory: Path) -> dict[str, Path]:
     empty = wld("empty.wld", 0)
     return {
         "10 000 walls": sim("walls10k.sim", wld("walls10k.wld", 10_000), ["S4 25 50 0"]),
-        f"{limits.MAX_WALLS} walls (the limit)": sim("walls20k.sim", wld("walls20k.wld", limits.MAX_WALLS),
-                                                     ["S4 25 50 0"]),
-        f"{limits.MAX_ROBOTS} robots (the limit)": sim("robots.sim", empty, [
-            f"S4 {300 + 400 * (i % 40)} {300 + 400 * (i // 40)} 0" for i in range(limits.MAX_ROBOTS)]),
-        f"{limits.MAX_OBJECTS} cans (the limit)": sim("cans.sim", empty, [
-            f"Can {200 + 150 * (i % 100)} {200 + 150 * (i // 100)} 0" for i in range(limits.MAX_OBJECTS)]),
+        f"{limits.MAX_WALLS} walls (the limit)": sim(
+            "walls20k.sim", wld("walls20k.wld", limits.MAX_WALLS), ["S4 25 50 0"]
+        ),
+        f"{limits.MAX_ROBOTS} robots (the limit)": sim(
+            "robots.sim",
+            empty,
+            [f"S4 {300 + 400 * (i % 40)} {300 + 400 * (i // 40)} 0" for i in range(limits.MAX_ROBOTS)],
+        ),
+        f"{limits.MAX_OBJECTS} cans (the limit)": sim(
+            "cans.sim",
+            empty,
+            [f"Can {200 + 150 * (i % 100)} {200 + 150 * (i // 100)} 0" for i in range(limits.MAX_OBJECTS)],
+        ),
     }
 
 
@@ -81,8 +90,15 @@ def measure_large(repeat: int) -> list[dict]:
             loads = [timed(lambda: load_scene(path)) for _ in range(repeat)]
             scene = load_scene(path)
             builds = [timed(lambda: build_world(scene, 0.002)) for _ in range(max(repeat // 2, 2))]
-            rows.append({"scene": name, "bytes": sum(p.stat().st_size for p in files), "read_s": read,
-                         "load_s": min(loads), "build_s": min(builds)})
+            rows.append(
+                {
+                    "scene": name,
+                    "bytes": sum(p.stat().st_size for p in files),
+                    "read_s": read,
+                    "load_s": min(loads),
+                    "build_s": min(builds),
+                }
+            )
     return rows
 
 
@@ -128,8 +144,10 @@ def main() -> None:
     for name, seconds, ratio in rows:
         print(f"{name:44} {seconds * 1000:8.1f} ms {ratio:10.1f}x")
     print(f"largest world: {result['largest_world']}")
-    print("slowest files: " + ", ".join(f"{Path(s['file']).name} {s['best_s'] * 1000:.1f} ms"
-                                        for s in result["slowest_files"]))
+    print(
+        "slowest files: "
+        + ", ".join(f"{Path(s['file']).name} {s['best_s'] * 1000:.1f} ms" for s in result["slowest_files"])
+    )
     ok = total < 3.0 and big < 0.050
     print("targets (< 3 s in total, largest world < 50 ms): " + ("met" if ok else "NOT met"))
     large = measure_large(args.repeat)
@@ -137,8 +155,10 @@ def main() -> None:
     print(f"\nLarge generated scenes, best of {args.repeat}")
     print(f"{'scene':26} {'bytes':>9} {'read':>9} {'load':>9} {'x read':>8} {'build':>9}")
     for r in large:
-        print(f"{r['scene']:26} {r['bytes']:9} {r['read_s'] * 1000:6.2f} ms {r['load_s'] * 1000:6.0f} ms "
-              f"{r['load_s'] / r['read_s']:7.0f}x {r['build_s'] * 1000:6.0f} ms")
+        print(
+            f"{r['scene']:26} {r['bytes']:9} {r['read_s'] * 1000:6.2f} ms {r['load_s'] * 1000:6.0f} ms "
+            f"{r['load_s'] / r['read_s']:7.0f}x {r['build_s'] * 1000:6.0f} ms"
+        )
     slowest = max(r["load_s"] + r["build_s"] for r in large)
     print("target (each loads and builds within 5 s): " + ("met" if slowest < 5 else "NOT met"))
     RESULTS.mkdir(parents=True, exist_ok=True)

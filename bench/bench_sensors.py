@@ -59,13 +59,16 @@ def in_process() -> dict:
         sim.world.state_version += 1
         scanner.scan()
 
-    return {"step_s": best_time(sim.step, 500),
-            "render_opengl_s": best_time(lambda: gl.render(sim.world, view), IN_PROCESS_FRAMES),
-            "render_raycast_s": best_time(lambda: ray_caster.render(sim.world, view), IN_PROCESS_FRAMES),
-            "maze_opengl_s": best_time(lambda: gl.render(maze.world, maze_view), IN_PROCESS_FRAMES),
-            "maze_raycast_s": best_time(lambda: ray_caster.render(maze.world, maze_view), IN_PROCESS_FRAMES),
-            "maze_walls": len(maze.scene.world.walls),
-            "lidar_scan_s": best_time(new_scan, SCANS), "opengl_backend": gl.backend}
+    return {
+        "step_s": best_time(sim.step, 500),
+        "render_opengl_s": best_time(lambda: gl.render(sim.world, view), IN_PROCESS_FRAMES),
+        "render_raycast_s": best_time(lambda: ray_caster.render(sim.world, view), IN_PROCESS_FRAMES),
+        "maze_opengl_s": best_time(lambda: gl.render(maze.world, maze_view), IN_PROCESS_FRAMES),
+        "maze_raycast_s": best_time(lambda: ray_caster.render(maze.world, maze_view), IN_PROCESS_FRAMES),
+        "maze_walls": len(maze.scene.world.walls),
+        "lidar_scan_s": best_time(new_scan, SCANS),
+        "opengl_backend": gl.backend,
+    }
 
 
 def maze_walls():
@@ -87,8 +90,13 @@ def through_protocol(program: Path, renderer_env: dict) -> dict:
     # --call-time 0: what the sensors add to a round trip, not the per-call time (bench_call_time.py).
     simulator, port = start_simulator("--headless", "--clock", "realtime", "--call-time", "0", env=env)
     try:
-        result = subprocess.run([str(program), str(CALLS), str(FRAMES)], capture_output=True, text=True, check=True,
-                                env=dict(env, EYESIM_PORT=str(port)))
+        result = subprocess.run(
+            [str(program), str(CALLS), str(FRAMES)],
+            capture_output=True,
+            text=True,
+            check=True,
+            env=dict(env, EYESIM_PORT=str(port)),
+        )
     finally:
         stop(simulator)
     samples: dict[str, list[float]] = {}
@@ -106,36 +114,83 @@ def main() -> int:
     results = {"in_process": local, "protocol_opengl": opengl, "protocol_raycast": raycast}
 
     step = local["step_s"]
-    rows = [("physics step (baseline)", f"{step * 1e3:.3f} ms", "", "1.0x"),
-            (f"render QVGA, OpenGL ({local['opengl_backend']})", f"{local['render_opengl_s'] * 1e3:.2f} ms",
-             f"{1 / local['render_opengl_s']:.0f} fps", f"{local['render_opengl_s'] / step:.1f}x"),
-            ("render QVGA, ray caster", f"{local['render_raycast_s'] * 1e3:.2f} ms",
-             f"{1 / local['render_raycast_s']:.0f} fps", f"{local['render_raycast_s'] / step:.1f}x"),
-            (f"render QVGA in a {local['maze_walls']}-wall maze, OpenGL", f"{local['maze_opengl_s'] * 1e3:.2f} ms",
-             f"{1 / local['maze_opengl_s']:.0f} fps", f"{local['maze_opengl_s'] / step:.1f}x"),
-            (f"render QVGA in a {local['maze_walls']}-wall maze, ray caster", f"{local['maze_raycast_s'] * 1e3:.2f} ms",
-             f"{1 / local['maze_raycast_s']:.0f} fps", f"{local['maze_raycast_s'] / step:.1f}x"),
-            ("lidar scan, 360 points", f"{local['lidar_scan_s'] * 1e3:.3f} ms",
-             f"{1 / local['lidar_scan_s']:.0f} scans/s", f"{local['lidar_scan_s'] / step:.1f}x")]
+    rows = [
+        ("physics step (baseline)", f"{step * 1e3:.3f} ms", "", "1.0x"),
+        (
+            f"render QVGA, OpenGL ({local['opengl_backend']})",
+            f"{local['render_opengl_s'] * 1e3:.2f} ms",
+            f"{1 / local['render_opengl_s']:.0f} fps",
+            f"{local['render_opengl_s'] / step:.1f}x",
+        ),
+        (
+            "render QVGA, ray caster",
+            f"{local['render_raycast_s'] * 1e3:.2f} ms",
+            f"{1 / local['render_raycast_s']:.0f} fps",
+            f"{local['render_raycast_s'] / step:.1f}x",
+        ),
+        (
+            f"render QVGA in a {local['maze_walls']}-wall maze, OpenGL",
+            f"{local['maze_opengl_s'] * 1e3:.2f} ms",
+            f"{1 / local['maze_opengl_s']:.0f} fps",
+            f"{local['maze_opengl_s'] / step:.1f}x",
+        ),
+        (
+            f"render QVGA in a {local['maze_walls']}-wall maze, ray caster",
+            f"{local['maze_raycast_s'] * 1e3:.2f} ms",
+            f"{1 / local['maze_raycast_s']:.0f} fps",
+            f"{local['maze_raycast_s'] / step:.1f}x",
+        ),
+        (
+            "lidar scan, 360 points",
+            f"{local['lidar_scan_s'] * 1e3:.3f} ms",
+            f"{1 / local['lidar_scan_s']:.0f} scans/s",
+            f"{local['lidar_scan_s'] / step:.1f}x",
+        ),
+    ]
     print_table("In process (arena, 3 robots)", rows, ("what", "time", "rate", "vs physics step"))
     print()
     base = opengl["os_get_count"]["median_ms"]
-    rows = [("OSGetCount (baseline)", f"{base:.3f}", f"{opengl['os_get_count']['p99_ms']:.3f}",
-             f"{opengl['os_get_count']['mean_ms']:.3f}", "", "1.00x")]
-    measured = [("PSDGet", opengl["psd_get"], "calls/s"),
-                ("LIDARGet 360 points", opengl["lidar_get"], "scans/s"),
-                ("LIDARGet, every scan cast anew", opengl["lidar_get_fresh"], "scans/s"),
-                ("CAMGet QVGA, OpenGL", opengl["cam_get"], "fps"),
-                ("CAMGet QVGA, ray caster", raycast["cam_get"], "fps")]
+    rows = [
+        (
+            "OSGetCount (baseline)",
+            f"{base:.3f}",
+            f"{opengl['os_get_count']['p99_ms']:.3f}",
+            f"{opengl['os_get_count']['mean_ms']:.3f}",
+            "",
+            "1.00x",
+        )
+    ]
+    measured = [
+        ("PSDGet", opengl["psd_get"], "calls/s"),
+        ("LIDARGet 360 points", opengl["lidar_get"], "scans/s"),
+        ("LIDARGet, every scan cast anew", opengl["lidar_get_fresh"], "scans/s"),
+        ("CAMGet QVGA, OpenGL", opengl["cam_get"], "fps"),
+        ("CAMGet QVGA, ray caster", raycast["cam_get"], "fps"),
+    ]
     for label, r, unit in measured:
-        rows.append((label, f"{r['median_ms']:.3f}", f"{r['p99_ms']:.3f}", f"{r['mean_ms']:.3f}",
-                     f"{1000 / r['mean_ms']:.0f} {unit}", f"{r['median_ms'] / base:.2f}x"))
-    print_table(f"Through the protocol, realtime ({CALLS} calls, {FRAMES} frames; ms)", rows,
-                ("call", "median", "p99", "mean", "rate (1 / mean)", "median vs OSGetCount"))
-    print("LIDARGet polled faster than the physics steps returns the scan made at the same state; "
-          "'every scan cast anew' alternates it with SIMLaserScan, so that no scan is reused.")
-    print("targets: CAMGet QVGA >= 30 fps per renderer, lidar >= 2000 scans/s, PSDGet within 20% of the "
-          "foundation's round trip (bench_roundtrip.py)")
+        rows.append(
+            (
+                label,
+                f"{r['median_ms']:.3f}",
+                f"{r['p99_ms']:.3f}",
+                f"{r['mean_ms']:.3f}",
+                f"{1000 / r['mean_ms']:.0f} {unit}",
+                f"{r['median_ms'] / base:.2f}x",
+            )
+        )
+    print_table(
+        f"Through the protocol, realtime ({CALLS} calls, {FRAMES} frames; ms)",
+        rows,
+        ("call", "median", "p99", "mean", "rate (1 / mean)", "median vs OSGetCount"),
+    )
+    print(
+        "LIDARGet polled faster than the physics steps returns the scan made at the same state; "
+        "'every scan cast anew' alternates it with SIMLaserScan, so that no scan is reused."
+    )
+    print(
+        "targets: CAMGet QVGA >= 30 fps per renderer, lidar >= 2000 scans/s, PSDGet within 20% of the "
+        "foundation's round trip (bench_roundtrip.py)"
+    )
     print(f"wrote {write_results('sensors', results)}")
     return 0
 

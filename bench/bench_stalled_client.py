@@ -57,8 +57,9 @@ def main() -> int:
         stop(simulator)
     results = {"no_staller": summary(baseline), "with_staller": summary(stalled)}
     rows = [(name, f"{r['mean_ms']:.3f}", f"{r['median_ms']:.3f}", f"{r['max_ms']:.3f}") for name, r in results.items()]
-    print_table(f"Second client: connect + handshake + PSDGet, {TRIALS} trials (ms)", rows,
-                ("what", "mean", "median", "max"))
+    print_table(
+        f"Second client: connect + handshake + PSDGet, {TRIALS} trials (ms)", rows, ("what", "mean", "median", "max")
+    )
     print("target: served in <= 5 ms with a staller (EyeSim V2 published: 99.38 ms; V1: 2453 ms)")
     print(f"wrote {write_results('stalled_client', results)}")
     return 0

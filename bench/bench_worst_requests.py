@@ -56,8 +56,13 @@ def take(sim: Simulation, session: Session, name: str, args: tuple, request_id: 
     frame = encode_message(op.code, g.KIND_REQUEST, request_id, args)
     start = time.perf_counter()
     (message,) = FrameDecoder().feed(frame)
-    request = Request(session, op, message.request_id, decode_payload(op.request, message.payload, op.lengths),
-                      max(sim.time_us, session.local_time_us))
+    request = Request(
+        session,
+        op,
+        message.request_id,
+        decode_payload(op.request, message.payload, op.lengths),
+        max(sim.time_us, session.local_time_us),
+    )
     sim.requests.execute(request)
     spent = time.perf_counter() - start
     deferred = [p for _, p in session.pending if isinstance(p, Deferred)]
@@ -75,7 +80,9 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--repeat", type=int, default=4, help="times each request is taken")
     arguments = parser.parse_args()
-    scene = arena_scene([("S4", (500, 500, 0)), (example_robot("Picker"), (1500, 1500, 0))], objects=[("Can", (1000, 1500, 0))])
+    scene = arena_scene(
+        [("S4", (500, 500, 0)), (example_robot("Picker"), (1500, 1500, 0))], objects=[("Can", (1000, 1500, 0))]
+    )
     sim = Simulation(scene, Clock("deterministic"))
     session = Session(connection=Collector(), peer="bench")
     sim.requests.connected(session)
@@ -100,21 +107,45 @@ def main() -> None:
     for (name, label), seconds in times.items():
         then = statistics.median(seconds[1:] or seconds) * 1000
         made = elsewhere.get((name, label))
-        rows.append((name, label, f"{seconds[0] * 1000:.3f}", f"{then:.3f}",
-                     f"{made[0] * 1000:.0f} / {statistics.median(made[1:] or made) * 1000:.0f}" if made else "",
-                     "ok" if then < TARGET_MS else "OVER"))
-    print_table(f"Worst request of each operation, simulation-thread time in ms (target < {TARGET_MS:g} ms): "
-                f"the first, then the median of {arguments.repeat - 1} more; a camera image's time on the "
-                f"render thread (first / then)", rows, ("op", "request", "first", "then", "render thread", "target"))
+        rows.append(
+            (
+                name,
+                label,
+                f"{seconds[0] * 1000:.3f}",
+                f"{then:.3f}",
+                f"{made[0] * 1000:.0f} / {statistics.median(made[1:] or made) * 1000:.0f}" if made else "",
+                "ok" if then < TARGET_MS else "OVER",
+            )
+        )
+    print_table(
+        f"Worst request of each operation, simulation-thread time in ms (target < {TARGET_MS:g} ms): "
+        f"the first, then the median of {arguments.repeat - 1} more; a camera image's time on the "
+        f"render thread (first / then)",
+        rows,
+        ("op", "request", "first", "then", "render thread", "target"),
+    )
     over = [row for row in rows if row[5] == "OVER"]
-    print(f"\n{len(rows) - len(over)} of {len(rows)} within {TARGET_MS:g} ms"
-          + (": over: " + ", ".join(f"{r[0]} {r[3]} ms" for r in over) if over else ""))
+    print(
+        f"\n{len(rows) - len(over)} of {len(rows)} within {TARGET_MS:g} ms"
+        + (": over: " + ", ".join(f"{r[0]} {r[3]} ms" for r in over) if over else "")
+    )
     first_over = [row for row in rows if float(row[2]) >= TARGET_MS]
     print("first of a kind over it: " + (", ".join(f"{r[0]} {r[2]} ms" for r in first_over) or "none"))
-    write_results("worst_requests", {"target_ms": TARGET_MS, "rows": [
-        {"op": name, "request": label, "ms": [s * 1000 for s in seconds],
-         "render_thread_ms": [s * 1000 for s in elsewhere.get((name, label), [])]}
-        for (name, label), seconds in times.items()]})
+    write_results(
+        "worst_requests",
+        {
+            "target_ms": TARGET_MS,
+            "rows": [
+                {
+                    "op": name,
+                    "request": label,
+                    "ms": [s * 1000 for s in seconds],
+                    "render_thread_ms": [s * 1000 for s in elsewhere.get((name, label), [])],
+                }
+                for (name, label), seconds in times.items()
+            ],
+        },
+    )
 
 
 def _short(value) -> str:

@@ -27,8 +27,9 @@ def build_c(source: Path, output: Path) -> Path:
 
 def start_simulator(*args: str, env: dict | None = None) -> tuple[subprocess.Popen, int]:
     """Start `eyesim run` (headless unless args say otherwise) on a free port; return it and the port."""
-    process = subprocess.Popen(eyesim("run", "--port", "0", *args), stdout=subprocess.PIPE, text=True, cwd=BENCH,
-                               env=env)
+    process = subprocess.Popen(
+        eyesim("run", "--port", "0", *args), stdout=subprocess.PIPE, text=True, cwd=BENCH, env=env
+    )
     deadline = time.time() + 60
     for line in process.stdout:
         match = re.search(r"programs connect to [\d.]+:(\d+)", line)
@@ -50,10 +51,13 @@ def stop(process: subprocess.Popen) -> None:
 
 def summary(samples_us: list[float]) -> dict:
     ordered = sorted(samples_us)
-    return {"n": len(ordered), "mean_ms": statistics.fmean(ordered) / 1000,
-            "median_ms": ordered[len(ordered) // 2] / 1000,
-            "p99_ms": ordered[min(len(ordered) - 1, int(len(ordered) * 0.99))] / 1000,
-            "max_ms": ordered[-1] / 1000}
+    return {
+        "n": len(ordered),
+        "mean_ms": statistics.fmean(ordered) / 1000,
+        "median_ms": ordered[len(ordered) // 2] / 1000,
+        "p99_ms": ordered[min(len(ordered) - 1, int(len(ordered) * 0.99))] / 1000,
+        "max_ms": ordered[-1] / 1000,
+    }
 
 
 def write_results(name: str, results: dict) -> Path:

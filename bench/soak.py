@@ -59,9 +59,13 @@ class Simulator:
     def __init__(self, scene: str, name: str):
         self.log_path = BENCH / "results" / f"{name}.log"
         self.log = open(self.log_path, "w")
-        self.process = subprocess.Popen(eyesim("run", scene, "--port", "0", "--viewer-port", "0", "--clock",
-                                               "realtime"), stdout=subprocess.PIPE, stderr=self.log, text=True,
-                                        cwd=BENCH)
+        self.process = subprocess.Popen(
+            eyesim("run", scene, "--port", "0", "--viewer-port", "0", "--clock", "realtime"),
+            stdout=subprocess.PIPE,
+            stderr=self.log,
+            text=True,
+            cwd=BENCH,
+        )
         self.port = self.viewer_port = self.viewer_token = None
         deadline = time.monotonic() + 60
         for line in self.process.stdout:
@@ -83,8 +87,13 @@ class Simulator:
         pid = self.process.pid
         names = sorted(open(f"/proc/{pid}/task/{task}/comm").read().strip() for task in os.listdir(f"/proc/{pid}/task"))
         fds = sorted(_fd_target(pid, fd) for fd in os.listdir(f"/proc/{pid}/fd"))
-        return {"rss_mb": round(rss_mb(pid), 1), "fds": len(fds), "fd_targets": fds,
-                "threads": len(names), "thread_names": names}
+        return {
+            "rss_mb": round(rss_mb(pid), 1),
+            "fds": len(fds),
+            "fd_targets": fds,
+            "threads": len(names),
+            "thread_names": names,
+        }
 
     @property
     def program_token(self) -> str:
@@ -111,23 +120,38 @@ def _fd_target(pid: int, fd: str) -> str:
 
 
 def scene_file(robots: int) -> str:
-    side = int(robots ** 0.5) + 1
+    side = int(robots**0.5) + 1
     size = 400 * side + 400
     world = BUILD / f"soak_{robots}.wld"
-    world.write_text(f"floor {size} {size}\n0 0 {size} 0\n{size} 0 {size} {size}\n{size} {size} 0 {size}\n"
-                     f"0 {size} 0 0\n")
+    world.write_text(
+        f"floor {size} {size}\n0 0 {size} 0\n{size} 0 {size} {size}\n{size} {size} 0 {size}\n0 {size} 0 0\n"
+    )
     path = BUILD / f"soak_{robots}.sim"
-    path.write_text(f"world {world.name}\n" + "".join(
-        f"S4 {400 + 400 * (i % side)} {400 + 400 * (i // side)} 90\n" for i in range(robots)))
+    path.write_text(
+        f"world {world.name}\n"
+        + "".join(f"S4 {400 + 400 * (i % side)} {400 + 400 * (i // side)} 90\n" for i in range(robots))
+    )
     return str(path)
 
 
 # -- well-behaved programs --------------------------------------------------------------------------------
 def start_programs(program, port: int, robots: range, seconds: float) -> list[subprocess.Popen]:
-    return [subprocess.Popen([str(program), f"{seconds:g}"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                             text=True, env=dict(os.environ, EYESIM_HOST=HOST, EYESIM_PORT=str(port),
-                                                 EYESIM_ROBOT=str(robot), EYESIM_TOKEN=token_for(port)))
-            for robot in robots]
+    return [
+        subprocess.Popen(
+            [str(program), f"{seconds:g}"],
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+            env=dict(
+                os.environ,
+                EYESIM_HOST=HOST,
+                EYESIM_PORT=str(port),
+                EYESIM_ROBOT=str(robot),
+                EYESIM_TOKEN=token_for(port),
+            ),
+        )
+        for robot in robots
+    ]
 
 
 def collect_programs(programs: list[subprocess.Popen], timeout: float) -> dict:
@@ -148,10 +172,15 @@ def collect_programs(programs: list[subprocess.Popen], timeout: float) -> dict:
             rows.append([float(v) for v in fields])
         else:
             failures.append(f"no result line: {out!r}")
-    return {"programs": len(programs), "served": sum(1 for r in rows if r[0] > 0), "calls": int(sum(r[0] for r in rows)),
-            "max_latency_ms": max((r[3] for r in rows), default=0) / 1000,
-            "worst_p99_ms": max((r[2] for r in rows), default=0) / 1000,
-            "median_p99_ms": statistics.median(r[2] for r in rows) / 1000 if rows else 0, "failures": failures}
+    return {
+        "programs": len(programs),
+        "served": sum(1 for r in rows if r[0] > 0),
+        "calls": int(sum(r[0] for r in rows)),
+        "max_latency_ms": max((r[3] for r in rows), default=0) / 1000,
+        "worst_p99_ms": max((r[2] for r in rows), default=0) / 1000,
+        "median_p99_ms": statistics.median(r[2] for r in rows) / 1000 if rows else 0,
+        "failures": failures,
+    }
 
 
 # -- fuzz traffic -------------------------------------------------------------------------------------------
@@ -165,7 +194,9 @@ def random_value(rng: random.Random, typ: str):
     if typ == "i32s":
         return [random_value(rng, "i32") for _ in range(rng.randint(0, 16))]
     size = rng.choice([0, 1, 10, 100, 1000, 100_000])
-    piece = rng.choice(["x", "\n", "\t\n", "é", "\x00"]) if typ == "str" else rng.choice([b"\x00", b"\xff", b"\xff\xfb"])
+    piece = (
+        rng.choice(["x", "\n", "\t\n", "é", "\x00"]) if typ == "str" else rng.choice([b"\x00", b"\xff", b"\xff\xfb"])
+    )
     return (piece * size)[:size]
 
 
@@ -185,7 +216,7 @@ def random_frame(rng: random.Random) -> tuple[bytes, int | None]:
         body[rng.randint(4, len(body) - 1)] = rng.randint(0, 255)
         return bytes(body), None
     if how < 0.85:  # cut short: no reply, the connection is then closed
-        return frame[:rng.randint(1, len(frame) - 1)], None
+        return frame[: rng.randint(1, len(frame) - 1)], None
     if how < 0.95:
         return bytes(rng.getrandbits(8) for _ in range(rng.randint(1, 200))), None
     return struct.pack("<I", rng.choice([0, 3, g.MAX_FRAME + 1, U32_MAX])) + bytes(8), None
@@ -247,8 +278,9 @@ async def tabs_coming_and_going(port: int, token: str, until: float) -> dict:
     opened = failed = 0
     async with aiohttp.ClientSession() as session:
         while time.monotonic() < until:
-            results = await asyncio.gather(*(open_tab(session, port, token, rng.uniform(0.5, 3)) for _ in range(2)),
-                                           return_exceptions=True)
+            results = await asyncio.gather(
+                *(open_tab(session, port, token, rng.uniform(0.5, 3)) for _ in range(2)), return_exceptions=True
+            )
             opened += len(results)
             failed += sum(1 for r in results if r is not True)
     return {"opened": opened, "failed": failed}
@@ -256,11 +288,16 @@ async def tabs_coming_and_going(port: int, token: str, until: float) -> dict:
 
 async def many_tabs(port: int, token: str, count: int) -> dict:
     async with aiohttp.ClientSession(connector=aiohttp.TCPConnector(limit=0)) as session:
-        results = await asyncio.wait_for(asyncio.gather(*(open_tab(session, port, token, 1.0) for _ in range(count)),
-                                                        return_exceptions=True), timeout=300)
+        results = await asyncio.wait_for(
+            asyncio.gather(*(open_tab(session, port, token, 1.0) for _ in range(count)), return_exceptions=True),
+            timeout=300,
+        )
     failures = [r for r in results if r is not True]
-    return {"opened": count, "failed": len(failures),
-            "failures": sorted({repr(r) if isinstance(r, BaseException) else "no scene first" for r in failures})[:5]}
+    return {
+        "opened": count,
+        "failed": len(failures),
+        "failures": sorted({repr(r) if isinstance(r, BaseException) else "no scene first" for r in failures})[:5],
+    }
 
 
 # -- the runs --------------------------------------------------------------------------------------------------
@@ -270,22 +307,34 @@ def soak(minutes: float, baseline_minutes: float, programs: int, program) -> dic
     try:
         warm_up(simulator, programs + 1)
         before = simulator.resources()
-        quiet = collect_programs(start_programs(program, simulator.port, range(1, programs + 1), baseline_minutes * 60),
-                                 timeout=baseline_minutes * 60 + 120)
+        quiet = collect_programs(
+            start_programs(program, simulator.port, range(1, programs + 1), baseline_minutes * 60),
+            timeout=baseline_minutes * 60 + 120,
+        )
         after_quiet = simulator.resources()
         start = time.monotonic()
         until = start + seconds
         well_behaved = start_programs(program, simulator.port, range(1, programs + 1), seconds)
         counts = {"sent": 0, "replies": 0, "error_replies": 0, "connections": 0}
         lock = threading.Lock()
-        fuzzers = [threading.Thread(target=fuzzer, args=(simulator.port, programs + 1 + k, until, k, counts, lock))
-                   for k in range(FUZZ_ROBOTS)]
-        attacks = {"idle_sockets": 0, "idle_refused_or_closed": 0, "key_waits_sent": 0, "forged_tokens": 0,
-                   "forged_refused": 0}
-        attackers = [threading.Thread(target=idle_sockets, args=(simulator.port, until, attacks, lock)),
-                     threading.Thread(target=forged_tokens, args=(simulator.port, until, attacks, lock)),
-                     threading.Thread(target=key_wait_flood, args=(simulator.port, programs + FUZZ_ROBOTS + 1, until,
-                                                                   attacks, lock))]
+        fuzzers = [
+            threading.Thread(target=fuzzer, args=(simulator.port, programs + 1 + k, until, k, counts, lock))
+            for k in range(FUZZ_ROBOTS)
+        ]
+        attacks = {
+            "idle_sockets": 0,
+            "idle_refused_or_closed": 0,
+            "key_waits_sent": 0,
+            "forged_tokens": 0,
+            "forged_refused": 0,
+        }
+        attackers = [
+            threading.Thread(target=idle_sockets, args=(simulator.port, until, attacks, lock)),
+            threading.Thread(target=forged_tokens, args=(simulator.port, until, attacks, lock)),
+            threading.Thread(
+                target=key_wait_flood, args=(simulator.port, programs + FUZZ_ROBOTS + 1, until, attacks, lock)
+            ),
+        ]
         for thread in fuzzers + attackers:
             thread.start()
         samples = []
@@ -298,13 +347,23 @@ def soak(minutes: float, baseline_minutes: float, programs: int, program) -> dic
             thread.join(60)
         time.sleep(SETTLE)
         after = simulator.resources()
-        return {"minutes": minutes, "well_behaved": result, "baseline": quiet, "baseline_minutes": baseline_minutes,
-                "p99_ratio": _ratio(result["median_p99_ms"], quiet["median_p99_ms"]),
-                "worst_p99_ratio": _ratio(result["worst_p99_ms"], quiet["worst_p99_ms"]),
-                "fuzz": counts, "attacks": attacks, "tabs": tabs,
-                "rss_mb_by_minute": samples, "after_baseline": after_quiet,
-                "before": before,
-                "after": after, "tracebacks": simulator.tracebacks(), "simulator_alive": simulator.process.poll() is None}
+        return {
+            "minutes": minutes,
+            "well_behaved": result,
+            "baseline": quiet,
+            "baseline_minutes": baseline_minutes,
+            "p99_ratio": _ratio(result["median_p99_ms"], quiet["median_p99_ms"]),
+            "worst_p99_ratio": _ratio(result["worst_p99_ms"], quiet["worst_p99_ms"]),
+            "fuzz": counts,
+            "attacks": attacks,
+            "tabs": tabs,
+            "rss_mb_by_minute": samples,
+            "after_baseline": after_quiet,
+            "before": before,
+            "after": after,
+            "tracebacks": simulator.tracebacks(),
+            "simulator_alive": simulator.process.poll() is None,
+        }
     finally:
         simulator.stop()
 
@@ -373,8 +432,9 @@ def key_wait_flood(port: int, robot: int, until: float, attacks: dict, lock: thr
         request = 1000
         try:
             while time.monotonic() < end:
-                frame = encode_frame(g.OP_KEY_WAIT, g.KIND_REQUEST, request,
-                                     encode_payload(g.OPS[g.OP_KEY_WAIT].request, (0xFFFF,)))
+                frame = encode_frame(
+                    g.OP_KEY_WAIT, g.KIND_REQUEST, request, encode_payload(g.OPS[g.OP_KEY_WAIT].request, (0xFFFF,))
+                )
                 client.sock.sendall(frame * 100)
                 request += 100
                 with lock:
@@ -415,8 +475,15 @@ def load(program) -> dict:
         cycles = connect_cycles(simulator.port, 500)
         time.sleep(SETTLE)
         after = simulator.resources()
-        return {"programs": programs, "tabs": tabs, "cycles": cycles, "before": before, "after": after,
-                "tracebacks": simulator.tracebacks(), "simulator_alive": simulator.process.poll() is None}
+        return {
+            "programs": programs,
+            "tabs": tabs,
+            "cycles": cycles,
+            "before": before,
+            "after": after,
+            "tracebacks": simulator.tracebacks(),
+            "simulator_alive": simulator.process.poll() is None,
+        }
     finally:
         simulator.stop()
 
@@ -469,74 +536,117 @@ def checks(soaked: dict | None, loaded: dict | None) -> list[str]:
         for resource in ("fds", "threads"):
             if run["after"][resource] > run["before"][resource]:
                 names = "thread_names" if resource == "threads" else "fd_targets"
-                problems.append(f"{name}: {resource} {run['before'][resource]} -> {run['after'][resource]}: "
-                                f"{_difference(run['before'][names], run['after'][names])}")
+                problems.append(
+                    f"{name}: {resource} {run['before'][resource]} -> {run['after'][resource]}: "
+                    f"{_difference(run['before'][names], run['after'][names])}"
+                )
     if soaked:
         behaved = soaked["well_behaved"]
         if behaved["failures"] or behaved["served"] != behaved["programs"]:
-            problems.append(f"soak: well-behaved programs: {behaved['served']}/{behaved['programs']} served, "
-                            f"failures {behaved['failures'][:3]}")
+            problems.append(
+                f"soak: well-behaved programs: {behaved['served']}/{behaved['programs']} served, "
+                f"failures {behaved['failures'][:3]}"
+            )
         if soaked["tabs"]["failed"]:
             problems.append(f"soak: {soaked['tabs']['failed']} tabs failed")
         quiet = soaked["baseline"]
         if quiet["failures"] or quiet["served"] != quiet["programs"]:
-            problems.append(f"soak baseline: {quiet['served']}/{quiet['programs']} served, failures {quiet['failures'][:3]}")
+            problems.append(
+                f"soak baseline: {quiet['served']}/{quiet['programs']} served, failures {quiet['failures'][:3]}"
+            )
         attacks = soaked["attacks"]
         if attacks["forged_refused"] < attacks["forged_tokens"] * 0.5:
-            problems.append(f"soak: only {attacks['forged_refused']} of {attacks['forged_tokens']} forged tokens refused")
+            problems.append(
+                f"soak: only {attacks['forged_refused']} of {attacks['forged_tokens']} forged tokens refused"
+            )
     if loaded:
         programs = loaded["programs"]
         if programs["failures"] or programs["served"] != programs["programs"]:
-            problems.append(f"load: {programs['served']}/{programs['programs']} served, failures {programs['failures'][:3]}")
+            problems.append(
+                f"load: {programs['served']}/{programs['programs']} served, failures {programs['failures'][:3]}"
+            )
         if loaded["tabs"]["failed"] or loaded["cycles"]["failed"]:
-            problems.append(f"load: {loaded['tabs']['failed']} tabs and {loaded['cycles']['failed']} cycles failed "
-                            f"{loaded['tabs']['failures'] + loaded['cycles']['failures']}")
+            problems.append(
+                f"load: {loaded['tabs']['failed']} tabs and {loaded['cycles']['failed']} cycles failed "
+                f"{loaded['tabs']['failures'] + loaded['cycles']['failures']}"
+            )
     return problems
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--minutes", type=float, default=10.0, help="length of the soak (0: none)")
-    parser.add_argument("--baseline-minutes", type=float, default=2.0,
-                        help="the well-behaved programs alone first, the baseline of their p99")
+    parser.add_argument(
+        "--baseline-minutes",
+        type=float,
+        default=2.0,
+        help="the well-behaved programs alone first, the baseline of their p99",
+    )
     parser.add_argument("--programs", type=int, default=50, help="well-behaved C programs during the soak")
-    parser.add_argument("--load", action="store_true", help="also the load scenario (100 programs, 200 tabs, 500 cycles)")
+    parser.add_argument(
+        "--load", action="store_true", help="also the load scenario (100 programs, 200 tabs, 500 cycles)"
+    )
     arguments = parser.parse_args()
     program = build_c(BENCH / "programs" / "poll_load.c", BUILD / "poll_load")
-    soaked = (soak(arguments.minutes, arguments.baseline_minutes, arguments.programs, program)
-              if arguments.minutes > 0 else None)
+    soaked = (
+        soak(arguments.minutes, arguments.baseline_minutes, arguments.programs, program)
+        if arguments.minutes > 0
+        else None
+    )
     if soaked:
         behaved, fuzz = soaked["well_behaved"], soaked["fuzz"]
-        print_table(f"Soak: {arguments.minutes:g} min, {arguments.programs} well-behaved programs, "
-                    f"{FUZZ_ROBOTS} fuzzing clients, browser tabs coming and going", [
-                        ("well-behaved calls", behaved["calls"]), ("failed well-behaved calls", len(behaved["failures"])),
-                        ("programs served", f"{behaved['served']}/{behaved['programs']}"),
-                        ("max latency (ms)", f"{behaved['max_latency_ms']:.1f}"),
-                        ("worst p99 (ms)", f"{behaved['worst_p99_ms']:.2f}"),
-                        ("median p99 / worst p99, quiet baseline (ms)",
-                         f"{soaked['baseline']['median_p99_ms']:.2f} / {soaked['baseline']['worst_p99_ms']:.2f}"),
-                        ("p99 with attackers / quiet: median, worst",
-                         f"{soaked['p99_ratio']:.2f}, {soaked['worst_p99_ratio']:.2f}"),
-                        ("fuzz frames / connections", f"{fuzz['sent']} / {fuzz['connections']}"),
-                        ("fuzz replies / error replies", f"{fuzz['replies']} / {fuzz['error_replies']}"),
-                        ("idle sockets / refused or closed", f"{soaked['attacks']['idle_sockets']} / "
-                                                             f"{soaked['attacks']['idle_refused_or_closed']}"),
-                        ("KEYWait requests pipelined", soaked["attacks"]["key_waits_sent"]),
-                        ("forged tokens / refused", f"{soaked['attacks']['forged_tokens']} / "
-                                                    f"{soaked['attacks']['forged_refused']}"),
-                        ("tabs opened / failed", f"{soaked['tabs']['opened']} / {soaked['tabs']['failed']}"),
-                        *_resources(soaked), ("tracebacks in the log", soaked["tracebacks"]),
-                        ("RSS (MB) by minute", " ".join(f"{m:g}:{mb:.0f}" for m, mb in soaked["rss_mb_by_minute"]))],
-                    ("", "value"))
+        print_table(
+            f"Soak: {arguments.minutes:g} min, {arguments.programs} well-behaved programs, "
+            f"{FUZZ_ROBOTS} fuzzing clients, browser tabs coming and going",
+            [
+                ("well-behaved calls", behaved["calls"]),
+                ("failed well-behaved calls", len(behaved["failures"])),
+                ("programs served", f"{behaved['served']}/{behaved['programs']}"),
+                ("max latency (ms)", f"{behaved['max_latency_ms']:.1f}"),
+                ("worst p99 (ms)", f"{behaved['worst_p99_ms']:.2f}"),
+                (
+                    "median p99 / worst p99, quiet baseline (ms)",
+                    f"{soaked['baseline']['median_p99_ms']:.2f} / {soaked['baseline']['worst_p99_ms']:.2f}",
+                ),
+                (
+                    "p99 with attackers / quiet: median, worst",
+                    f"{soaked['p99_ratio']:.2f}, {soaked['worst_p99_ratio']:.2f}",
+                ),
+                ("fuzz frames / connections", f"{fuzz['sent']} / {fuzz['connections']}"),
+                ("fuzz replies / error replies", f"{fuzz['replies']} / {fuzz['error_replies']}"),
+                (
+                    "idle sockets / refused or closed",
+                    f"{soaked['attacks']['idle_sockets']} / {soaked['attacks']['idle_refused_or_closed']}",
+                ),
+                ("KEYWait requests pipelined", soaked["attacks"]["key_waits_sent"]),
+                (
+                    "forged tokens / refused",
+                    f"{soaked['attacks']['forged_tokens']} / {soaked['attacks']['forged_refused']}",
+                ),
+                ("tabs opened / failed", f"{soaked['tabs']['opened']} / {soaked['tabs']['failed']}"),
+                *_resources(soaked),
+                ("tracebacks in the log", soaked["tracebacks"]),
+                ("RSS (MB) by minute", " ".join(f"{m:g}:{mb:.0f}" for m, mb in soaked["rss_mb_by_minute"])),
+            ],
+            ("", "value"),
+        )
     loaded = load(program) if arguments.load else None
     if loaded:
         programs = loaded["programs"]
-        print_table("Load: 100 programs at once, 200 tabs at once, 500 connect/disconnect cycles", [
-            ("programs served", f"{programs['served']}/{programs['programs']}"), ("calls", programs["calls"]),
-            ("failed calls", len(programs["failures"])), ("max latency (ms)", f"{programs['max_latency_ms']:.1f}"),
-            ("tabs opened / failed", f"{loaded['tabs']['opened']} / {loaded['tabs']['failed']}"),
-            ("cycles / failed", f"{loaded['cycles']['cycles']} / {loaded['cycles']['failed']}"),
-            *_resources(loaded), ("tracebacks in the log", loaded["tracebacks"])], ("", "value"))
+        print_table(
+            "Load: 100 programs at once, 200 tabs at once, 500 connect/disconnect cycles",
+            [
+                ("programs served", f"{programs['served']}/{programs['programs']}"),
+                ("calls", programs["calls"]),
+                ("failed calls", len(programs["failures"])),
+                ("max latency (ms)", f"{programs['max_latency_ms']:.1f}"),
+                ("tabs opened / failed", f"{loaded['tabs']['opened']} / {loaded['tabs']['failed']}"),
+                ("cycles / failed", f"{loaded['cycles']['cycles']} / {loaded['cycles']['failed']}"),
+                *_resources(loaded),
+                ("tracebacks in the log", loaded["tracebacks"]),
+            ],
+            ("", "value"),
+        )
     problems = checks(soaked, loaded)
     write_results("soak", {"soak": soaked, "load": loaded, "problems": problems})
     print("\n" + ("\n".join(problems) if problems else "all checks passed"))
@@ -560,8 +670,10 @@ def _difference(before: list[str], after: list[str]) -> str:
 
 
 def _resources(run: dict) -> list[tuple]:
-    return [(f"simulator {name} before -> after", f"{run['before'][name]} -> {run['after'][name]}")
-            for name in ("rss_mb", "fds", "threads")]
+    return [
+        (f"simulator {name} before -> after", f"{run['before'][name]} -> {run['after'][name]}")
+        for name in ("rss_mb", "fds", "threads")
+    ]
 
 
 if __name__ == "__main__":

@@ -26,8 +26,14 @@ PY_OUT = ROOT / "src" / "eyesim" / "protocol" / "generated.py"
 C_OUT = ROOT / "robios" / "src" / "protocol_gen.h"
 C_VECTORS_OUT = ROOT / "robios" / "tests" / "vectors_gen.h"
 
-C_TYPES = {"i32": "ES_T_I32", "u32": "ES_T_U32", "f64": "ES_T_F64", "str": "ES_T_STR",
-           "bytes": "ES_T_BYTES", "i32s": "ES_T_I32S"}
+C_TYPES = {
+    "i32": "ES_T_I32",
+    "u32": "ES_T_U32",
+    "f64": "ES_T_F64",
+    "str": "ES_T_STR",
+    "bytes": "ES_T_BYTES",
+    "i32s": "ES_T_I32S",
+}
 # What a call costs in simulation time (docs/protocol.md#what-a-call-costs): done by the EyeBot itself,
 # reaching its hardware or the world (the call time), or waiting (blocking calls).
 COST_CLASSES = ("local", "device", "wait")
@@ -52,27 +58,35 @@ def check(spec: dict) -> None:
         if group is None:
             raise SystemExit(f"{SPEC}: op {op['name']}: unknown group {op['group']!r}")
         if not group * 256 < op["code"] < (group + 1) * 256:
-            raise SystemExit(f"{SPEC}: op {op['name']}: code {op['code']} is outside group {op['group']} "
-                             f"({group * 256 + 1}..{group * 256 + 255})")
+            raise SystemExit(
+                f"{SPEC}: op {op['name']}: code {op['code']} is outside group {op['group']} "
+                f"({group * 256 + 1}..{group * 256 + 255})"
+            )
         fields = {name for name, _ in op["request"]}
         for name, limits in op.get("ranges", {}).items():
             if name not in fields or len(limits) != 3 or not limits[0] <= limits[1]:
-                raise SystemExit(f"{SPEC}: op {op['name']}: range of {name!r} must name a request field "
-                                 f"as [low, high, unit]")
+                raise SystemExit(
+                    f"{SPEC}: op {op['name']}: range of {name!r} must name a request field as [low, high, unit]"
+                )
         sized = {name for name, typ in op["request"] if typ in ("str", "bytes")}
         for name, limit in op.get("lengths", {}).items():
             if name not in sized or not isinstance(limit, int) or not 0 < limit <= spec["max_frame"]:
-                raise SystemExit(f"{SPEC}: op {op['name']}: length of {name!r} must name a str or bytes "
-                                 f"request field, as a byte count up to max_frame")
+                raise SystemExit(
+                    f"{SPEC}: op {op['name']}: length of {name!r} must name a str or bytes "
+                    f"request field, as a byte count up to max_frame"
+                )
         cost = op.get("cost")
         if cost not in COST_CLASSES:
             raise SystemExit(f"{SPEC}: op {op['name']}: cost must be one of {', '.join(COST_CLASSES)}, not {cost!r}")
         if (cost == "wait") != bool(op.get("blocking", False)):
-            raise SystemExit(f"{SPEC}: op {op['name']}: a blocking op costs its wait (cost \"wait\"), and only a "
-                             f"blocking op does")
+            raise SystemExit(
+                f'{SPEC}: op {op["name"]}: a blocking op costs its wait (cost "wait"), and only a blocking op does'
+            )
         if "calls" in op and (not re.fullmatch(r"[A-Z]\w*\.[a-z_]\w*", op["calls"]) or op.get("blocking")):
-            raise SystemExit(f"{SPEC}: op {op['name']}: calls names a component's method as \"Component.method\", "
-                             f"and a blocking op cannot just call one")
+            raise SystemExit(
+                f'{SPEC}: op {op["name"]}: calls names a component\'s method as "Component.method", '
+                f"and a blocking op cannot just call one"
+            )
         if op["code"] in codes:
             raise SystemExit(f"{SPEC}: op {op['name']}: code {op['code']} is used twice")
         codes.add(op["code"])
@@ -131,10 +145,16 @@ def c_types(fields: list) -> str:
 
 
 def c_source(spec: dict) -> str:
-    out = [f"/* {BANNER} */", "#ifndef EYESIM_PROTOCOL_GEN_H", "#define EYESIM_PROTOCOL_GEN_H", "",
-           "#include <stdint.h>", ""]
+    out = [
+        f"/* {BANNER} */",
+        "#ifndef EYESIM_PROTOCOL_GEN_H",
+        "#define EYESIM_PROTOCOL_GEN_H",
+        "",
+        "#include <stdint.h>",
+        "",
+    ]
     out.append(f"#define ES_PROTOCOL_VERSION {spec['version']}u")
-    out.append(f"#define ES_DEFAULT_HOST \"{spec['default_host']}\"")
+    out.append(f'#define ES_DEFAULT_HOST "{spec["default_host"]}"')
     out.append(f"#define ES_DEFAULT_PORT {spec['default_port']}")
     out.append(f"#define ES_MAX_FRAME {spec['max_frame']}u")
     out.append(f"#define ES_HEADER_SIZE {spec['header_size']}u")
@@ -142,26 +162,40 @@ def c_source(spec: dict) -> str:
         out.append(f"#define ES_KIND_{kind.upper()} {value}")
     for name, value in spec["errors"].items():
         out.append(f"#define ES_ERR_{name} {value}")
-    out += ["", "typedef enum { ES_T_END = 0, " + ", ".join(f"{v} = {i + 1}" for i, v in enumerate(C_TYPES.values())) + " } es_type;", ""]
+    out += [
+        "",
+        "typedef enum { ES_T_END = 0, "
+        + ", ".join(f"{v} = {i + 1}" for i, v in enumerate(C_TYPES.values()))
+        + " } es_type;",
+        "",
+    ]
     for op in spec["ops"]:
         out.append(f"#define ES_OP_{op['name']} {op['code']}")
     out.append("")
-    out.append("typedef struct {\n    uint16_t code;\n    const char *name;\n    uint8_t n_request;\n"
-               "    es_type request[8];\n    uint8_t n_reply;\n    es_type reply[8];\n} es_op_layout;")
+    out.append(
+        "typedef struct {\n    uint16_t code;\n    const char *name;\n    uint8_t n_request;\n"
+        "    es_type request[8];\n    uint8_t n_reply;\n    es_type reply[8];\n} es_op_layout;"
+    )
     out.append("")
     out.append("static const es_op_layout ES_OP_LAYOUTS[] = {")
     for op in spec["ops"]:
-        out.append(f"    {{{op['code']}, \"{op['name']}\", {len(op['request'])}, {c_types(op['request'])}, "
-                   f"{len(op['reply'])}, {c_types(op['reply'])}}},")
+        out.append(
+            f'    {{{op["code"]}, "{op["name"]}", {len(op["request"])}, {c_types(op["request"])}, '
+            f"{len(op['reply'])}, {c_types(op['reply'])}}},"
+        )
     out.append("};")
     out.append(f"#define ES_OP_COUNT {len(spec['ops'])}")
     out.append("")
-    out.append("/* Request fields longer than the simulator takes (protocol.json's \"lengths\"): refused before sending. */")
-    out.append("typedef struct {\n    uint16_t op;\n    uint8_t field;\n    uint32_t most;\n    const char *name;\n} es_length_limit;")
+    out.append(
+        '/* Request fields longer than the simulator takes (protocol.json\'s "lengths"): refused before sending. */'
+    )
+    out.append(
+        "typedef struct {\n    uint16_t op;\n    uint8_t field;\n    uint32_t most;\n    const char *name;\n} es_length_limit;"
+    )
     out.append("static const es_length_limit ES_LENGTH_LIMITS[] = {")
     limits = [(op, index, most) for op in spec["ops"] for index, most in lengths(op)]
     for op, index, most in limits:
-        out.append(f"    {{{op['code']}, {index}, {most}u, \"{op['request'][index][0]}\"}},")
+        out.append(f'    {{{op["code"]}, {index}, {most}u, "{op["request"][index][0]}"}},')
     out.append("};")
     out.append(f"#define ES_LENGTH_LIMIT_COUNT {len(limits)}")
     out.append(f"static const es_type ES_ERROR_LAYOUT[] = {c_types(spec['error_payload'])};")
@@ -174,7 +208,7 @@ def c_literal(value, typ: str) -> str:
         return "{.s = " + json.dumps(value) + "}"
     if typ == "bytes":
         raw = bytes.fromhex(value)
-        return "{.b = {(const uint8_t *)\"" + "".join(f"\\x{c:02x}" for c in raw) + f"\", {len(raw)}}}}}"
+        return '{.b = {(const uint8_t *)"' + "".join(f"\\x{c:02x}" for c in raw) + f'", {len(raw)}}}}}'
     if typ == "f64":
         return f"{{.f = {float(value)!r}}}"
     if typ == "i32s":
@@ -185,11 +219,15 @@ def c_literal(value, typ: str) -> str:
 
 def c_vectors(spec: dict, vectors: list) -> str:
     ops = {op["name"]: op for op in spec["ops"]}
-    out = [f"/* Shared protocol test vectors. {BANNER} */", "#include \"protocol_gen.h\"", ""]
-    out.append("typedef union { int64_t i; double f; const char *s; struct { const uint8_t *p; uint32_t n; } b;"
-               " struct { const int32_t *p; uint32_t n; } a; } vector_value;")
-    out.append("typedef struct { const char *name; uint16_t op; uint16_t kind; uint32_t request_id;"
-               " int n_values; vector_value values[8]; const char *hex; } protocol_vector;")
+    out = [f"/* Shared protocol test vectors. {BANNER} */", '#include "protocol_gen.h"', ""]
+    out.append(
+        "typedef union { int64_t i; double f; const char *s; struct { const uint8_t *p; uint32_t n; } b;"
+        " struct { const int32_t *p; uint32_t n; } a; } vector_value;"
+    )
+    out.append(
+        "typedef struct { const char *name; uint16_t op; uint16_t kind; uint32_t request_id;"
+        " int n_values; vector_value values[8]; const char *hex; } protocol_vector;"
+    )
     out.append("static const protocol_vector PROTOCOL_VECTORS[] = {")
     for v in vectors:
         if v["kind"] == "error":
@@ -197,8 +235,10 @@ def c_vectors(spec: dict, vectors: list) -> str:
         else:
             layout = ops[v["op"]][v["kind"]]
         values = ", ".join(c_literal(val, typ) for val, (_, typ) in zip(v["values"], layout))
-        out.append(f"    {{\"{v['name']}\", ES_OP_{v['op']}, ES_KIND_{v['kind'].upper()}, {v['request_id']}, "
-                   f"{len(v['values'])}, {{{values}}}, \"{v['hex']}\"}},")
+        out.append(
+            f'    {{"{v["name"]}", ES_OP_{v["op"]}, ES_KIND_{v["kind"].upper()}, {v["request_id"]}, '
+            f'{len(v["values"])}, {{{values}}}, "{v["hex"]}"}},'
+        )
     out.append("};")
     out.append(f"#define PROTOCOL_VECTOR_COUNT {len(vectors)}")
     out.append("")
@@ -207,8 +247,13 @@ def c_vectors(spec: dict, vectors: list) -> str:
 
 def outputs() -> dict[Path, str]:
     spec, vectors = load()
-    files = {PY_OUT: python_source(spec), C_OUT: c_source(spec), C_VECTORS_OUT: c_vectors(spec, vectors),
-             **layers.outputs(spec), **generate_viewer.outputs()}
+    files = {
+        PY_OUT: python_source(spec),
+        C_OUT: c_source(spec),
+        C_VECTORS_OUT: c_vectors(spec, vectors),
+        **layers.outputs(spec),
+        **generate_viewer.outputs(),
+    }
     files.update(robios_constants.outputs(spec, layers.HEADER, files[layers.HEADER]))  # its constants section
     return files
 

@@ -33,8 +33,10 @@ SIM_CONSTANTS = ROOT / "src" / "eyesim" / "protocol" / "constants.py"
 
 HEADER_BEGIN = "/* ==== Generated constants ==== */"
 HEADER_END = "/* ==== End of the generated constants ==== */"
-HEADER_NOTE = ("From the \"constants\" groups of protocol/protocol.json down to \"End of the generated constants\": "
-               "change them there and run `make protocol`.")
+HEADER_NOTE = (
+    'From the "constants" groups of protocol/protocol.json down to "End of the generated constants": '
+    "change them there and run `make protocol`."
+)
 KINDS = ("value", "char", "text", "expression")
 NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 EXPRESSION = re.compile(r"[A-Za-z0-9_ *+]+")
@@ -71,8 +73,10 @@ def evaluate(entry: dict, earlier: dict, where: str) -> int | str:
         names = NAME.findall(expression)
         unknown = [n for n in names if not n[0].isdigit() and n not in earlier]
         if not EXPRESSION.fullmatch(expression) or unknown:
-            raise SystemExit(f"{where}: an expression multiplies or adds numbers and constants defined "
-                             f"before it (unknown: {', '.join(unknown) or 'none'})")
+            raise SystemExit(
+                f"{where}: an expression multiplies or adds numbers and constants defined "
+                f"before it (unknown: {', '.join(unknown) or 'none'})"
+            )
         value = eval(expression, {"__builtins__": {}}, dict(earlier))  # checked above: names, digits, * and +
     else:
         value = entry["value"]
@@ -80,7 +84,7 @@ def evaluate(entry: dict, earlier: dict, where: str) -> int | str:
             if not re.fullmatch(r"0x[0-9A-F]+", value):
                 raise SystemExit(f"{where}: a value string is a hex literal in upper case (0x00FF00)")
             value = int(value, 16)
-    if not isinstance(value, int) or not -2**31 <= value < 2**32:
+    if not isinstance(value, int) or not -(2**31) <= value < 2**32:
         raise SystemExit(f"{where}: {value!r} is not a 32-bit integer")
     return value
 
@@ -128,7 +132,7 @@ def header_source(groups: list[dict], current: str, path: Path) -> str:
     begin, end = current.find(HEADER_BEGIN), current.find(HEADER_END)
     if begin < 0 or end < begin:
         raise SystemExit(f"{path}: the generated-constants markers are missing")
-    return current[:begin] + header_section(groups) + current[end + len(HEADER_END):]
+    return current[:begin] + header_section(groups) + current[end + len(HEADER_END) :]
 
 
 # ---- Python -----------------------------------------------------------------------------------------
@@ -167,17 +171,25 @@ def docstring(text: str) -> list[str]:
 
 
 def eye_source(groups: list[dict]) -> str:
-    doc = docstring("RoBIOS constants as plain Python ints (strings for the few text constants), with eyebot.h's "
-                    f"values. {REGENERATE}")
-    out = [*doc, *python_definitions(groups), "",
-           '__all__ = [name for name in dir() if name.isupper() and not name.startswith("_")]']
+    doc = docstring(
+        "RoBIOS constants as plain Python ints (strings for the few text constants), with eyebot.h's "
+        f"values. {REGENERATE}"
+    )
+    out = [
+        *doc,
+        *python_definitions(groups),
+        "",
+        '__all__ = [name for name in dir() if name.isupper() and not name.startswith("_")]',
+    ]
     return "\n".join(out) + "\n"
 
 
 def simulator_source(groups: list[dict]) -> str:
-    doc = docstring("The RoBIOS constants, as programs see them in eyebot.h and eye.constants: the simulator "
-                    "takes every RoBIOS value from here. GROUPS holds each group's names and values in "
-                    f"protocol.json's order. {REGENERATE}")
+    doc = docstring(
+        "The RoBIOS constants, as programs see them in eyebot.h and eye.constants: the simulator "
+        "takes every RoBIOS value from here. GROUPS holds each group's names and values in "
+        f"protocol.json's order. {REGENERATE}"
+    )
     out = [*doc, *python_definitions(groups), "", "GROUPS: dict[str, dict[str, int | str]] = {"]
     for group in groups:
         entries = [entry["name"] for entry in group["constants"] if not entry.get("c_only")]
@@ -194,5 +206,8 @@ def simulator_source(groups: list[dict]) -> str:
 def outputs(spec: dict, header_path: Path, header: str) -> dict[Path, str]:
     """eyebot.h (given as the text the other layers made of it) with its constants, and the two Python modules."""
     groups = load(spec)
-    return {header_path: header_source(groups, header, header_path), EYE_CONSTANTS: eye_source(groups),
-            SIM_CONSTANTS: simulator_source(groups)}
+    return {
+        header_path: header_source(groups, header, header_path),
+        EYE_CONSTANTS: eye_source(groups),
+        SIM_CONSTANTS: simulator_source(groups),
+    }

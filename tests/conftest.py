@@ -18,8 +18,10 @@ def corpus_missing() -> str | None:
 
     if (CORPUS / "MANIFEST.tsv").is_file():
         return None
-    return (f"the shared corpus of real EyeSim files is missing: expected {CORPUS} "
-            f"(shared/ beside the checkout, as CI provides it)")
+    return (
+        f"the shared corpus of real EyeSim files is missing: expected {CORPUS} "
+        f"(shared/ beside the checkout, as CI provides it)"
+    )
 
 
 def pytest_sessionstart(session):
@@ -45,8 +47,9 @@ def pytest_ignore_collect(collection_path, config):
 
 def pytest_terminal_summary(terminalreporter):
     if _skipped_for_corpus:
-        terminalreporter.write_line(f"skipped {len(_skipped_for_corpus)} test module(s) that read the shared corpus: "
-                                    f"{corpus_missing()}")
+        terminalreporter.write_line(
+            f"skipped {len(_skipped_for_corpus)} test module(s) that read the shared corpus: {corpus_missing()}"
+        )
 
 
 @pytest.fixture(autouse=True, scope="session")

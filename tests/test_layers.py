@@ -89,8 +89,12 @@ def module_name(path: Path) -> str:
 
 def for_type_checkers(tree: ast.AST) -> set[int]:
     """The nodes under `if TYPE_CHECKING:` (ids)."""
-    return {id(inner) for node in ast.walk(tree)
-            if isinstance(node, ast.If) and "TYPE_CHECKING" in ast.unparse(node.test) for inner in ast.walk(node)}
+    return {
+        id(inner)
+        for node in ast.walk(tree)
+        if isinstance(node, ast.If) and "TYPE_CHECKING" in ast.unparse(node.test)
+        for inner in ast.walk(node)
+    }
 
 
 def module_imports() -> dict[tuple[str, str], list[str]]:
@@ -121,7 +125,7 @@ def cycles(edges) -> list[list[str]]:
 
     def visit(part, trail):
         if part in trail:
-            found.append(trail[trail.index(part):] + [part])
+            found.append(trail[trail.index(part) :] + [part])
             return
         if part in seen:
             return
@@ -163,16 +167,31 @@ def test_the_module_scan_finds_a_cycle_and_ignores_type_checking_imports():
 
 def test_every_part_has_a_layer():
     layered = {part for layer in LAYERS for part in layer}
-    parts = {p.stem if p.suffix == ".py" else p.name for p in PACKAGE.iterdir()
-             if (p.suffix == ".py" or (p / "__init__.py").exists())} - ENTRY_POINTS - {PART_FOLDERS}
-    assert parts == layered, f"parts without a layer: {sorted(parts - layered)}; layers without a part: {sorted(layered - parts)}"
+    parts = (
+        {
+            p.stem if p.suffix == ".py" else p.name
+            for p in PACKAGE.iterdir()
+            if (p.suffix == ".py" or (p / "__init__.py").exists())
+        }
+        - ENTRY_POINTS
+        - {PART_FOLDERS}
+    )
+    assert parts == layered, (
+        f"parts without a layer: {sorted(parts - layered)}; layers without a part: {sorted(layered - parts)}"
+    )
 
 
 def test_parts_import_only_lower_layers():
     rank = {part: (i, layer.index(part)) for i, layer in enumerate(LAYERS) for part in layer}
-    upward = sorted((a, b) for a, b in part_imports()
-                    if a not in ENTRY_POINTS and b in rank and a in rank
-                    and rank[b][0] >= rank[a][0] and not (rank[b][0] == rank[a][0] and rank[b][1] < rank[a][1]))
+    upward = sorted(
+        (a, b)
+        for a, b in part_imports()
+        if a not in ENTRY_POINTS
+        and b in rank
+        and a in rank
+        and rank[b][0] >= rank[a][0]
+        and not (rank[b][0] == rank[a][0] and rank[b][1] < rank[a][1])
+    )
     assert not upward, "imports of a part on the same or a higher layer:\n" + describe(part_imports(), upward)
 
 

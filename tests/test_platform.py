@@ -15,14 +15,17 @@ import pytest
 from eyesim import platform
 
 
-@pytest.mark.parametrize("code,words", [
-    (0xC0000005, "crashed: access violation (0xC0000005)"),
-    (-1073741819, "crashed: access violation (0xC0000005)"),  # the same status read as a signed int
-    (0xC00000FD, "crashed: stack overflow (0xC00000FD)"),
-    (0xC0000094, "crashed: integer division by zero (0xC0000094)"),
-    (1816, "was ended: its CPU time limit"),
-    (0xC000013A, "was ended: Ctrl-C (0xC000013A)"),
-])
+@pytest.mark.parametrize(
+    "code,words",
+    [
+        (0xC0000005, "crashed: access violation (0xC0000005)"),
+        (-1073741819, "crashed: access violation (0xC0000005)"),  # the same status read as a signed int
+        (0xC00000FD, "crashed: stack overflow (0xC00000FD)"),
+        (0xC0000094, "crashed: integer division by zero (0xC0000094)"),
+        (1816, "was ended: its CPU time limit"),
+        (0xC000013A, "was ended: Ctrl-C (0xC000013A)"),
+    ],
+)
 def test_windows_exit_codes_in_words(monkeypatch, code, words):
     monkeypatch.setattr(platform, "WINDOWS", True)
     assert platform.exit_reason(code) == words
@@ -63,10 +66,12 @@ def test_limits_are_false_when_empty():
 def test_a_group_is_ended_with_everything_in_it(tmp_path):
     """A program of its own group that started a child: kill_tree ends both."""
     marker = tmp_path / "child.pid"
-    script = ("import subprocess, sys, time\n"
-              f"child = subprocess.Popen([sys.executable, '-c', 'import time; time.sleep(600)'])\n"
-              f"open({str(marker)!r}, 'w').write(str(child.pid))\n"
-              "time.sleep(600)\n")
+    script = (
+        "import subprocess, sys, time\n"
+        f"child = subprocess.Popen([sys.executable, '-c', 'import time; time.sleep(600)'])\n"
+        f"open({str(marker)!r}, 'w').write(str(child.pid))\n"
+        "time.sleep(600)\n"
+    )
     process = platform.start([sys.executable, "-c", script], own_group=True)
     deadline = time.monotonic() + 30
     while not (marker.exists() and marker.read_text()) and time.monotonic() < deadline:
@@ -95,8 +100,9 @@ def test_cpu_limits_end_a_spinning_program():
 
 
 def test_output_is_read_without_blocking(tmp_path):
-    process = subprocess.Popen([sys.executable, "-c", "print('hello', flush=True); import time; time.sleep(2)"],
-                               stdout=subprocess.PIPE)
+    process = subprocess.Popen(
+        [sys.executable, "-c", "print('hello', flush=True); import time; time.sleep(2)"], stdout=subprocess.PIPE
+    )
     source = platform.readable(process.stdout)
     received = b""
     deadline = time.monotonic() + 10

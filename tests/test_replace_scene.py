@@ -35,8 +35,13 @@ def test_a_new_scene_replaces_robots_disconnects_programs_and_time_goes_on():
         client.hello()
         client.call("OS_GET_COUNT")
         events = []
-        sim.events.subscribe(type("Listener", (), {"wants_lcd": False, "on_event": lambda self, m: events.append(m),
-                                                   "on_snapshot": lambda self, m: None})())
+        sim.events.subscribe(
+            type(
+                "Listener",
+                (),
+                {"wants_lcd": False, "on_event": lambda self, m: events.append(m), "on_snapshot": lambda self, m: None},
+            )()
+        )
         before = sim.time_us
         bigger = arena(robots=((300, 300, 0), (900, 900, 90)), size=3000)
         on_sim_thread(sim, lambda s: s.replace_scene(bigger))

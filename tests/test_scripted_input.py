@@ -26,14 +26,25 @@ def find_robot(sim):
         if robot is None:
             raise ValueError(f"no robot {selector!r}")
         return robot
+
     return find
 
 
 def test_each_option_takes_effect_at_its_simulation_time():
     sim = Simulation(arena(), Clock(DETERMINISTIC))
-    schedule_inputs(sim, options(key=["1:key2@0.01"], touch=["1:100,50@0.01"], irtv=["1:ok@0.01", "1:>@0.01"],
-                                 serial=["1:3:a\\x41\\n@0.01"], serial_loopback=["1:4"],
-                                 digital=["1:2=1@0.01"], analog=["1:8=1023@0.01"]), find_robot(sim))
+    schedule_inputs(
+        sim,
+        options(
+            key=["1:key2@0.01"],
+            touch=["1:100,50@0.01"],
+            irtv=["1:ok@0.01", "1:>@0.01"],
+            serial=["1:3:a\\x41\\n@0.01"],
+            serial_loopback=["1:4"],
+            digital=["1:2=1@0.01"],
+            analog=["1:8=1023@0.01"],
+        ),
+        find_robot(sim),
+    )
     robot = sim.robots[0]
     assert robot.component(SerialPorts).port(4).loopback
     sim.run(until=0.008)
@@ -47,20 +58,23 @@ def test_each_option_takes_effect_at_its_simulation_time():
     assert robot.component(AnalogInputs).read(8) == 1023
 
 
-@pytest.mark.parametrize("option, value, message", [
-    ("touch", "1:480,0@1", "x must be a whole number from 0 to 479, not 480"),
-    ("touch", "1:10,10", "expected e.g. 1:100,50@2.5"),
-    ("irtv", "1:PLAY@1", "'PLAY' is not an IR remote button"),
-    ("serial", "1:21:x@1", "interface must be a whole number from 0 to 20, not 21"),
-    ("serial", "1:0:\u20ac@1", "must be Latin-1"),
-    ("serial_loopback", "1:x", "expected e.g. 1:0"),
-    ("digital", "1:17=1@1", "line must be a whole number from 1 to 16, not 17"),
-    ("digital", "1:1=2@1", "expected e.g. 1:3=1@0.5"),
-    ("analog", "1:9=1@1", "channel must be a whole number from 1 to 8, not 9"),
-    ("analog", "1:2=1024@1", "value must be a whole number from 0 to 1023, not 1024"),
-    ("key", "1:KEY5@1", "expected e.g. 1:KEY1@2.5"),
-    ("analog", "2:2=1@1", "no robot '2'"),
-])
+@pytest.mark.parametrize(
+    "option, value, message",
+    [
+        ("touch", "1:480,0@1", "x must be a whole number from 0 to 479, not 480"),
+        ("touch", "1:10,10", "expected e.g. 1:100,50@2.5"),
+        ("irtv", "1:PLAY@1", "'PLAY' is not an IR remote button"),
+        ("serial", "1:21:x@1", "interface must be a whole number from 0 to 20, not 21"),
+        ("serial", "1:0:\u20ac@1", "must be Latin-1"),
+        ("serial_loopback", "1:x", "expected e.g. 1:0"),
+        ("digital", "1:17=1@1", "line must be a whole number from 1 to 16, not 17"),
+        ("digital", "1:1=2@1", "expected e.g. 1:3=1@0.5"),
+        ("analog", "1:9=1@1", "channel must be a whole number from 1 to 8, not 9"),
+        ("analog", "1:2=1024@1", "value must be a whole number from 0 to 1023, not 1024"),
+        ("key", "1:KEY5@1", "expected e.g. 1:KEY1@2.5"),
+        ("analog", "2:2=1@1", "no robot '2'"),
+    ],
+)
 def test_bad_options_are_refused_with_what_is_wrong(option, value, message):
     sim = Simulation(arena())
     with pytest.raises(ValueError, match=message):

@@ -74,13 +74,25 @@ def _version(numbers: tuple[int, int], separator: str) -> str:
 
 
 PLATFORMS = (
-    Platform("linux-x86_64", f"x86_64-linux-gnu.{_version(GLIBC_MIN, '.')}",
-             f"manylinux_{_version(GLIBC_MIN, '_')}_x86_64", "libeyesim.so"),
+    Platform(
+        "linux-x86_64",
+        f"x86_64-linux-gnu.{_version(GLIBC_MIN, '.')}",
+        f"manylinux_{_version(GLIBC_MIN, '_')}_x86_64",
+        "libeyesim.so",
+    ),
     Platform("windows-x86_64", "x86_64-windows-gnu", "win_amd64", "eyesim.dll"),
-    Platform("macos-arm64", f"aarch64-macos.{_version(MACOS_ARM64_MIN, '.')}",
-             f"macosx_{_version(MACOS_ARM64_MIN, '_')}_arm64", "libeyesim.dylib"),
-    Platform("macos-x86_64", f"x86_64-macos.{_version(MACOS_X86_64_MIN, '.')}",
-             f"macosx_{_version(MACOS_X86_64_MIN, '_')}_x86_64", "libeyesim.dylib"),
+    Platform(
+        "macos-arm64",
+        f"aarch64-macos.{_version(MACOS_ARM64_MIN, '.')}",
+        f"macosx_{_version(MACOS_ARM64_MIN, '_')}_arm64",
+        "libeyesim.dylib",
+    ),
+    Platform(
+        "macos-x86_64",
+        f"x86_64-macos.{_version(MACOS_X86_64_MIN, '.')}",
+        f"macosx_{_version(MACOS_X86_64_MIN, '_')}_x86_64",
+        "libeyesim.dylib",
+    ),
 )
 PLATFORMS_BY_NAME = {platform.name: platform for platform in PLATFORMS}
 
@@ -103,6 +115,7 @@ def log(message: str) -> None:
 
 
 # ---- The Python part --------------------------------------------------------------------------
+
 
 def _fingerprint(paths: list[Path]) -> str:
     """Names, sizes and modification times of every file under the given paths."""
@@ -132,10 +145,22 @@ def pure_wheel(build_dir: Path) -> Path:
     log("building the Python part (the build backend without its CMake step)")
     (build_dir / "pure.log").write_text("")
     # wheel.cmake=false: scikit-build-core copies the packages and writes the metadata only.
-    _run([sys.executable, "-m", "pip", "wheel", "--quiet", "--no-deps", "--wheel-dir", str(wheel_dir),
-          "--config-settings=wheel.cmake=false",
-          f"--config-settings=build-dir={build_dir / 'pure-build'}", str(ROOT)],
-         log_file=build_dir / "pure.log")
+    _run(
+        [
+            sys.executable,
+            "-m",
+            "pip",
+            "wheel",
+            "--quiet",
+            "--no-deps",
+            "--wheel-dir",
+            str(wheel_dir),
+            "--config-settings=wheel.cmake=false",
+            f"--config-settings=build-dir={build_dir / 'pure-build'}",
+            str(ROOT),
+        ],
+        log_file=build_dir / "pure.log",
+    )
     wheels = sorted(wheel_dir.glob("*.whl"))
     if len(wheels) != 1:
         raise BuildError(f"the build backend made {len(wheels)} wheels in {wheel_dir}, expected one")
@@ -149,11 +174,13 @@ def _check_pure(wheel: Path) -> None:
     with zipfile.ZipFile(wheel) as archive:
         compiled = [name for name in archive.namelist() if name.endswith((".so", ".pyd", ".dll", ".dylib"))]
     if compiled or not wheel.name.endswith("-py3-none-any.whl"):
-        raise BuildError(f"{wheel.name} is not pure Python ({compiled or 'its tag'}); the binary wheels "
-                         f"could not be tagged py3-none")
+        raise BuildError(
+            f"{wheel.name} is not pure Python ({compiled or 'its tag'}); the binary wheels could not be tagged py3-none"
+        )
 
 
 # ---- The C library ----------------------------------------------------------------------------
+
 
 def build_library(platform: Platform, build_dir: Path) -> Path:
     """libeyesim and its headers for a platform, cross-compiled with Zig; returns the install
@@ -165,9 +192,20 @@ def build_library(platform: Platform, build_dir: Path) -> Path:
     log_file = build_dir / platform.name / "build.log"
     log_file.parent.mkdir(parents=True, exist_ok=True)
     log_file.write_text("")
-    _run(["cmake", "-S", str(ROBIOS), "-B", str(cmake_dir), f"-DCMAKE_TOOLCHAIN_FILE={TOOLCHAIN}",
-          f"-DZIG_TARGET={platform.zig_target}", f"-DZIG_PYTHON={sys.executable}",
-          "-DCMAKE_BUILD_TYPE=Release"], log_file=log_file)
+    _run(
+        [
+            "cmake",
+            "-S",
+            str(ROBIOS),
+            "-B",
+            str(cmake_dir),
+            f"-DCMAKE_TOOLCHAIN_FILE={TOOLCHAIN}",
+            f"-DZIG_TARGET={platform.zig_target}",
+            f"-DZIG_PYTHON={sys.executable}",
+            "-DCMAKE_BUILD_TYPE=Release",
+        ],
+        log_file=log_file,
+    )
     _run(["cmake", "--build", str(cmake_dir), "--parallel", str(os.cpu_count() or 1)], log_file=log_file)
     # A fresh prefix, so that nothing of an earlier install stays behind.
     shutil.rmtree(prefix, ignore_errors=True)
@@ -190,6 +228,7 @@ def _run(command: list[str], log_file: Path) -> None:
 
 
 # ---- Wheels -----------------------------------------------------------------------------------
+
 
 def install_dir() -> str:
     """Where in the wheel the C library goes: pyproject.toml's tool.scikit-build wheel.install-dir,
@@ -232,8 +271,12 @@ class WheelWriter:
         self.records.append((name, record_hash(data), str(len(data))))
 
     def close(self, tags: list[str], generator: str) -> None:
-        wheel = ["Wheel-Version: 1.0", f"Generator: {generator}", "Root-Is-Purelib: false",
-                 *(f"Tag: {tag}" for tag in tags)]
+        wheel = [
+            "Wheel-Version: 1.0",
+            f"Generator: {generator}",
+            "Root-Is-Purelib: false",
+            *(f"Tag: {tag}" for tag in tags),
+        ]
         self.add(f"{self.dist_info}/WHEEL", ("\n".join(wheel) + "\n").encode())
         record_name = f"{self.dist_info}/RECORD"
         text = io.StringIO()
@@ -263,8 +306,9 @@ def assemble(pure: Path, platform: Platform, prefix: Path, out_dir: Path) -> Pat
         writer = WheelWriter(partial, dist_info)
         try:
             package = [info for info in entries if not info.filename.startswith(f"{dist_info}/")]
-            metadata = [info for info in entries
-                        if info.filename.startswith(f"{dist_info}/") and info.filename not in replaced]
+            metadata = [
+                info for info in entries if info.filename.startswith(f"{dist_info}/") and info.filename not in replaced
+            ]
             for info in package:
                 writer.add(info.filename, source.read(info), _mode(info), info.date_time)
             for file in sorted(p for p in prefix.rglob("*") if p.is_file()):
@@ -292,6 +336,7 @@ def _mode(info: zipfile.ZipInfo) -> int:
 
 # ---- All of it --------------------------------------------------------------------------------
 
+
 @contextlib.contextmanager
 def _locked(build_dir: Path):
     """One build at a time in a build folder (`make wheels` beside the packaging tests)."""
@@ -313,12 +358,15 @@ def check_zig() -> None:
     try:
         import ziglang  # noqa: F401
     except ImportError:
-        raise BuildError(f"the ziglang package is missing from {sys.executable}: pip install ziglang "
-                         f"(it is in eyesim's [test] and [zig] extras)") from None
+        raise BuildError(
+            f"the ziglang package is missing from {sys.executable}: pip install ziglang "
+            f"(it is in eyesim's [test] and [zig] extras)"
+        ) from None
 
 
-def build(out_dir: Path = DEFAULT_OUT_DIR, build_dir: Path = DEFAULT_BUILD_DIR,
-          platforms: tuple[Platform, ...] = PLATFORMS) -> dict[str, Path]:
+def build(
+    out_dir: Path = DEFAULT_OUT_DIR, build_dir: Path = DEFAULT_BUILD_DIR, platforms: tuple[Platform, ...] = PLATFORMS
+) -> dict[str, Path]:
     """Builds the wheels for the platforms; returns {platform name: wheel}. Raises BuildError
     naming every platform that failed (after writing the others' wheels)."""
     out_dir, build_dir = Path(out_dir).resolve(), Path(build_dir).resolve()
@@ -347,10 +395,19 @@ def build(out_dir: Path = DEFAULT_OUT_DIR, build_dir: Path = DEFAULT_BUILD_DIR,
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--out-dir", type=Path, default=DEFAULT_OUT_DIR, help="where the wheels go (dist/)")
-    parser.add_argument("--build-dir", type=Path, default=DEFAULT_BUILD_DIR,
-                        help="intermediate files, kept for the next build (build/wheels/)")
-    parser.add_argument("--platform", action="append", choices=sorted(PLATFORMS_BY_NAME), dest="platforms",
-                        help="build only for this platform (repeatable; default: all)")
+    parser.add_argument(
+        "--build-dir",
+        type=Path,
+        default=DEFAULT_BUILD_DIR,
+        help="intermediate files, kept for the next build (build/wheels/)",
+    )
+    parser.add_argument(
+        "--platform",
+        action="append",
+        choices=sorted(PLATFORMS_BY_NAME),
+        dest="platforms",
+        help="build only for this platform (repeatable; default: all)",
+    )
     args = parser.parse_args(argv)
     platforms = tuple(PLATFORMS_BY_NAME[name] for name in args.platforms) if args.platforms else PLATFORMS
     started = time.monotonic()

@@ -18,8 +18,9 @@ class EyeSimError(RuntimeError):
 
 def library_path() -> Path:
     """libeyesim inside the installed eyesim package, or in $EYESIM_ROBIOS (a development build)."""
-    name = {"darwin": "libeyesim.dylib", "win32": "eyesim.dll", "cygwin": "cygeyesim.dll"}.get(sys.platform,
-                                                                                              "libeyesim.so")
+    name = {"darwin": "libeyesim.dylib", "win32": "eyesim.dll", "cygwin": "cygeyesim.dll"}.get(
+        sys.platform, "libeyesim.so"
+    )
     return paths.robios_lib_dir() / name
 
 
@@ -28,7 +29,8 @@ def _load() -> ctypes.CDLL:
     if not path.is_file():
         raise ImportError(
             f"eye: the RoBIOS C library is not at {path}. Reinstall EyeSim (pip install eyesim), or for a "
-            f"development build set EYESIM_ROBIOS to its install prefix (docs/api/python.md)")
+            f"development build set EYESIM_ROBIOS to its install prefix (docs/api/python.md)"
+        )
     try:
         return ctypes.CDLL(str(path))
     except OSError as error:
@@ -36,6 +38,7 @@ def _load() -> ctypes.CDLL:
 
 
 lib = _load()
+
 
 class _Functions:
     """libeyesim's functions with their prototypes, bound on first use: a library older than this
@@ -47,8 +50,10 @@ class _Functions:
         try:
             function = getattr(lib, name)
         except AttributeError:
-            raise EyeSimError(f"{name} is not in the C library {library_path()}, which is older than this eye "
-                              f"module; rebuild or reinstall EyeSim") from None
+            raise EyeSimError(
+                f"{name} is not in the C library {library_path()}, which is older than this eye "
+                f"module; rebuild or reinstall EyeSim"
+            ) from None
         function.restype, function.argtypes = PROTOTYPES[name]
         setattr(self, name, function)
         return function

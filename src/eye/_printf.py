@@ -7,8 +7,10 @@ import math
 import re
 
 # %[flags][width][.precision][length]conversion
-_SPEC = re.compile(r"%(?P<flags>[-+ #0]*)(?P<width>\*|\d+)?(?:\.(?P<precision>\*|\d*))?"
-                   r"(?P<length>hh|h|ll|l|L|q|j|z|Z|t)?(?P<conversion>[diouxXeEfFgGaAcspn%])")
+_SPEC = re.compile(
+    r"%(?P<flags>[-+ #0]*)(?P<width>\*|\d+)?(?:\.(?P<precision>\*|\d*))?"
+    r"(?P<length>hh|h|ll|l|L|q|j|z|Z|t)?(?P<conversion>[diouxXeEfFgGaAcspn%])"
+)
 _BITS = {"hh": 8, "h": 16, "l": 64, "ll": 64, "q": 64, "j": 64, "z": 64, "Z": 64, "t": 64}  # else int: 32
 _MISSING = object()
 
@@ -66,16 +68,24 @@ def _convert(function: str, spec: re.Match, supply) -> str:
         if conversion in "diouxX":
             return _integer(value, conversion, flags, width, precision, spec["length"])
         if conversion in "eEfFgG":
-            return ("%" + flags + (str(width) if width else "") + ("" if precision is None else f".{precision}")
-                    + conversion) % float(value)
+            return (
+                "%"
+                + flags
+                + (str(width) if width else "")
+                + ("" if precision is None else f".{precision}")
+                + conversion
+            ) % float(value)
         if conversion in "aA":
             return _pad(_hex_float(float(value), precision, conversion == "A"), width, flags)
         if conversion == "c":
             return _pad(chr(value & 0xFF) if isinstance(value, int) else _one_character(value), width, flags)
         if conversion == "p":
             return _pad("(nil)" if not value else f"0x{int(value):x}", width, flags)
-        text = "(null)" if value is None else (value.decode("utf-8", errors="replace") if isinstance(value, bytes)
-                                                else str(value))
+        text = (
+            "(null)"
+            if value is None
+            else (value.decode("utf-8", errors="replace") if isinstance(value, bytes) else str(value))
+        )
         return _pad(text if precision is None else text[:precision], width, flags)
     except (TypeError, ValueError) as error:
         raise TypeError(f"{function}: {spec.group(0)} cannot print {value!r} ({error})") from None

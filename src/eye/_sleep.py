@@ -19,16 +19,23 @@ from eye._library import lib
 _system_sleep = time.sleep
 _simulated = lib.eyesim_sleep
 _simulated.argtypes, _simulated.restype = [ctypes.c_uint, ctypes.c_uint], ctypes.c_int
-_LIBRARY_DIRS = tuple(sorted({path for name in ("stdlib", "platstdlib", "purelib", "platlib")
-                              if (path := sysconfig.get_path(name))}))
-_MAX_SECONDS = 2 ** 32 - 1
+_LIBRARY_DIRS = tuple(
+    sorted({path for name in ("stdlib", "platstdlib", "purelib", "platlib") if (path := sysconfig.get_path(name))})
+)
+_MAX_SECONDS = 2**32 - 1
 
 
 def sleep(secs: float) -> None:
     """time.sleep: waits `secs` seconds of simulation time once the program talks to the simulator."""
     caller = sys._getframe(1).f_code.co_filename
-    if isinstance(secs, bool) or not isinstance(secs, (int, float)) or not secs >= 0 or math.isinf(secs) \
-            or caller.startswith(_LIBRARY_DIRS) or caller.startswith("<frozen"):
+    if (
+        isinstance(secs, bool)
+        or not isinstance(secs, (int, float))
+        or not secs >= 0
+        or math.isinf(secs)
+        or caller.startswith(_LIBRARY_DIRS)
+        or caller.startswith("<frozen")
+    ):
         return _system_sleep(secs)  # its own errors for bad values (TypeError, ValueError)
     whole = min(int(secs), _MAX_SECONDS)
     nanoseconds = min(round((secs - int(secs)) * 1e9), 999_999_999)

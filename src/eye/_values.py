@@ -41,8 +41,9 @@ def input_buffer(data: Buffer, size: int, function: str, what: str, why: str) ->
         try:
             data = bytes(value & 0xFF for value in data)  # a list of ints (negative ones as c_byte had them)
         except TypeError:
-            raise TypeError(f"{function}: {what} must be an image buffer or a sequence of ints, "
-                            f"not {type(data).__name__}") from None
+            raise TypeError(
+                f"{function}: {what} must be an image buffer or a sequence of ints, not {type(data).__name__}"
+            ) from None
         view = memoryview(data)
     if view.nbytes < size:
         raise _size_error(function, what, view.nbytes, size, why)
@@ -58,8 +59,10 @@ def output_buffer(data: Buffer | None, size: int, function: str, what: str, why:
     try:
         view = memoryview(data)
     except TypeError:
-        raise TypeError(f"{function}: {what} must be a writable buffer (bytearray, ctypes array, numpy array), "
-                        f"not {type(data).__name__}") from None
+        raise TypeError(
+            f"{function}: {what} must be a writable buffer (bytearray, ctypes array, numpy array), "
+            f"not {type(data).__name__}"
+        ) from None
     if view.readonly or not view.c_contiguous:
         raise TypeError(f"{function}: {what} must be a writable, contiguous buffer")
     if view.nbytes < size:

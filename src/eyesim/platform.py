@@ -41,11 +41,13 @@ class Limits:
     file_bytes: int | None = None
 
     def __bool__(self) -> bool:
-        return any(value is not None for value in (self.cpu_seconds, self.memory_bytes, self.processes,
-                                                   self.file_bytes))
+        return any(
+            value is not None for value in (self.cpu_seconds, self.memory_bytes, self.processes, self.file_bytes)
+        )
 
 
 # ---- Starting and ending programs ---------------------------------------------------------------
+
 
 def start(command: list[str], *, own_group: bool = False, limits: Limits = Limits(), **popen) -> subprocess.Popen:
     """subprocess.Popen with the program in a group of its own (`own_group`: ending it ends what it
@@ -120,21 +122,35 @@ _jobs: dict[int, int] = {}  # pid -> its job's handle
 # Spelled `sys.platform == "win32"` (as are the branches that use it), not WINDOWS: type checkers
 # then know that ctypes.WinDLL and the rest exist here, and skip it on other systems.
 if sys.platform == "win32":
+
     class _IoCounters(ctypes.Structure):
-        _fields_ = [(name, ctypes.c_ulonglong) for name in
-                    ("reads", "writes", "others", "read_bytes", "write_bytes", "other_bytes")]
+        _fields_ = [
+            (name, ctypes.c_ulonglong)
+            for name in ("reads", "writes", "others", "read_bytes", "write_bytes", "other_bytes")
+        ]
 
     class _BasicLimits(ctypes.Structure):
-        _fields_ = [("per_process_user_time", ctypes.c_int64), ("per_job_user_time", ctypes.c_int64),
-                    ("flags", wintypes.DWORD), ("min_working_set", ctypes.c_size_t),
-                    ("max_working_set", ctypes.c_size_t), ("active_processes", wintypes.DWORD),
-                    ("affinity", ctypes.c_size_t), ("priority_class", wintypes.DWORD),
-                    ("scheduling_class", wintypes.DWORD)]
+        _fields_ = [
+            ("per_process_user_time", ctypes.c_int64),
+            ("per_job_user_time", ctypes.c_int64),
+            ("flags", wintypes.DWORD),
+            ("min_working_set", ctypes.c_size_t),
+            ("max_working_set", ctypes.c_size_t),
+            ("active_processes", wintypes.DWORD),
+            ("affinity", ctypes.c_size_t),
+            ("priority_class", wintypes.DWORD),
+            ("scheduling_class", wintypes.DWORD),
+        ]
 
     class _ExtendedLimits(ctypes.Structure):
-        _fields_ = [("basic", _BasicLimits), ("io", _IoCounters), ("process_memory", ctypes.c_size_t),
-                    ("job_memory", ctypes.c_size_t), ("peak_process_memory", ctypes.c_size_t),
-                    ("peak_job_memory", ctypes.c_size_t)]
+        _fields_ = [
+            ("basic", _BasicLimits),
+            ("io", _IoCounters),
+            ("process_memory", ctypes.c_size_t),
+            ("job_memory", ctypes.c_size_t),
+            ("peak_process_memory", ctypes.c_size_t),
+            ("peak_job_memory", ctypes.c_size_t),
+        ]
 
     _kernel32 = ctypes.WinDLL("kernel32", use_last_error=True)
     _kernel32.CreateJobObjectW.restype = wintypes.HANDLE
@@ -154,7 +170,6 @@ if sys.platform == "win32":
     _CREATE_SUSPENDED = 0x4
     _CREATE_NEW_PROCESS_GROUP = 0x200
 
-
     def _new_job(limits: Limits) -> int:
         job = _kernel32.CreateJobObjectW(None, None)
         if not job:
@@ -170,8 +185,9 @@ if sys.platform == "win32":
         if limits.processes is not None:
             info.basic.flags |= _LIMIT_ACTIVE_PROCESS
             info.basic.active_processes = limits.processes
-        if not _kernel32.SetInformationJobObject(job, _EXTENDED_LIMIT_INFORMATION, ctypes.byref(info),
-                                                 ctypes.sizeof(info)):
+        if not _kernel32.SetInformationJobObject(
+            job, _EXTENDED_LIMIT_INFORMATION, ctypes.byref(info), ctypes.sizeof(info)
+        ):
             error = ctypes.get_last_error()
             _kernel32.CloseHandle(job)
             raise OSError(error, "cannot set the program's job limits")
@@ -201,6 +217,7 @@ if sys.platform == "win32":
 
 
 # ---- Reading a program's output -----------------------------------------------------------------
+
 
 def readable(pipe):
     """Something the simulation thread's selector can watch for a child's output pipe, with a
@@ -278,6 +295,7 @@ class _PipeRelay:
 
 # ---- Finding libeyesim ----------------------------------------------------------------------------
 
+
 def library_environment(env: dict[str, str], lib_dir: Path) -> dict[str, str]:
     """`env` for a program that loads libeyesim from `lib_dir`. C programs built by `eyesim cc` find
     it by their rpath (Linux, macOS) or beside the .exe (Windows); this is for the rest. Windows
@@ -332,8 +350,11 @@ def exit_reason(code: int | None) -> str | None:
         if unsigned in WINDOWS_CRASHES:
             return f"crashed: {WINDOWS_CRASHES[unsigned]} (0x{unsigned:08X})"
         if unsigned in WINDOWS_ENDED:
-            return f"was ended: {WINDOWS_ENDED[unsigned]} (0x{unsigned:08X})" if unsigned > 0xFFFF \
+            return (
+                f"was ended: {WINDOWS_ENDED[unsigned]} (0x{unsigned:08X})"
+                if unsigned > 0xFFFF
                 else f"was ended: {WINDOWS_ENDED[unsigned]}"
+            )
         return None
     return signal_reason(-code) if code < 0 else None
 

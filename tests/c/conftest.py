@@ -28,10 +28,12 @@ ENV_NAMES = ("EYESIM_HOST", "EYESIM_PORT", "EYESIM_ROBOT", "EYESIM_CONNECT_TIMEO
 
 # ---- The library ------------------------------------------------------------------------------
 
+
 def _installed(prefix: Path) -> bool:
     lib = prefix / "lib"
     return (prefix / "include" / "eyebot.h").is_file() and any(
-        (lib / name).is_file() for name in ("libeyesim.so", "libeyesim.dylib"))
+        (lib / name).is_file() for name in ("libeyesim.so", "libeyesim.dylib")
+    )
 
 
 def _dev_build() -> None:
@@ -39,8 +41,7 @@ def _dev_build() -> None:
     if not shutil.which("cmake"):
         pytest.fail("cmake is needed to build the RoBIOS C library for these tests")
     DEV_BUILD.parent.mkdir(parents=True, exist_ok=True)
-    steps = [["cmake", "--build", str(DEV_BUILD)],
-             ["cmake", "--install", str(DEV_BUILD), "--prefix", str(DEV_PREFIX)]]
+    steps = [["cmake", "--build", str(DEV_BUILD)], ["cmake", "--install", str(DEV_BUILD), "--prefix", str(DEV_PREFIX)]]
     if not (DEV_BUILD / "CMakeCache.txt").is_file():
         steps.insert(0, ["cmake", "-S", str(ROOT / "robios"), "-B", str(DEV_BUILD), "-DEYESIM_WERROR=ON"])
     with open(DEV_BUILD.parent / "robios-build.lock", "w") as lock:
@@ -56,8 +57,7 @@ def robios_prefix() -> Path:
     """Where libeyesim and eyebot.h are: EYESIM_ROBIOS, else the installed package; the dev build
     in build/robios is (re)built first when it is the one in use or nothing is installed."""
     prefix = paths.robios_dir()
-    if prefix.resolve() == DEV_PREFIX.resolve() or (
-            not os.environ.get("EYESIM_ROBIOS") and not _installed(prefix)):
+    if prefix.resolve() == DEV_PREFIX.resolve() or (not os.environ.get("EYESIM_ROBIOS") and not _installed(prefix)):
         _dev_build()
         return DEV_PREFIX
     if not _installed(prefix):
@@ -66,6 +66,7 @@ def robios_prefix() -> Path:
 
 
 # ---- Compiling and running C programs ---------------------------------------------------------
+
 
 class Compiler:
     """Compiles program sources with `eyesim cc` / `eyesim c++` (cached by source and flags)."""
@@ -85,7 +86,8 @@ class Compiler:
         src.write_text(source)
         flags = ("-std=c11",) if language == "cc" and not flags else flags
         command = toolchain.compiler_command(
-            language, [*flags, "-Wall", "-Wextra", "-Werror", str(src), "-o", str(exe)], self.prefix)
+            language, [*flags, "-Wall", "-Wextra", "-Werror", str(src), "-o", str(exe)], self.prefix
+        )
         done = subprocess.run(command, capture_output=True, text=True)
         assert done.returncode == 0, f"{' '.join(command)}\n{done.stdout}{done.stderr}"
         return exe
@@ -113,25 +115,30 @@ def free_port() -> int:
 
 # ---- The fake simulator -----------------------------------------------------------------------
 
+
 class Error(NamedTuple):
     """Answer with an error reply."""
+
     code: int
     message: str
 
 
 class Delay(NamedTuple):
     """Answer after `seconds` (lets replies overtake each other)."""
+
     seconds: float
     values: tuple
 
 
 class Raw(NamedTuple):
     """Answer with a reply frame carrying these payload bytes as they are (malformed on purpose)."""
+
     payload: bytes
 
 
 class Garbage(NamedTuple):
     """Answer with these bytes instead of a frame (a broken simulator)."""
+
     data: bytes
 
 

@@ -13,10 +13,19 @@ ROOT = Path(__file__).resolve().parents[2]
 def test_c_codec_matches_every_shared_vector(tmp_path):
     exe = tmp_path / "test_protocol"
     compiler = shlex.split(os.environ.get("CC") or "cc")
-    command = [*compiler, "-std=c11", "-Wall", "-Wextra", "-Werror",
-               f"-I{ROOT / 'robios' / 'src'}", f"-I{ROOT / 'robios' / 'tests'}",
-               str(ROOT / "robios" / "tests" / "test_protocol.c"), str(ROOT / "robios" / "src" / "codec.c"),
-               "-o", str(exe)]
+    command = [
+        *compiler,
+        "-std=c11",
+        "-Wall",
+        "-Wextra",
+        "-Werror",
+        f"-I{ROOT / 'robios' / 'src'}",
+        f"-I{ROOT / 'robios' / 'tests'}",
+        str(ROOT / "robios" / "tests" / "test_protocol.c"),
+        str(ROOT / "robios" / "src" / "codec.c"),
+        "-o",
+        str(exe),
+    ]
     built = subprocess.run(command, capture_output=True, text=True)
     assert built.returncode == 0, built.stderr
     ran = subprocess.run([str(exe)], capture_output=True, text=True, timeout=30)

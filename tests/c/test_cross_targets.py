@@ -34,6 +34,7 @@ def _api_functions() -> set[str]:
     spec.loader.exec_module(module)
     return set(module.PROTOTYPES)
 
+
 ROOT = Path(__file__).resolve().parents[2]
 ROBIOS = ROOT / "robios"
 CROSS_BUILDS = ROOT / "build" / "cross"
@@ -46,8 +47,9 @@ SLEEPS = ("es_sleep", "es_usleep", "es_nanosleep")  # where eyebot.h sends sleep
 
 # ---- Reading binaries -------------------------------------------------------------------------
 
+
 def _cstring(data: bytes, offset: int) -> str:
-    return data[offset:data.index(b"\0", offset)].decode()
+    return data[offset : data.index(b"\0", offset)].decode()
 
 
 class PE(NamedTuple):
@@ -62,7 +64,7 @@ def read_pe(path: Path) -> PE:
     data = path.read_bytes()
     assert data[:2] == b"MZ", f"{path.name} is not a Windows executable"
     pe = struct.unpack_from("<I", data, 0x3C)[0]
-    assert data[pe:pe + 4] == b"PE\0\0"
+    assert data[pe : pe + 4] == b"PE\0\0"
     machine, section_count, _, _, _, optional_size, characteristics = struct.unpack_from("<HHIIIHH", data, pe + 4)
     optional = pe + 24
     magic = struct.unpack_from("<H", data, optional)[0]
@@ -71,8 +73,9 @@ def read_pe(path: Path) -> PE:
     directories = [struct.unpack_from("<II", data, optional + 112 + 8 * k) for k in range(directory_count)]
     sections = []
     for k in range(section_count):
-        _, virtual_size, address, raw_size, raw_offset = struct.unpack_from("<8sIIII", data,
-                                                                            optional + optional_size + 40 * k)
+        _, virtual_size, address, raw_size, raw_offset = struct.unpack_from(
+            "<8sIIII", data, optional + optional_size + 40 * k
+        )
         sections.append((address, max(virtual_size, raw_size), raw_offset))
 
     def at(rva: int) -> int:
@@ -184,7 +187,7 @@ def read_elf(path: Path) -> ELF:
                     exports.add(string(link, name))
             # Its string table (.dynstr) also names the symbol versions the library needs.
             strings = sections[link]
-            for match in re.finditer(rb"GLIBC_(\d+(?:\.\d+)+)\0", data[strings[4]:strings[4] + strings[5]]):
+            for match in re.finditer(rb"GLIBC_(\d+(?:\.\d+)+)\0", data[strings[4] : strings[4] + strings[5]]):
                 versions.add(tuple(int(part) for part in match.group(1).split(b".")))
         elif kind == 6:  # SHT_DYNAMIC
             for k in range(size // 16):
@@ -200,6 +203,7 @@ def is_ar_archive(path: Path) -> bool:
 
 # ---- Building ---------------------------------------------------------------------------------
 
+
 def cross_build(target: str) -> Path:
     """libeyesim for `target`, built with the toolchain file and installed; returns the prefix.
     Incremental in build/cross/<target> (locked: the tree is shared)."""
@@ -210,9 +214,21 @@ def cross_build(target: str) -> Path:
     # The toolchain file runs `python -m ziglang` with the Python running these tests.
     steps = [["cmake", "--build", str(build), "-j", "2"], ["cmake", "--install", str(build), "--prefix", str(prefix)]]
     if not (build / "CMakeCache.txt").is_file():
-        steps.insert(0, ["cmake", "-S", str(ROBIOS), "-B", str(build), f"-DCMAKE_TOOLCHAIN_FILE={ROBIOS}/cmake/zig.cmake",
-                         f"-DZIG_TARGET={target}", f"-DZIG_PYTHON={sys.executable}", "-DCMAKE_BUILD_TYPE=Release",
-                         "-DEYESIM_WERROR=ON"])
+        steps.insert(
+            0,
+            [
+                "cmake",
+                "-S",
+                str(ROBIOS),
+                "-B",
+                str(build),
+                f"-DCMAKE_TOOLCHAIN_FILE={ROBIOS}/cmake/zig.cmake",
+                f"-DZIG_TARGET={target}",
+                f"-DZIG_PYTHON={sys.executable}",
+                "-DCMAKE_BUILD_TYPE=Release",
+                "-DEYESIM_WERROR=ON",
+            ],
+        )
     with open(CROSS_BUILDS / f"{target}.lock", "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
         for step in steps:
@@ -240,8 +256,19 @@ def compile_program(target: str, source: str, out: Path, *flags: str, language: 
     link = [] if "-c" in flags else [f"-L{prefix / 'lib'}", "-leyesim"]
     if "-c" not in flags and target not in (WINDOWS,):
         link += [f"-Wl,-rpath,{prefix / 'lib'}", "-lpthread", "-lm"]
-    built = zig_cc(target, "-Wall", "-Wextra", "-Werror", f"-I{prefix / 'include'}", *flags, str(src), "-o", str(out),
-                   *link, language=language)
+    built = zig_cc(
+        target,
+        "-Wall",
+        "-Wextra",
+        "-Werror",
+        f"-I{prefix / 'include'}",
+        *flags,
+        str(src),
+        "-o",
+        str(out),
+        *link,
+        language=language,
+    )
     assert built.returncode == 0, built.stderr
     return out
 
@@ -279,6 +306,7 @@ int main(void)
 
 # ---- The codec under Wine ---------------------------------------------------------------------
 
+
 def test_the_codec_passes_the_shared_vectors_on_windows(tmp_path):
     needs_wine()
     sources = [str(ROBIOS / "tests" / "test_protocol.c"), str(ROBIOS / "src" / "codec.c")]
@@ -289,8 +317,9 @@ def test_the_codec_passes_the_shared_vectors_on_windows(tmp_path):
     assert on_windows.returncode == 0, on_windows.stdout + on_windows.stderr
 
     compiler = os.environ.get("CC") or "cc"
-    native = subprocess.run([*compiler.split(), *flags, *sources, "-o", str(tmp_path / "test_protocol")],
-                            capture_output=True, text=True)
+    native = subprocess.run(
+        [*compiler.split(), *flags, *sources, "-o", str(tmp_path / "test_protocol")], capture_output=True, text=True
+    )
     assert native.returncode == 0, native.stderr
     on_linux = subprocess.run([str(tmp_path / "test_protocol")], capture_output=True, text=True, timeout=60)
     assert on_linux.returncode == 0, on_linux.stdout
@@ -345,6 +374,7 @@ def test_linux_library_is_a_shared_object_for_old_glibc():
 
 # ---- Programs for Windows and macOS -----------------------------------------------------------
 
+
 def test_a_program_links_against_the_windows_dll(tmp_path):
     exe = compile_program(WINDOWS, DRIVE, tmp_path / "drive.exe", "-std=c11")
     program = read_pe(exe)
@@ -359,8 +389,19 @@ def test_a_program_links_statically_on_windows(tmp_path):
     prefix = prefix_for(WINDOWS)
     source = tmp_path / "drive.c"
     source.write_text(DRIVE)
-    built = zig_cc(WINDOWS, "-std=c11", "-Wall", "-Wextra", "-Werror", f"-I{prefix / 'include'}", str(source),
-                   str(prefix / "lib" / "libeyesim.a"), "-lws2_32", "-o", str(tmp_path / "drive.exe"))
+    built = zig_cc(
+        WINDOWS,
+        "-std=c11",
+        "-Wall",
+        "-Wextra",
+        "-Werror",
+        f"-I{prefix / 'include'}",
+        str(source),
+        str(prefix / "lib" / "libeyesim.a"),
+        "-lws2_32",
+        "-o",
+        str(tmp_path / "drive.exe"),
+    )
     assert built.returncode == 0, built.stderr
     assert "eyesim.dll" not in read_pe(tmp_path / "drive.exe").imports
 
@@ -428,7 +469,7 @@ def test_windows_sleeps_go_to_the_library_also_with_windows_h(tmp_path):
 
 
 def test_windows_h_may_also_come_after_eyebot_h(tmp_path):
-    source = SLEEPS_C.replace("#include <windows.h>\n#include \"eyebot.h\"", "#include \"eyebot.h\"\n#include <windows.h>")
+    source = SLEEPS_C.replace('#include <windows.h>\n#include "eyebot.h"', '#include "eyebot.h"\n#include <windows.h>')
     exe = compile_program(WINDOWS, source, tmp_path / "sleeps.exe", "-std=c11")
     imports = read_pe(exe).imports
     # Then Sleep is Windows' own, in wall time (docs/c-library.md); the others still go to the library.
@@ -436,6 +477,7 @@ def test_windows_h_may_also_come_after_eyebot_h(tmp_path):
 
 
 # ---- Windows programs under Wine --------------------------------------------------------------
+
 
 def wine_env(**extra: str) -> dict[str, str]:
     env = {k: v for k, v in wine_environment().items() if not k.startswith("EYESIM_")}
@@ -449,8 +491,10 @@ def test_no_simulator_under_wine_exits_with_the_librarys_status(tmp_path, unused
     done = run_under_wine(exe, env=wine_env(EYESIM_PORT=str(unused_port), EYESIM_CONNECT_TIMEOUT="1"), timeout=120)
     assert done.returncode == 3, done.stdout + done.stderr  # ES_EXIT_NO_SIMULATOR
     assert done.stdout == "lidar 360\n"
-    assert (f"eyesim: no simulator answered at 127.0.0.1:{unused_port} within 1 s (Connection refused); start "
-            f"the simulator first, or set EYESIM_HOST/EYESIM_PORT") in done.stderr
+    assert (
+        f"eyesim: no simulator answered at 127.0.0.1:{unused_port} within 1 s (Connection refused); start "
+        f"the simulator first, or set EYESIM_HOST/EYESIM_PORT"
+    ) in done.stderr
 
 
 THREADS_C = r"""
@@ -538,8 +582,9 @@ def test_windows_program_ends_when_the_simulator_goes_while_it_computes(tmp_path
     needs_wine()
     exe = windows_program(THREADS_C, tmp_path)
     env = wine_env(EYESIM_HOST="127.0.0.1", EYESIM_PORT=str(fake_sim.port))
-    process = subprocess.Popen([wine_command(), str(exe), "compute"], env=env, stdout=subprocess.PIPE,
-                               stderr=subprocess.PIPE, text=True)
+    process = subprocess.Popen(
+        [wine_command(), str(exe), "compute"], env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+    )
     stopper = threading.Timer(120, process.kill)  # were "connected" held in a buffer, readline would wait
     stopper.start()
     try:
@@ -556,8 +601,10 @@ def test_windows_program_ends_when_the_simulator_goes_while_it_computes(tmp_path
             process.communicate()
     assert process.returncode == 5, stdout + stderr  # ES_EXIT_CONNECTION_LOST
     assert stdout == "connected\natexit handler\n"
-    assert (f"eyesim: lost the connection to the simulator at 127.0.0.1:{fake_sim.port} (connection closed); "
-            f"the program ends") in stderr
+    assert (
+        f"eyesim: lost the connection to the simulator at 127.0.0.1:{fake_sim.port} (connection closed); "
+        f"the program ends"
+    ) in stderr
 
 
 def test_windows_program_drives_in_the_real_simulator(tmp_path):
@@ -567,9 +614,25 @@ def test_windows_program_drives_in_the_real_simulator(tmp_path):
     launcher = tmp_path / "drive-under-wine"
     launcher.write_text(f'#!/bin/sh\nexec "{wine_command()}" "{exe}" "$@"\n')
     launcher.chmod(0o755)
-    done = subprocess.run([*eyesim_command("run"), "--headless", "--port", "0", "--until", "3", "--program",
-                           f"1={launcher}", "--record", "path.csv"], cwd=tmp_path, env=wine_env(),
-                          capture_output=True, text=True, timeout=300)
+    done = subprocess.run(
+        [
+            *eyesim_command("run"),
+            "--headless",
+            "--port",
+            "0",
+            "--until",
+            "3",
+            "--program",
+            f"1={launcher}",
+            "--record",
+            "path.csv",
+        ],
+        cwd=tmp_path,
+        env=wine_env(),
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert done.returncode == 0, done.stdout + done.stderr
     assert "program drive-under-wine: exit code 0" in done.stdout
     assert "lidar 360" in done.stdout
@@ -592,8 +655,10 @@ def test_windows_program_reads_the_token_file_of_the_run(tmp_path, fake_sim):
     state.mkdir()
     (state / f"program-token-{fake_sim.port}").write_text("token-from-the-file\r\n")
     windows_state = "Z:" + str(state).replace("/", "\\")
-    done = run_under_wine(exe, env=wine_env(EYESIM_HOST="127.0.0.1", EYESIM_PORT=str(fake_sim.port),
-                                            EYESIM_STATE_DIR=windows_state), timeout=120)
+    done = run_under_wine(
+        exe,
+        env=wine_env(EYESIM_HOST="127.0.0.1", EYESIM_PORT=str(fake_sim.port), EYESIM_STATE_DIR=windows_state),
+        timeout=120,
+    )
     assert done.returncode == 0, done.stdout + done.stderr
     assert fake_sim.hellos[0][4] == "token-from-the-file"
-

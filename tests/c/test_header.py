@@ -133,8 +133,7 @@ def compile_only(prefix, tmp_path, language, standard, source, name="only", incl
     path = tmp_path / (f"{name}.c" if language == "cc" else f"{name}.cpp")
     path.write_text(source)
     flags = [standard, "-Wall", "-Wextra", "-Wpedantic", "-Werror", *(f"-I{d}" for d in include_dirs)]
-    command = toolchain.compiler_command(language, [*flags, "-c", str(path), "-o", str(tmp_path / f"{name}.o")],
-                                         prefix)
+    command = toolchain.compiler_command(language, [*flags, "-c", str(path), "-o", str(tmp_path / f"{name}.o")], prefix)
     return subprocess.run(command, capture_output=True, text=True)
 
 
@@ -262,8 +261,11 @@ extern Status XInitThreads(void);
 def test_xinitthreads_gets_along_with_xlib(robios_prefix, tmp_path, language, standard, xlib_first):
     (tmp_path / "X11").mkdir()
     (tmp_path / "X11" / "Xlib.h").write_text(FAKE_XLIB)  # what matters of the real one, which may be missing
-    includes = ['#include <X11/Xlib.h>', '#include "eyebot.h"']
-    source = "\n".join(includes if xlib_first else includes[::-1]) + "\nint f(void);\nint f(void) { return XInitThreads() + True; }\n"
+    includes = ["#include <X11/Xlib.h>", '#include "eyebot.h"']
+    source = (
+        "\n".join(includes if xlib_first else includes[::-1])
+        + "\nint f(void);\nint f(void) { return XInitThreads() + True; }\n"
+    )
     done = compile_only(robios_prefix, tmp_path, language, standard, source, include_dirs=(tmp_path,))
     assert done.returncode == 0, done.stderr
 
@@ -326,10 +328,27 @@ def test_eyebot_h_first_needs_no_feature_macro_from_eyesim_cc(robios_prefix, tmp
     source = tmp_path / "plain.c"
     source.write_text(STANDARD_LIBRARY)
     lib = robios_prefix / "lib"
-    done = subprocess.run(["cc", "-std=c99", "-Wall", "-Wextra", "-Wpedantic", "-Werror",
-                           f"-I{robios_prefix / 'include'}", str(source), "-o", str(tmp_path / "plain"),
-                           f"-L{lib}", f"-Wl,-rpath,{lib}", "-leyesim", "-lpthread", "-lm"],
-                          capture_output=True, text=True)
+    done = subprocess.run(
+        [
+            "cc",
+            "-std=c99",
+            "-Wall",
+            "-Wextra",
+            "-Wpedantic",
+            "-Werror",
+            f"-I{robios_prefix / 'include'}",
+            str(source),
+            "-o",
+            str(tmp_path / "plain"),
+            f"-L{lib}",
+            f"-Wl,-rpath,{lib}",
+            "-leyesim",
+            "-lpthread",
+            "-lm",
+        ],
+        capture_output=True,
+        text=True,
+    )
     assert done.returncode == 0, done.stderr
     ran = run_offline(tmp_path / "plain", free_port_env)
     assert ran.returncode == 0, ran.stderr

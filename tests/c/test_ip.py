@@ -28,11 +28,25 @@ def drivers(robios_prefix, tmp_path_factory) -> dict[str, Path]:
     out = tmp_path_factory.mktemp("ip_driver")
     public, direct = out / "ip_public", out / "ip_direct"
     commands = [
-        toolchain.compiler_command("cc", ["-std=c11", "-Wall", "-Wextra", "-Werror", str(DRIVER), "-o", str(public)],
-                                   robios_prefix),
-        ["cc", "-std=c11", "-D_GNU_SOURCE", "-DIP_DIRECT", "-Wall", "-Wextra", "-Werror",
-         f"-I{ROOT / 'robios' / 'include'}", f"-I{ROOT / 'robios' / 'src'}", str(DRIVER),
-         str(ROOT / "robios" / "src" / "ip.c"), "-o", str(direct), "-lpthread"],
+        toolchain.compiler_command(
+            "cc", ["-std=c11", "-Wall", "-Wextra", "-Werror", str(DRIVER), "-o", str(public)], robios_prefix
+        ),
+        [
+            "cc",
+            "-std=c11",
+            "-D_GNU_SOURCE",
+            "-DIP_DIRECT",
+            "-Wall",
+            "-Wextra",
+            "-Werror",
+            f"-I{ROOT / 'robios' / 'include'}",
+            f"-I{ROOT / 'robios' / 'src'}",
+            str(DRIVER),
+            str(ROOT / "robios" / "src" / "ip.c"),
+            "-o",
+            str(direct),
+            "-lpthread",
+        ],
     ]
     for command in commands:
         done = subprocess.run(command, capture_output=True, text=True)
@@ -55,8 +69,9 @@ class Driver:
         return path
 
     def run(self, op: str, *args) -> subprocess.CompletedProcess:
-        done = subprocess.run([str(self.exe), self.size, op, *map(str, args)], capture_output=True, text=True,
-                              timeout=30)
+        done = subprocess.run(
+            [str(self.exe), self.size, op, *map(str, args)], capture_output=True, text=True, timeout=30
+        )
         assert done.returncode == 0, done.stderr
         return done
 
@@ -96,6 +111,7 @@ def random_image(shape, seed: int) -> np.ndarray:
 
 # ---- numpy references -----------------------------------------------------------------------------
 
+
 def laplace_reference(gray: np.ndarray) -> np.ndarray:
     c = gray.astype(np.int64)
     out = np.zeros_like(gray)
@@ -121,8 +137,9 @@ def hsi_reference(rgb: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     def towards_zero(a):  # C integer division of 42 * a by delta
         return np.sign(a) * (np.abs(42 * a) // delta)
 
-    hue = np.where(r == high, 42 + towards_zero(g - b),
-                   np.where(g == high, 126 + towards_zero(b - r), 210 + towards_zero(r - g)))
+    hue = np.where(
+        r == high, 42 + towards_zero(g - b), np.where(g == high, 126 + towards_zero(b - r), 210 + towards_zero(r - g))
+    )
     hue = np.where(hue <= 0, hue + 252, hue)
     hue = np.where(high == low, 0, hue)
     total = r + g + b
@@ -131,6 +148,7 @@ def hsi_reference(rgb: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 # ---- whole images ---------------------------------------------------------------------------------
+
 
 def test_the_ip_size_is_published(driver):
     w, h = driver.width, driver.height
@@ -201,31 +219,58 @@ def test_overlays(driver):
 
 # ---- single pixels --------------------------------------------------------------------------------
 
+
 def pixel_records(drivers, tmp_path, rgb: np.ndarray) -> np.ndarray:
-    size = int(subprocess.run([str(drivers["public"]), "QQVGA", "record-size"], capture_output=True,
-                              text=True).stdout)
+    size = int(subprocess.run([str(drivers["public"]), "QQVGA", "record-size"], capture_output=True, text=True).stdout)
     fields = [(name, np.uint8) for name in ("hue", "h", "s", "i", "h2", "s2", "i2", "r", "g", "b")]
-    dtype = np.dtype({"names": [n for n, _ in fields] + ["col"], "formats": [t for _, t in fields] + ["<i4"],
-                      "offsets": list(range(10)) + [12], "itemsize": size})
+    dtype = np.dtype(
+        {
+            "names": [n for n, _ in fields] + ["col"],
+            "formats": [t for _, t in fields] + ["<i4"],
+            "offsets": list(range(10)) + [12],
+            "itemsize": size,
+        }
+    )
     (tmp_path / "rgb.raw").write_bytes(rgb.astype(np.uint8).tobytes())
-    subprocess.run([str(drivers["public"]), "QQVGA", "pixels", str(tmp_path / "rgb.raw"), str(tmp_path / "out.raw"),
-                    str(len(rgb))], check=True)
+    subprocess.run(
+        [
+            str(drivers["public"]),
+            "QQVGA",
+            "pixels",
+            str(tmp_path / "rgb.raw"),
+            str(tmp_path / "out.raw"),
+            str(len(rgb)),
+        ],
+        check=True,
+    )
     return np.frombuffer((tmp_path / "out.raw").read_bytes(), dtype)
 
 
 def test_pixel_functions(drivers, tmp_path):
     steps = np.arange(0, 256, 5)
     grid = np.stack(np.meshgrid(steps, steps, steps, indexing="ij"), axis=-1).reshape(-1, 3)
-    rgb = np.concatenate([grid, np.random.default_rng(1).integers(0, 256, (20000, 3)),
-                          [[0, 0, 0], [255, 255, 255], [7, 7, 7], [255, 0, 255], [255, 0, 1], [1, 0, 0]]])
+    rgb = np.concatenate(
+        [
+            grid,
+            np.random.default_rng(1).integers(0, 256, (20000, 3)),
+            [[0, 0, 0], [255, 255, 255], [7, 7, 7], [255, 0, 255], [255, 0, 1], [1, 0, 0]],
+        ]
+    )
     records = pixel_records(drivers, tmp_path, rgb)
     r, g, b = (rgb[:, k] for k in range(3))
     np.testing.assert_array_equal(records["col"], (r << 16) | (g << 8) | b)
     for field, channel in zip("rgb", (r, g, b)):
         np.testing.assert_array_equal(records[field], channel)
     hue, saturation, intensity = hsi_reference(rgb)
-    for name, want in (("hue", hue), ("h", hue), ("h2", hue), ("s", saturation), ("s2", saturation),
-                       ("i", intensity), ("i2", intensity)):
+    for name, want in (
+        ("hue", hue),
+        ("h", hue),
+        ("h2", hue),
+        ("s", saturation),
+        ("s2", saturation),
+        ("i", intensity),
+        ("i2", intensity),
+    ):
         np.testing.assert_array_equal(records[name], want, err_msg=name)
 
 
@@ -238,8 +283,11 @@ def test_hue_follows_the_colour_circle(drivers, tmp_path):
     distance = np.abs(records["hue"] - expected)
     assert (np.minimum(distance, 252 - distance) <= 1).all()
     assert records["hue"].min() >= 1 and records["hue"].max() <= 252
-    named = pixel_records(drivers, tmp_path, np.array(
-        [[255, 0, 0], [255, 255, 0], [0, 255, 0], [0, 255, 255], [0, 0, 255], [255, 0, 255], [9, 9, 9]]))
+    named = pixel_records(
+        drivers,
+        tmp_path,
+        np.array([[255, 0, 0], [255, 255, 0], [0, 255, 0], [0, 255, 255], [0, 0, 255], [255, 0, 255], [9, 9, 9]]),
+    )
     assert list(named["hue"]) == [42, 84, 126, 168, 210, 252, 0]
     assert list(named["s"]) == [255] * 6 + [0]
 
@@ -248,13 +296,25 @@ def test_bad_buffers_are_reported_not_crashed_on(drivers):
     done = subprocess.run([str(drivers["public"]), "QVGA", "nulls"], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     assert done.stdout.split() == ["-1", "-1", "1", "1", "1", "1"]
-    for function in ("IPLaplace", "IPSobel", "IPCol2Gray", "IPGray2Col", "IPRGB2Col", "IPCol2HSI", "IPOverlay",
-                     "IPOverlayGray", "IPReadFile", "IPWriteFile", "IPWriteFileGray"):
+    for function in (
+        "IPLaplace",
+        "IPSobel",
+        "IPCol2Gray",
+        "IPGray2Col",
+        "IPRGB2Col",
+        "IPCol2HSI",
+        "IPOverlay",
+        "IPOverlayGray",
+        "IPReadFile",
+        "IPWriteFile",
+        "IPWriteFileGray",
+    ):
         assert f"eyesim: {function}: " in done.stderr
     assert "eyesim: IPSetSize: resolution 10 has no fixed size" in done.stderr
 
 
 # ---- PNM files ------------------------------------------------------------------------------------
+
 
 def pnm_bytes(magic: str, pixels: np.ndarray, maxval: int = 255, comment: str = "") -> bytes:
     """A PNM file written here, independently of the library: pixels HxW (P1/P2/P4/P5) or HxWx3."""
@@ -289,15 +349,18 @@ def place(image: np.ndarray, width: int, height: int) -> np.ndarray:
     return out
 
 
-@pytest.mark.parametrize("magic,shape,maxval", [
-    ("P6", (120, 160, 3), 255),   # exactly the IP size
-    ("P3", (150, 200, 3), 255),   # larger: cropped
-    ("P6", (23, 37, 3), 15),      # smaller, odd: filled with black; scaled up
-    ("P6", (121, 161, 3), 65535),  # 16-bit samples
-    ("P5", (120, 160), 255),
-    ("P2", (131, 77), 1000),
-    ("P5", (45, 301), 65535),
-])
+@pytest.mark.parametrize(
+    "magic,shape,maxval",
+    [
+        ("P6", (120, 160, 3), 255),  # exactly the IP size
+        ("P3", (150, 200, 3), 255),  # larger: cropped
+        ("P6", (23, 37, 3), 15),  # smaller, odd: filled with black; scaled up
+        ("P6", (121, 161, 3), 65535),  # 16-bit samples
+        ("P5", (120, 160), 255),
+        ("P2", (131, 77), 1000),
+        ("P5", (45, 301), 65535),
+    ],
+)
 def test_read_colour_and_gray_files(qqvga, magic, shape, maxval):
     values = np.random.default_rng(maxval).integers(0, maxval + 1, shape)
     values.flat[0], values.flat[-1] = maxval, 0
@@ -309,8 +372,8 @@ def test_read_colour_and_gray_files(qqvga, magic, shape, maxval):
         np.testing.assert_array_equal(out.reshape(120, 160, 3), expected)
     else:
         assert code == 2
-        np.testing.assert_array_equal(out[:160 * 120].reshape(120, 160), expected)
-        assert (out[160 * 120:] == 0xAB).all()  # a gray image fills only IP_PIXELS bytes
+        np.testing.assert_array_equal(out[: 160 * 120].reshape(120, 160), expected)
+        assert (out[160 * 120 :] == 0xAB).all()  # a gray image fills only IP_PIXELS bytes
 
 
 @pytest.mark.parametrize("magic,shape", [("P1", (9, 13)), ("P4", (130, 171)), ("P4", (120, 160))])
@@ -319,7 +382,7 @@ def test_read_black_and_white_files(qqvga, magic, shape):
     code, out, _ = read_file(qqvga, pnm_bytes(magic, bits))
     assert code == 1
     gray = np.where(bits == 1, 0, 255).astype(np.uint8)  # 1 is black in a PBM
-    np.testing.assert_array_equal(out[:160 * 120].reshape(120, 160), place(gray, 160, 120))
+    np.testing.assert_array_equal(out[: 160 * 120].reshape(120, 160), place(gray, 160, 120))
 
 
 def test_read_accepts_comments_and_odd_whitespace(qqvga):
@@ -329,16 +392,19 @@ def test_read_accepts_comments_and_odd_whitespace(qqvga):
     assert list(out[:3]) == [0, 85, 170] and list(out[160:163]) == [255, 255, 0]
 
 
-@pytest.mark.parametrize("content,message", [
-    (None, "cannot open"),
-    (b"GIF89a", "is not a PNM file"),
-    (b"P6\n0 5\n255\n", "bad width and height"),
-    (b"P5\n4 4\n70000\n", "bad maxval"),
-    (b"P6\n4 4\n255\n" + bytes(40), "ends before all of its 4 x 4 pixels"),
-    (b"P2\n2 1\n100\n5 101\n", "larger than the maxval"),
-    (b"P1\n2 1\n0 7\n", "holds only 0 and 1"),
-    (b"P3\n2 1\n255\n1 2 3 4 x", "expected a number"),
-])
+@pytest.mark.parametrize(
+    "content,message",
+    [
+        (None, "cannot open"),
+        (b"GIF89a", "is not a PNM file"),
+        (b"P6\n0 5\n255\n", "bad width and height"),
+        (b"P5\n4 4\n70000\n", "bad maxval"),
+        (b"P6\n4 4\n255\n" + bytes(40), "ends before all of its 4 x 4 pixels"),
+        (b"P2\n2 1\n100\n5 101\n", "larger than the maxval"),
+        (b"P1\n2 1\n0 7\n", "holds only 0 and 1"),
+        (b"P3\n2 1\n255\n1 2 3 4 x", "expected a number"),
+    ],
+)
 def test_bad_files_are_reported_and_leave_the_buffer_alone(qqvga, content, message):
     path, out = qqvga.file(), qqvga.file()
     if content is not None:
@@ -392,8 +458,11 @@ int main(void)
 def test_a_camera_frame_goes_through_ip_to_the_lcd(robios_prefix, tmp_path):
     """A C program against a running simulator: CAMInit sets the IP size; the results match numpy."""
     (tmp_path / "camera.c").write_text(CAMERA_PROGRAM)
-    command = toolchain.compiler_command("cc", ["-std=c11", "-Wall", "-Wextra", "-Werror", str(tmp_path / "camera.c"),
-                                                "-o", str(tmp_path / "camera")], robios_prefix)
+    command = toolchain.compiler_command(
+        "cc",
+        ["-std=c11", "-Wall", "-Wextra", "-Werror", str(tmp_path / "camera.c"), "-o", str(tmp_path / "camera")],
+        robios_prefix,
+    )
     subprocess.run(command, check=True)
     result = run_headless("--program", f"1={tmp_path / 'camera'}", "--save-lcd", "lcd", cwd=tmp_path)
     assert result.returncode == 0, result.stdout + result.stderr

@@ -19,17 +19,32 @@ def test_linking_adds_the_library_after_the_arguments(robios_prefix, monkeypatch
     monkeypatch.delenv("CC", raising=False)
     command = toolchain.compiler_command("cc", ["prog.c", "-o", "prog"], robios_prefix)
     lib = robios_prefix / "lib"
-    assert command == ["cc", "-Wall", f"-I{robios_prefix / 'include'}", "-D_DEFAULT_SOURCE", "prog.c", "-o", "prog",
-                       f"-L{lib}", f"-Wl,-rpath,{lib}", "-leyesim", "-lpthread", "-lm"]
+    assert command == [
+        "cc",
+        "-Wall",
+        f"-I{robios_prefix / 'include'}",
+        "-D_DEFAULT_SOURCE",
+        "prog.c",
+        "-o",
+        "prog",
+        f"-L{lib}",
+        f"-Wl,-rpath,{lib}",
+        "-leyesim",
+        "-lpthread",
+        "-lm",
+    ]
 
 
-@pytest.mark.parametrize("args,added", [
-    (["prog.c"], True),
-    (["-D_POSIX_C_SOURCE=200112L", "prog.c"], False),
-    (["-D", "_GNU_SOURCE", "prog.c"], False),
-    (["-U_DEFAULT_SOURCE", "prog.c"], False),
-    (["-DDEBUG", "-D", "N=3", "prog.c"], True),
-])
+@pytest.mark.parametrize(
+    "args,added",
+    [
+        (["prog.c"], True),
+        (["-D_POSIX_C_SOURCE=200112L", "prog.c"], False),
+        (["-D", "_GNU_SOURCE", "prog.c"], False),
+        (["-U_DEFAULT_SOURCE", "prog.c"], False),
+        (["-DDEBUG", "-D", "N=3", "prog.c"], True),
+    ],
+)
 def test_c_programs_get_the_default_feature_set_unless_they_choose_one(robios_prefix, args, added):
     # usleep and M_PI need _DEFAULT_SOURCE under strict -std=c99; C++ compilers set _GNU_SOURCE themselves.
     assert ("-D_DEFAULT_SOURCE" in toolchain.compiler_command("cc", args, robios_prefix)) == added
@@ -78,16 +93,19 @@ def parser_with_toolchain() -> argparse.ArgumentParser:
     return parser
 
 
-@pytest.mark.parametrize("argv", [["cc", "-o", "prog", "prog.c"], ["c++", "-h"], ["cc", "--", "+x", ""],
-                                  ["cc", "prog.c", "-Wl,-rpath,/x", "-O2"]])
+@pytest.mark.parametrize(
+    "argv",
+    [["cc", "-o", "prog", "prog.c"], ["c++", "-h"], ["cc", "--", "+x", ""], ["cc", "prog.c", "-Wl,-rpath,/x", "-O2"]],
+)
 def test_every_argument_passes_through(argv):
     args = parser_with_toolchain().parse_args(argv)
     assert args.args == argv[1:]
     assert callable(args.func)
 
 
-def test_eyesim_cc_builds_a_program_that_runs_without_ld_library_path(robios_prefix, tmp_path, monkeypatch,
-                                                                      free_port_env):
+def test_eyesim_cc_builds_a_program_that_runs_without_ld_library_path(
+    robios_prefix, tmp_path, monkeypatch, free_port_env
+):
     monkeypatch.setenv("EYESIM_ROBIOS", str(robios_prefix))
     source = tmp_path / "hello.c"
     source.write_text('#include "eyebot.h"\n#include <stdio.h>\nint main(void) { printf("%d\\n", KEY4); return 0; }\n')
@@ -100,11 +118,21 @@ def test_eyesim_cc_builds_a_program_that_runs_without_ld_library_path(robios_pre
 
 def test_static_library_links_too(robios_prefix, tmp_path, fake_sim):
     source = tmp_path / "static.c"
-    source.write_text('#include "eyebot.h"\n#include <stdio.h>\n'
-                      'int main(void) { printf("%d\\n", PSDGet(PSD_LEFT)); return 0; }\n')
+    source.write_text(
+        '#include "eyebot.h"\n#include <stdio.h>\nint main(void) { printf("%d\\n", PSDGet(PSD_LEFT)); return 0; }\n'
+    )
     exe = tmp_path / "static"
-    command = ["cc", "-std=c11", f"-I{robios_prefix / 'include'}", str(source),
-               str(robios_prefix / "lib" / "libeyesim.a"), "-lpthread", "-lm", "-o", str(exe)]
+    command = [
+        "cc",
+        "-std=c11",
+        f"-I{robios_prefix / 'include'}",
+        str(source),
+        str(robios_prefix / "lib" / "libeyesim.a"),
+        "-lpthread",
+        "-lm",
+        "-o",
+        str(exe),
+    ]
     built = subprocess.run(command, capture_output=True, text=True)
     assert built.returncode == 0, built.stderr
     fake_sim.script["PSD_GET"] = (321,)
@@ -116,13 +144,19 @@ def test_python_m_eyesim_cc(robios_prefix, tmp_path):
     source = tmp_path / "m.c"
     source.write_text('#include "eyebot.h"\nint main(void) { return KEY1 - 1; }\n')
     env = {**os.environ, "EYESIM_ROBIOS": str(robios_prefix)}
-    done = subprocess.run([sys.executable, "-m", "eyesim", "cc", "-o", str(tmp_path / "m"), str(source)],
-                          capture_output=True, text=True, env=env, cwd=tmp_path)
+    done = subprocess.run(
+        [sys.executable, "-m", "eyesim", "cc", "-o", str(tmp_path / "m"), str(source)],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=tmp_path,
+    )
     assert done.returncode == 0, done.stderr
     assert subprocess.run([str(tmp_path / "m")]).returncode == 0
 
 
 # ---- Choosing the compiler --------------------------------------------------------------------
+
 
 def no_system_compiler(monkeypatch):
     monkeypatch.delenv("CC", raising=False)
@@ -133,8 +167,12 @@ def no_system_compiler(monkeypatch):
 def test_without_a_system_compiler_zig_from_the_ziglang_package_is_used(robios_prefix, monkeypatch):
     no_system_compiler(monkeypatch)
     assert toolchain.compiler_command("cc", ["-c", "a.c"], robios_prefix)[:4] == [sys.executable, "-m", "ziglang", "cc"]
-    assert toolchain.compiler_command("c++", ["-c", "a.cpp"], robios_prefix)[:4] == [sys.executable, "-m", "ziglang",
-                                                                                       "c++"]
+    assert toolchain.compiler_command("c++", ["-c", "a.cpp"], robios_prefix)[:4] == [
+        sys.executable,
+        "-m",
+        "ziglang",
+        "c++",
+    ]
 
 
 def test_with_no_compiler_at_all_the_error_says_what_to_install(robios_prefix, monkeypatch, capsys):

@@ -36,6 +36,7 @@ def eyesim_lines(stderr: str) -> list[str]:
 
 # ---- Handshake ---------------------------------------------------------------------------------
 
+
 @pytest.mark.parametrize("robot", [None, "S4", "2"])
 def test_handshake_sends_version_robot_program_and_pid(compiler, fake_sim, robot):
     exe = compiler.build(ONE_CALL, name="hello_prog")
@@ -73,10 +74,12 @@ def test_a_refused_token_says_where_it_came_from(compiler, make_fake_sim, tmp_pa
     assert ran.returncode == EXIT_REFUSED
     assert eyesim_lines(ran.stderr) == [
         f"eyesim: the simulator at 127.0.0.1:{sim.port} refused this program: this program sent a wrong program "
-        f"token [it sent EYESIM_TOKEN]"]
+        f"token [it sent EYESIM_TOKEN]"
+    ]
     ran = run(compiler.build(ONE_CALL, name="one_call"), sim.env(EYESIM_STATE_DIR=str(tmp_path)))
     assert eyesim_lines(ran.stderr)[0].endswith(
-        f"[EYESIM_TOKEN is not set and {tmp_path / f'program-token-{sim.port}'} cannot be read]")
+        f"[EYESIM_TOKEN is not set and {tmp_path / f'program-token-{sim.port}'} cannot be read]"
+    )
 
 
 def test_refused_handshake_prints_the_reason_and_exits(compiler, make_fake_sim):
@@ -85,7 +88,8 @@ def test_refused_handshake_prints_the_reason_and_exits(compiler, make_fake_sim):
     ran = run(compiler.build(ONE_CALL, name="one_call"), sim.env(EYESIM_ROBOT="R9"))
     assert ran.returncode == EXIT_REFUSED
     assert eyesim_lines(ran.stderr) == [
-        f"eyesim: the simulator at 127.0.0.1:{sim.port} refused this program: no robot named 'R9' in this scene"]
+        f"eyesim: the simulator at 127.0.0.1:{sim.port} refused this program: no robot named 'R9' in this scene"
+    ]
     assert ran.stdout == "before\n"
 
 
@@ -98,6 +102,7 @@ def test_simulator_hanging_up_during_the_handshake(compiler, make_fake_sim):
 
 
 # ---- No simulator ------------------------------------------------------------------------------
+
 
 def test_no_simulator_waits_with_one_message_then_exits(compiler, free_port_env):
     port = free_port_env["EYESIM_PORT"]
@@ -124,7 +129,8 @@ def test_a_simulator_starting_late_is_still_found(compiler, make_fake_sim, unuse
     assert proc.returncode == 0, err
     assert out == "before\npsd 0\n"
     assert eyesim_lines(err) == [
-        f"eyesim: waiting for the simulator at 127.0.0.1:{unused_port} (set EYESIM_HOST/EYESIM_PORT) ..."]
+        f"eyesim: waiting for the simulator at 127.0.0.1:{unused_port} (set EYESIM_HOST/EYESIM_PORT) ..."
+    ]
 
 
 def test_bad_port_setting_is_reported(compiler, free_port_env):
@@ -168,8 +174,13 @@ int main(void)
 
 
 def test_simulator_closing_mid_run_ends_the_program(compiler, fake_sim):
-    proc = subprocess.Popen([str(compiler.build(POLL_FOREVER, name="poll_forever"))], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, env=fake_sim.env())
+    proc = subprocess.Popen(
+        [str(compiler.build(POLL_FOREVER, name="poll_forever"))],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=fake_sim.env(),
+    )
     try:
         assert fake_sim.wait_for(lambda: sum(r.op == "KEY_READ" for r in fake_sim.requests) >= 20)
         fake_sim.close_clients()
@@ -195,8 +206,13 @@ int main(void)
 
 def test_simulator_closing_ends_a_program_that_makes_no_call(compiler, fake_sim):
     """No thread of the library reads replies; the library's watcher notices the hang-up instead."""
-    proc = subprocess.Popen([str(compiler.build(COMPUTE_FOREVER, name="compute_forever"))], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, env=fake_sim.env())
+    proc = subprocess.Popen(
+        [str(compiler.build(COMPUTE_FOREVER, name="compute_forever"))],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=fake_sim.env(),
+    )
     try:
         assert fake_sim.wait_for(lambda: fake_sim.count("PSD_GET") == 1)
         fake_sim.close_clients()
@@ -209,8 +225,13 @@ def test_simulator_closing_ends_a_program_that_makes_no_call(compiler, fake_sim)
 
 def test_simulator_closing_ends_the_program_while_threads_are_blocked(compiler, fake_sim):
     fake_sim.script.update(KEY_GET=fake_sim.HOLD, VW_WAIT=fake_sim.HOLD)
-    proc = subprocess.Popen([str(compiler.build(BLOCKED_THREADS, name="blocked_threads"))],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=fake_sim.env())
+    proc = subprocess.Popen(
+        [str(compiler.build(BLOCKED_THREADS, name="blocked_threads"))],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=fake_sim.env(),
+    )
     try:
         assert fake_sim.wait_for(lambda: len(fake_sim.held) == 2)
         time.sleep(0.1)
@@ -230,7 +251,8 @@ def test_shutdown_error_ends_the_program(compiler, fake_sim):
     assert ran.returncode == EXIT_CONNECTION_LOST
     assert eyesim_lines(ran.stderr) == [
         f"eyesim: the simulator at 127.0.0.1:{fake_sim.port} is shutting down (the simulator is closing); "
-        "the program ends"]
+        "the program ends"
+    ]
 
 
 STOP_AT_EXIT = r"""
@@ -261,15 +283,15 @@ def test_atexit_handlers_may_call_the_api(compiler, fake_sim):
     assert [(r.op, r.values) for r in fake_sim.requests] == [("VW_SET_SPEED", (100, 0)), ("VW_SET_SPEED", (0, 0))]
 
 
-def test_atexit_handlers_calling_the_api_do_not_hang_when_the_simulator_is_gone(compiler, fake_sim,
-                                                                                free_port_env):
+def test_atexit_handlers_calling_the_api_do_not_hang_when_the_simulator_is_gone(compiler, fake_sim, free_port_env):
     exe = compiler.build(STOP_AT_EXIT, name="stop_at_exit")
     ran = run(exe, free_port_env)
     assert ran.returncode == EXIT_NO_SIMULATOR
     assert ran.stderr.endswith("stop 1\n")
 
-    proc = subprocess.Popen([str(exe), "poll"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                            env=fake_sim.env())
+    proc = subprocess.Popen(
+        [str(exe), "poll"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=fake_sim.env()
+    )
     try:
         assert fake_sim.wait_for(lambda: fake_sim.count("KEY_READ") >= 5)
         fake_sim.close_clients()
@@ -285,7 +307,8 @@ def test_a_malformed_frame_ends_the_program(compiler, fake_sim):
     ran = run(compiler.build(ONE_CALL, name="one_call"), fake_sim.env())
     assert ran.returncode == EXIT_PROTOCOL
     assert eyesim_lines(ran.stderr) == [
-        f"eyesim: the simulator at 127.0.0.1:{fake_sim.port} sent a malformed frame; the program ends"]
+        f"eyesim: the simulator at 127.0.0.1:{fake_sim.port} sent a malformed frame; the program ends"
+    ]
 
 
 # ---- Error replies -----------------------------------------------------------------------------
@@ -359,8 +382,13 @@ int main(void)
 
 def test_a_blocked_call_does_not_hold_up_other_threads(compiler, fake_sim):
     fake_sim.script.update(KEY_GET=fake_sim.HOLD, PSD_GET=lambda v: (10 * v[0],))
-    proc = subprocess.Popen([str(compiler.build(BLOCKED_KEY_AND_BUSY_MAIN, name="blocked_key"))],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=fake_sim.env())
+    proc = subprocess.Popen(
+        [str(compiler.build(BLOCKED_KEY_AND_BUSY_MAIN, name="blocked_key"))],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=fake_sim.env(),
+    )
     try:
         # Each PSDGet waits for its reply before the next, so 50 requests = 49 replies received while
         # KEYGet is still unanswered; then the main thread says it is done.
@@ -458,5 +486,6 @@ def test_a_field_longer_than_the_simulator_takes_is_refused_before_sending(compi
     ran = run(compiler.build(TOO_LONG, name="too_long"), fake_sim.env())
     assert (ran.returncode, ran.stdout) == (0, "long 1\nlongest 0\n")
     assert eyesim_lines(ran.stderr) == [
-        "eyesim: LCDPrintf: text of 65537 bytes is too large (the simulator takes at most 65536)"]
+        "eyesim: LCDPrintf: text of 65537 bytes is too large (the simulator takes at most 65536)"
+    ]
     assert fake_sim.count("LCD_PRINTF") == 1

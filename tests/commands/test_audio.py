@@ -104,7 +104,7 @@ def test_a_long_file_is_timed_from_its_first_frames():
 def test_a_wav_file_whose_data_chunk_is_not_among_its_first_chunks_is_refused():
     padding = (b"junk" + struct.pack("<I", 2) + b"..") * WAV_CHUNKS
     wav = wav_bytes(0.5)
-    assert sound_length(wav[:12] + padding[:10 * 10] + wav[12:])[1] == 0.5
+    assert sound_length(wav[:12] + padding[: 10 * 10] + wav[12:])[1] == 0.5
     with pytest.raises(SoundError, match="'data' chunk"):
         sound_length(wav[:12] + padding + wav[12:])
 

@@ -46,11 +46,14 @@ def op_calling(calls: str, reply=(("result", "i32"),)) -> OpSpec:
     return OpSpec("TEST_OP", 9999, "lcd", 10, False, (), reply, calls=calls)
 
 
-@pytest.mark.parametrize("calls, message", [
-    ("Lcdd.clear", "'Lcdd': 0 component classes have that name"),
-    ("Lcd.wipe", "TEST_OP calls Lcd.wipe: Lcd needs the method and a noun"),
-    ("Component.reset", "Component needs the method and a noun"),
-])
+@pytest.mark.parametrize(
+    "calls, message",
+    [
+        ("Lcdd.clear", "'Lcdd': 0 component classes have that name"),
+        ("Lcd.wipe", "TEST_OP calls Lcd.wipe: Lcd needs the method and a noun"),
+        ("Component.reset", "Component needs the method and a noun"),
+    ],
+)
 def test_a_declaration_naming_no_component_method_is_refused(calls, message):
     with pytest.raises(RuntimeError, match=message):
         commands.calling(op_calling(calls))
@@ -58,7 +61,9 @@ def test_a_declaration_naming_no_component_method_is_refused(calls, message):
 
 def test_a_module_may_not_handle_an_op_declared_as_a_call(monkeypatch):
     from eyesim.commands import lcd
+
     monkeypatch.setitem(lcd.HANDLERS, "LCD_CLEAR", lcd.HANDLERS["LCD_GET_SIZE"])
-    with pytest.raises(RuntimeError, match="eyesim.commands.lcd handles LCD_CLEAR, which protocol.json says "
-                                           "calls Lcd.clear"):
+    with pytest.raises(
+        RuntimeError, match="eyesim.commands.lcd handles LCD_CLEAR, which protocol.json says calls Lcd.clear"
+    ):
         commands._build_registry()

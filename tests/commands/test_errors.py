@@ -9,12 +9,27 @@ from support.worlds import arena_scene
 
 # One failing request of every group whose handlers raise errors.
 FAILING = [
-    ("LCD_SET_POS", (21, 0)), ("KEY_WAIT", (0x10,)), ("CAM_GET", ()), ("CAM_INIT", (10,)), ("OS_WAIT", (-1,)),
-    ("TIMER_DETACH", (7,)), ("PSD_GET", (7,)), ("LIDAR_SET", (0, 0, 360)), ("SERVO_SET", (9, 0)),
-    ("SERVO_RANGE", (1, 200, 100)), ("MOTOR_DRIVE", (3, 50)), ("MOTOR_PID", (1, 256, 0, 0)),
-    ("ENCODER_READ", (9,)), ("VW_DRIVE", (10, 100, 100)), ("ANALOG_READ", (9,)), ("ANALOG_TRANSFER", ()),
-    ("RADIO_SEND", (2, b"hi")), ("SIM_GET_ROBOT", (9,)), ("SIM_GET_OBJECT", (9,)),
-    ("SIM_SET_OBJECT", (1, 0, 0, 0, 0)), ("AU_PLAY", ("notes.txt", b"not a sound")),
+    ("LCD_SET_POS", (21, 0)),
+    ("KEY_WAIT", (0x10,)),
+    ("CAM_GET", ()),
+    ("CAM_INIT", (10,)),
+    ("OS_WAIT", (-1,)),
+    ("TIMER_DETACH", (7,)),
+    ("PSD_GET", (7,)),
+    ("LIDAR_SET", (0, 0, 360)),
+    ("SERVO_SET", (9, 0)),
+    ("SERVO_RANGE", (1, 200, 100)),
+    ("MOTOR_DRIVE", (3, 50)),
+    ("MOTOR_PID", (1, 256, 0, 0)),
+    ("ENCODER_READ", (9,)),
+    ("VW_DRIVE", (10, 100, 100)),
+    ("ANALOG_READ", (9,)),
+    ("ANALOG_TRANSFER", ()),
+    ("RADIO_SEND", (2, b"hi")),
+    ("SIM_GET_ROBOT", (9,)),
+    ("SIM_GET_OBJECT", (9,)),
+    ("SIM_SET_OBJECT", (1, 0, 0, 0, 0)),
+    ("AU_PLAY", ("notes.txt", b"not a sound")),
 ]
 FUNCTION_NAME_FIRST = re.compile(r"[A-Z]{2,}[A-Za-z0-9]*:")  # "VWDrive:", "LIDARSet:", "SIMSetObject:"
 

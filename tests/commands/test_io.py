@@ -71,7 +71,7 @@ def test_analog_recording_samples_at_1_khz_of_simulation_time():
         sim.call(lambda s: robot_input.analog(s, 1, 3, 700))  # at the next step boundary
         samples = client.call("ANALOG_TRANSFER")[0]
         assert client.call("OS_GET_COUNT")[0] - start_ms >= 50  # waited for the recording to end
-        values = [int.from_bytes(samples[k:k + 2], "little") for k in range(0, len(samples), 2)]
+        values = [int.from_bytes(samples[k : k + 2], "little") for k in range(0, len(samples), 2)]
         assert len(values) == 50 and set(values) == {100, 700}
         switch = values.index(700)
         waited = sim.call_time_us // 1000 + 20  # the recording started one call (ANALOG_RECORD) before the wait

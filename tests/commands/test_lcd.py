@@ -41,7 +41,7 @@ def pixel(client, x, y) -> int:
 
 def ink_rows(image: np.ndarray) -> set[int]:
     """Text rows (of the default grid) with any lit pixel."""
-    return {y // CELL_HEIGHT for y in np.flatnonzero(image[:ROWS * CELL_HEIGHT].any(axis=(1, 2)))}
+    return {y // CELL_HEIGHT for y in np.flatnonzero(image[: ROWS * CELL_HEIGHT].any(axis=(1, 2)))}
 
 
 def test_the_default_grid_is_eyesims_80_columns_by_21_rows_above_the_menu_bar(program):
@@ -128,7 +128,7 @@ def test_fonts_and_variations_look_different_and_sizes_change_the_grid(program):
             client.call("LCD_CLEAR")
             client.call("LCD_SET_FONT", font, variation)
             client.call("LCD_PRINTF", "Agy")
-            shapes.add(screen(sim)[:CELL_HEIGHT, :3 * CELL_WIDTH].tobytes())
+            shapes.add(screen(sim)[:CELL_HEIGHT, : 3 * CELL_WIDTH].tobytes())
     assert len(shapes) == 12
     client.call("LCD_CLEAR")
     client.call("LCD_SET_FONT_SIZE", 24)  # 15 x 32 pixel cells: 32 columns, 8 rows

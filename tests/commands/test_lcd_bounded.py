@@ -35,8 +35,10 @@ def _reference_line(x1, y1, x2, y2) -> set:
     steps = max(abs(x2 - x1), abs(y2 - y1))
     if steps == 0:
         return _visible([(x1, y1)])
-    return _visible((x1 + (2 * (x2 - x1) * t + steps) // (2 * steps), y1 + (2 * (y2 - y1) * t + steps) // (2 * steps))
-                    for t in range(steps + 1))
+    return _visible(
+        (x1 + (2 * (x2 - x1) * t + steps) // (2 * steps), y1 + (2 * (y2 - y1) * t + steps) // (2 * steps))
+        for t in range(steps + 1)
+    )
 
 
 def _reference_circle(cx, cy, r) -> set:
@@ -66,8 +68,12 @@ def test_clipped_circles_draw_the_same_pixels(cx, cy, radius, fill):
     lcd = _fresh()
     lcd.circle(cx, cy, radius, WHITE, fill)
     if fill:
-        expected = _visible((cx + dx, cy + dy) for dx in range(-radius, radius + 1) for dy in range(-radius, radius + 1)
-                            if dx * dx + dy * dy <= radius * radius + radius)
+        expected = _visible(
+            (cx + dx, cy + dy)
+            for dx in range(-radius, radius + 1)
+            for dy in range(-radius, radius + 1)
+            if dx * dx + dy * dy <= radius * radius + radius
+        )
     else:
         expected = _reference_circle(cx, cy, radius)
     assert _lit(lcd) == expected
@@ -82,8 +88,10 @@ def test_clipped_areas_draw_the_same_pixels(x1, y1, x2, y2, fill):
     if fill:
         expected = _visible((x, y) for x in range(left, right + 1) for y in range(top, bottom + 1))
     else:
-        expected = _visible([(x, y) for x in range(left, right + 1) for y in (top, bottom)] +
-                            [(x, y) for y in range(top, bottom + 1) for x in (left, right)])
+        expected = _visible(
+            [(x, y) for x in range(left, right + 1) for y in (top, bottom)]
+            + [(x, y) for y in range(top, bottom + 1) for x in (left, right)]
+        )
     assert _lit(lcd) == expected
 
 
@@ -125,8 +133,12 @@ def _print_each(lcd: Lcd, text: str) -> None:
 
 
 @settings(max_examples=100, deadline=None)
-@given(st.lists(st.text(st.sampled_from("Ab é\t\r\x01"), max_size=70), max_size=120),
-       st.sampled_from([0, 0x0800, 0x0200, 0x0400]), st.integers(0, 20), st.sampled_from([8, 10, 17]))
+@given(
+    st.lists(st.text(st.sampled_from("Ab é\t\r\x01"), max_size=70), max_size=120),
+    st.sampled_from([0, 0x0800, 0x0200, 0x0400]),
+    st.integers(0, 20),
+    st.sampled_from([8, 10, 17]),
+)
 @example(["Ab\t\ré" * (i % 19) for i in range(110)], 0, 3, 10)  # the cut at 42 line feeds, wrapped lines
 @example(["x" * 70] * 100, 0x0800, 20, 8)
 @example(["ab"] * 43, 0, 0, 10)  # 2 x 21 line feeds from the top row: 21 scrolls, the old screen is gone

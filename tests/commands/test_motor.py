@@ -53,18 +53,21 @@ def test_pid_speed_control_and_back_to_open_loop():
         assert client.call("ENCODER_READ", 2)[0] < -300
 
 
-@pytest.mark.parametrize("op,args,message", [
-    ("MOTOR_DRIVE", (3, 50), "has no motor 3 (its motors: 1, 2)"),
-    ("MOTOR_DRIVE", (0, 50), "has no motor 0"),
-    ("MOTOR_DRIVE", (1, 101), "speed 101 is out of range -100..100"),
-    ("MOTOR_DRIVE_RAW", (2, -150), "speed -150 is out of range"),
-    ("MOTOR_PID", (1, 256, 0, 0), "p 256 is out of range 0..255"),
-    ("MOTOR_PID", (1, 10, -1, 0), "i -1 is out of range"),
-    ("MOTOR_SPEED", (1, 20000), "speed 20000 ticks/s is out of range -11000..11000"),
-    ("MOTOR_PID_OFF", (9,), "has no motor 9"),
-    ("ENCODER_READ", (3,), "has no encoder 3 (its encoders: 1, 2)"),
-    ("ENCODER_RESET", (-1,), "has no encoder -1"),
-])
+@pytest.mark.parametrize(
+    "op,args,message",
+    [
+        ("MOTOR_DRIVE", (3, 50), "has no motor 3 (its motors: 1, 2)"),
+        ("MOTOR_DRIVE", (0, 50), "has no motor 0"),
+        ("MOTOR_DRIVE", (1, 101), "speed 101 is out of range -100..100"),
+        ("MOTOR_DRIVE_RAW", (2, -150), "speed -150 is out of range"),
+        ("MOTOR_PID", (1, 256, 0, 0), "p 256 is out of range 0..255"),
+        ("MOTOR_PID", (1, 10, -1, 0), "i -1 is out of range"),
+        ("MOTOR_SPEED", (1, 20000), "speed 20000 ticks/s is out of range -11000..11000"),
+        ("MOTOR_PID_OFF", (9,), "has no motor 9"),
+        ("ENCODER_READ", (3,), "has no encoder 3 (its encoders: 1, 2)"),
+        ("ENCODER_RESET", (-1,), "has no encoder -1"),
+    ],
+)
 def test_bad_numbers_and_values_are_errors(op, args, message):
     with connected_program(arena_scene([("S4", (1000, 1000, 0))])) as (sim, client):
         with pytest.raises(RemoteError, match=message.replace("(", r"\(").replace(")", r"\)")) as error:
@@ -74,8 +77,9 @@ def test_bad_numbers_and_values_are_errors(op, args, message):
 
 
 def test_what_a_robot_type_cannot_do_is_not_supported():
-    scene = arena_scene([(example_robot("Minnow"), (1500, 1500, 0)), (example_robot("Reacher"), (500, 500, 0))],
-                        wall_height=1500)
+    scene = arena_scene(
+        [(example_robot("Minnow"), (1500, 1500, 0)), (example_robot("Reacher"), (500, 500, 0))], wall_height=1500
+    )
     with connected_program(scene) as (sim, client):
         for op, args in (("MOTOR_SPEED", (1, 100)), ("MOTOR_PID", (1, 1, 1, 1)), ("MOTOR_PID_OFF", (2,))):
             with pytest.raises(RemoteError, match="is a thruster without an encoder") as error:
@@ -89,6 +93,7 @@ def test_what_a_robot_type_cannot_do_is_not_supported():
         client.close()
     from support.client import ProgramClient
     from support.simulator import running_simulation
+
     with running_simulation(scene, "deterministic") as (sim, port):
         arm = ProgramClient(port)
         arm.hello("2")

@@ -30,8 +30,7 @@ def test_sleep_waits_seconds_and_nanoseconds_of_simulation_time():
     with connected_program() as (sim, client):
         # 999_999.001 us are rounded up to a whole second: a started microsecond counts, so that
         # even a 1 ns sleep lets time go on (and the clock stays on whole ms here).
-        for seconds, nanoseconds, waited_ms in ((0, 500_000_000, 500), (2, 0, 2000), (0, 999_999_001, 1000),
-                                                (0, 0, 0)):
+        for seconds, nanoseconds, waited_ms in ((0, 500_000_000, 500), (2, 0, 2000), (0, 999_999_001, 1000), (0, 0, 0)):
             before = client.call("OS_GET_COUNT")[0]
             assert client.call("OS_SLEEP", seconds, nanoseconds) == (0,)
             # the clock never shows the same millisecond twice in a row (deterministic mode)

@@ -17,14 +17,23 @@ def _scene():
     return arena_scene([("S4", (500, 500, 0)), ("S4", (1500, 1500, 0))], objects=[("Can", (1000, 1500, 0))])
 
 
-@pytest.mark.parametrize("op,args,field", [
-    ("VW_SET_POSITION", (INT_MAX, 0, 0), "x"), ("VW_SET_POSITION", (0, INT_MIN, 0), "y"),
-    ("VW_SET_POSITION", (0, 0, INT_MAX), "phi"), ("VW_STRAIGHT", (INT_MAX, 300), "dist"),
-    ("VW_STRAIGHT", (100, INT_MIN), "lin_speed"), ("VW_TURN", (INT_MIN, 90), "angle"),
-    ("VW_CURVE", (INT_MAX, 90, 100), "dist"), ("VW_DRIVE", (INT_MAX, 0, 100), "dx"),
-    ("VW_SET_SPEED", (INT_MAX, 0), "lin_speed"), ("SIM_SET_ROBOT", (0, INT_MAX, 500, 0, 0), "x"),
-    ("SIM_SET_OBJECT", (1, 500, 500, INT_MIN, 0), "z"), ("MOTOR_SPEED", (1, INT_MAX), "ticks"),
-])
+@pytest.mark.parametrize(
+    "op,args,field",
+    [
+        ("VW_SET_POSITION", (INT_MAX, 0, 0), "x"),
+        ("VW_SET_POSITION", (0, INT_MIN, 0), "y"),
+        ("VW_SET_POSITION", (0, 0, INT_MAX), "phi"),
+        ("VW_STRAIGHT", (INT_MAX, 300), "dist"),
+        ("VW_STRAIGHT", (100, INT_MIN), "lin_speed"),
+        ("VW_TURN", (INT_MIN, 90), "angle"),
+        ("VW_CURVE", (INT_MAX, 90, 100), "dist"),
+        ("VW_DRIVE", (INT_MAX, 0, 100), "dx"),
+        ("VW_SET_SPEED", (INT_MAX, 0), "lin_speed"),
+        ("SIM_SET_ROBOT", (0, INT_MAX, 500, 0, 0), "x"),
+        ("SIM_SET_OBJECT", (1, 500, 500, INT_MIN, 0), "z"),
+        ("MOTOR_SPEED", (1, INT_MAX), "ticks"),
+    ],
+)
 def test_values_beyond_the_documented_range_are_refused_before_any_work(op, args, field):
     with connected_program(_scene()) as (sim, client):
         before = client.call("VW_GET_POSITION")

@@ -47,8 +47,9 @@ def test_the_car_steers_with_servo_1():
         drive = sim.robots[0].component(AckermannDrive)
         assert client.call("SERVO_SET", 1, 0) == (0,)
         client.call("OS_WAIT", 500)
-        left, right = (float(sim.world.data.qpos[sim.world.model.jnt_qposadr[sim.world.joint_id(name)]])
-                       for name in drive.knuckles)
+        left, right = (
+            float(sim.world.data.qpos[sim.world.model.jnt_qposadr[sim.world.joint_id(name)]]) for name in drive.knuckles
+        )
         # 45 degrees left at the axle's centre: the inner (left) wheel turns more than the outer one
         assert math.degrees(left) > 45 > math.degrees(right) > 30
         assert drive.turning_radius() == pytest.approx(drive.wheelbase, rel=1e-6)  # tan 45 = 1
@@ -66,13 +67,16 @@ def test_the_gripper_opens_as_wide_as_its_opening():
         assert gripper.opening() == pytest.approx(0.004 + 0.090 * 128 / 255, abs=1e-4)
 
 
-@pytest.mark.parametrize("op,args,message,code", [
-    ("SERVO_SET", (5, 100), "has no servo 5 (its servos: 1, 2, 3, 4)", g.ERR_BAD_ARGUMENT),
-    ("SERVO_SET", (1, 256), "angle 256 is out of range 0..255", g.ERR_BAD_ARGUMENT),
-    ("SERVO_SET_RAW", (1, -1), "angle -1 is out of range 0..255", g.ERR_BAD_ARGUMENT),
-    ("SERVO_RANGE", (1, 200, 100), "low 200 must be below high 100", g.ERR_BAD_ARGUMENT),
-    ("SERVO_RANGE", (1, 0, 300), "high 300 is out of range 0..255", g.ERR_BAD_ARGUMENT),
-])
+@pytest.mark.parametrize(
+    "op,args,message,code",
+    [
+        ("SERVO_SET", (5, 100), "has no servo 5 (its servos: 1, 2, 3, 4)", g.ERR_BAD_ARGUMENT),
+        ("SERVO_SET", (1, 256), "angle 256 is out of range 0..255", g.ERR_BAD_ARGUMENT),
+        ("SERVO_SET_RAW", (1, -1), "angle -1 is out of range 0..255", g.ERR_BAD_ARGUMENT),
+        ("SERVO_RANGE", (1, 200, 100), "low 200 must be below high 100", g.ERR_BAD_ARGUMENT),
+        ("SERVO_RANGE", (1, 0, 300), "high 300 is out of range 0..255", g.ERR_BAD_ARGUMENT),
+    ],
+)
 def test_bad_servo_numbers_and_positions_are_errors(op, args, message, code):
     with connected_program(reacher()) as (sim, client):
         with pytest.raises(RemoteError, match=message.replace("(", r"\(").replace(")", r"\)")) as error:

@@ -7,8 +7,10 @@ from support.worlds import arena_scene, example_robot
 
 
 def scene():
-    return arena_scene([("S4", (500, 500, 0)), (example_robot("Reacher"), (1500, 1500, 0)), ("S4", (500, 1500, 90))],
-                       objects=[("Can", (1000, 500, 0)), ("Crate1", (2000, 2000, 0)), ("Soccer", (1000, 1000, 0))])
+    return arena_scene(
+        [("S4", (500, 500, 0)), (example_robot("Reacher"), (1500, 1500, 0)), ("S4", (500, 1500, 90))],
+        objects=[("Can", (1000, 500, 0)), ("Crate1", (2000, 2000, 0)), ("Soccer", (1000, 1000, 0))],
+    )
 
 
 def test_ids_counts_and_poses():
@@ -37,12 +39,15 @@ def test_objects_and_robots_can_be_moved_but_fixed_ones_cannot():
         assert client.call("SIM_GET_ROBOT", 3) == (0, 800, 1600, 0, 180)
 
 
-@pytest.mark.parametrize("op,args,message", [
-    ("SIM_GET_ROBOT", (4,), "no robot 4 .0 = this robot, 1..3 = the scene's."),
-    ("SIM_SET_ROBOT", (-1, 0, 0, 0, 0), "no robot -1"),
-    ("SIM_GET_OBJECT", (0,), "no object 0 .1..3."),
-    ("SIM_SET_OBJECT", (4, 0, 0, 0, 0), "no object 4"),
-])
+@pytest.mark.parametrize(
+    "op,args,message",
+    [
+        ("SIM_GET_ROBOT", (4,), "no robot 4 .0 = this robot, 1..3 = the scene's."),
+        ("SIM_SET_ROBOT", (-1, 0, 0, 0, 0), "no robot -1"),
+        ("SIM_GET_OBJECT", (0,), "no object 0 .1..3."),
+        ("SIM_SET_OBJECT", (4, 0, 0, 0, 0), "no object 4"),
+    ],
+)
 def test_unknown_ids_are_errors(op, args, message):
     with connected_program(scene()) as (sim, client):
         with pytest.raises(RemoteError, match=message):

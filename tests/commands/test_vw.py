@@ -43,8 +43,14 @@ def test_one_stalled_wheel_sets_its_bit(turn, stalled):
 @pytest.mark.parametrize("robot", ["Minnow", "Reacher"])
 def test_robots_without_a_wheeled_drive_have_no_vw(robot):
     with connected_program(arena_scene([(example_robot(robot), (1500, 1500, 0))], wall_height=1500)) as (sim, client):
-        for op, args in (("VW_SET_SPEED", (100, 0)), ("VW_STRAIGHT", (100, 100)), ("VW_REMAIN", ()),
-                         ("VW_STALLED", ()), ("VW_CURVE", (100, 10, 100)), ("VW_DRIVE", (100, 10, 100))):
+        for op, args in (
+            ("VW_SET_SPEED", (100, 0)),
+            ("VW_STRAIGHT", (100, 100)),
+            ("VW_REMAIN", ()),
+            ("VW_STALLED", ()),
+            ("VW_CURVE", (100, 10, 100)),
+            ("VW_DRIVE", (100, 10, 100)),
+        ):
             with pytest.raises(RemoteError, match="has no V-omega drive") as error:
                 client.call(op, *args)
             assert error.value.code == g.ERR_NOT_SUPPORTED

@@ -60,8 +60,14 @@ class Digest:
         self.requests.update(repr(line).encode())
 
     def result(self, end) -> dict:
-        return {"end": end.reason, "time_us": self.engine.time_us, "steps": self.engine.steps,
-                "answered": self.answered, "state": self.state.hexdigest(), "requests": self.requests.hexdigest()}
+        return {
+            "end": end.reason,
+            "time_us": self.engine.time_us,
+            "steps": self.engine.steps,
+            "answered": self.answered,
+            "state": self.state.hexdigest(),
+            "requests": self.requests.hexdigest(),
+        }
 
 
 def run(sim: Simulation, until: float) -> dict:
@@ -135,12 +141,18 @@ def callables(_build) -> dict:
     return run(sim, 12)
 
 
-RUNS = {"wall_follow": wall_follow, "radio": radio, "colour_track": colour_track,
-        "timer": timer, "callables": callables}
+RUNS = {
+    "wall_follow": wall_follow,
+    "radio": radio,
+    "colour_track": colour_track,
+    "timer": timer,
+    "callables": callables,
+}
 
 
 def digests() -> dict:
     with tempfile.TemporaryDirectory() as folder:
+
         def build(source: Path) -> Path:
             return compile_program(source, Path(folder) / source.stem)
 

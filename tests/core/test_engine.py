@@ -51,7 +51,10 @@ def test_local_calls_cost_only_their_own_microseconds():
         start = client.call("OS_GET_COUNT")[0]
         for x in range(1000):
             client.call("LCD_PIXEL", x % 480, x // 480, 0xFF0000)
-        assert client.call("OS_GET_COUNT")[0] - start == (1000 * pixel.cost_us + g.OPS_BY_NAME["OS_GET_COUNT"].cost_us) // 1000
+        assert (
+            client.call("OS_GET_COUNT")[0] - start
+            == (1000 * pixel.cost_us + g.OPS_BY_NAME["OS_GET_COUNT"].cost_us) // 1000
+        )
 
 
 def test_deterministic_clock_reads_never_show_the_same_millisecond_twice():
@@ -209,7 +212,7 @@ def run_scripted_program(mode):
         client.call("VW_WAIT")
         client.call("OS_WAIT", 100)
         end = sim.time_us
-    return trajectory[:end // sim.step_us]
+    return trajectory[: end // sim.step_us]
 
 
 def test_two_deterministic_runs_give_bit_identical_trajectories():
@@ -278,6 +281,7 @@ def test_the_clock_mode_is_asked_once_by_choosing_the_schedule():
     asked = {}
     for module in ("engine", "requests", "schedules"):
         tree = ast.parse(Path(importlib.import_module(f"eyesim.core.{module}").__file__).read_text())
-        asked[module] = [node.lineno for node in ast.walk(tree)
-                         if isinstance(node, ast.Attribute) and node.attr == "deterministic"]
+        asked[module] = [
+            node.lineno for node in ast.walk(tree) if isinstance(node, ast.Attribute) and node.attr == "deterministic"
+        ]
     assert asked["engine"] == asked["requests"] == [] and len(asked["schedules"]) == 1, asked

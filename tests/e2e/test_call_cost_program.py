@@ -24,8 +24,9 @@ def test_a_screen_drawn_pixel_by_pixel_is_ready_before_the_key_meant_for_it(out)
     program = build("redraw_then_key", out, "-Wall", "-Wextra", "-Werror")
     result = run_headless("--key", "1:KEY1@0.5", "--key", "1:KEY2@1.0", "--program", f"1={program}", cwd=out)
     assert result.returncode == 0, result.stdout + result.stderr
-    screens = [tuple(map(int, m)) for m in
-               re.findall(r"screen (\d) ready at (\d+) ms, key (\d+) at (\d+) ms", result.stdout)]
+    screens = [
+        tuple(map(int, m)) for m in re.findall(r"screen (\d) ready at (\d+) ms, key (\d+) at (\d+) ms", result.stdout)
+    ]
     assert len(screens) == 2, result.stdout
     (_, ready1, key1, at1), (_, ready2, key2, at2) = screens
     assert ready1 <= 3600 * PIXEL_US // 1000 + 1 < 500 <= at1 and key1 == 1  # KEY1

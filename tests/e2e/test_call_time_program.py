@@ -53,12 +53,17 @@ def scene_with(tmp_path, settings: str):
     return scene
 
 
-@pytest.mark.parametrize("how,call_ms", [("default", DEFAULT_CALL_TIME_US / 1000), ("flag", 2), ("scene", 1),
-                                         ("flag over scene", 5)])
+@pytest.mark.parametrize(
+    "how,call_ms", [("default", DEFAULT_CALL_TIME_US / 1000), ("flag", 2), ("scene", 1), ("flag over scene", 5)]
+)
 def test_deterministic_loop_iterations_follow_the_call_time(tmp_path, how, call_ms):
     program = build("count_calls", tmp_path, "-Wall", "-Wextra", "-Werror")
-    args = {"default": [], "flag": ["--call-time", "2"], "scene": [str(scene_with(tmp_path, "CALLTIME=1"))],
-            "flag over scene": [str(scene_with(tmp_path, "CALLTIME=1")), "--call-time", "5"]}[how]
+    args = {
+        "default": [],
+        "flag": ["--call-time", "2"],
+        "scene": [str(scene_with(tmp_path, "CALLTIME=1"))],
+        "flag over scene": [str(scene_with(tmp_path, "CALLTIME=1")), "--call-time", "5"],
+    }[how]
     result = run_headless(*args, "--program", f"1={program}", cwd=tmp_path)
     assert result.returncode == 0, result.stdout + result.stderr
     iterations, took = counted(result.stdout)
@@ -77,8 +82,9 @@ def test_a_call_time_of_0_gives_the_protocols_own_costs(tmp_path):
 
 def test_realtime_replies_wait_for_the_call_time(tmp_path):
     program = build("count_calls", tmp_path, "-Wall", "-Wextra", "-Werror")
-    result = run_headless("--clock", "realtime", "--speed", "4", "--call-time", "4", "--program", f"1={program}",
-                          cwd=tmp_path)
+    result = run_headless(
+        "--clock", "realtime", "--speed", "4", "--call-time", "4", "--program", f"1={program}", cwd=tmp_path
+    )
     assert result.returncode == 0, result.stdout + result.stderr
     iterations, took = counted(result.stdout)
     # At most what 4 ms of simulation time per iteration allow; fewer as each round trip adds its own.

@@ -22,8 +22,9 @@ def heading(row) -> float:
 
 def test_drive_turn_print_and_key(tmp_path):
     program = build("drive_square_corner", tmp_path)
-    result = run_headless("--program", f"1={program}", "--key", "1:KEY1@0.5", "--record", "path.csv",
-                          "--save-lcd", "lcd", cwd=tmp_path)
+    result = run_headless(
+        "--program", f"1={program}", "--key", "1:KEY1@0.5", "--record", "path.csv", "--save-lcd", "lcd", cwd=tmp_path
+    )
     assert result.returncode == 0, result.stdout + result.stderr
     assert "done key=1" in result.stdout
     assert "program drive_square_corner: exit code 0" in result.stdout
@@ -38,17 +39,18 @@ def test_drive_turn_print_and_key(tmp_path):
     assert abs(turned - 90) < 1.0
 
     lcd = np.asarray(Image.open(tmp_path / "lcd" / "robot1-lcd.png").convert("RGB"))
-    text_rows = [lcd[r * CELL_HEIGHT:(r + 1) * CELL_HEIGHT] for r in range(3)]
+    text_rows = [lcd[r * CELL_HEIGHT : (r + 1) * CELL_HEIGHT] for r in range(3)]
     assert all((row > 200).all(axis=2).sum() > 20 for row in text_rows)  # three printed lines
-    assert not (lcd[3 * CELL_HEIGHT:HEIGHT - MENU_HEIGHT] > 0).any()  # nothing below them
-    assert (lcd[HEIGHT - MENU_HEIGHT:] > 0).any()  # the menu bar is drawn
+    assert not (lcd[3 * CELL_HEIGHT : HEIGHT - MENU_HEIGHT] > 0).any()  # nothing below them
+    assert (lcd[HEIGHT - MENU_HEIGHT :] > 0).any()  # the menu bar is drawn
 
 
 def test_deterministic_runs_are_bit_identical(tmp_path):
     program = build("drive_square_corner", tmp_path)
     for name in ("first", "second"):
-        result = run_headless("--program", f"1={program}", "--key", "1:KEY1@0.3", "--record", f"{name}.csv",
-                              cwd=tmp_path)
+        result = run_headless(
+            "--program", f"1={program}", "--key", "1:KEY1@0.3", "--record", f"{name}.csv", cwd=tmp_path
+        )
         assert result.returncode == 0, result.stderr
     first, second = (tmp_path / "first.csv").read_bytes(), (tmp_path / "second.csv").read_bytes()
     assert len(first.splitlines()) > 300
@@ -70,16 +72,25 @@ def test_a_missing_program_is_reported(tmp_path):
 
 def test_the_program_ends_clearly_when_the_simulator_dies(tmp_path):
     program = build("wait_forever", tmp_path)
-    simulator = subprocess.Popen(eyesim_command("run", "--headless", "--clock", "realtime", "--port", "0"),
-                                 stdout=subprocess.PIPE, text=True, cwd=tmp_path)
+    simulator = subprocess.Popen(
+        eyesim_command("run", "--headless", "--clock", "realtime", "--port", "0"),
+        stdout=subprocess.PIPE,
+        text=True,
+        cwd=tmp_path,
+    )
     try:
         line = simulator.stdout.readline()
         while "programs connect to" not in line:
             line = simulator.stdout.readline()
             assert line, "the simulator did not start"
         port = line.rsplit(":", 1)[1].split()[0]
-        client = subprocess.Popen([str(program)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                                  env=dict(os.environ, EYESIM_PORT=port))
+        client = subprocess.Popen(
+            [str(program)],
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+            env=dict(os.environ, EYESIM_PORT=port),
+        )
         assert client.stdout.readline().strip() == "ready"
         time.sleep(0.2)
         simulator.send_signal(signal.SIGKILL)
@@ -94,9 +105,12 @@ def test_the_program_ends_clearly_when_the_simulator_dies(tmp_path):
 
 def test_program_output_reaches_the_console_line_by_line(tmp_path):
     program = build("print_then_wait", tmp_path)
-    simulator = subprocess.Popen(eyesim_command("run", "--headless", "--clock", "realtime", "--port", "0",
-                                                "--program", f"1={program}"),
-                                 stdout=subprocess.PIPE, text=True, cwd=tmp_path)
+    simulator = subprocess.Popen(
+        eyesim_command("run", "--headless", "--clock", "realtime", "--port", "0", "--program", f"1={program}"),
+        stdout=subprocess.PIPE,
+        text=True,
+        cwd=tmp_path,
+    )
     try:
         start = time.perf_counter()
         line = simulator.stdout.readline()
@@ -114,8 +128,11 @@ def test_program_output_reaches_the_console_line_by_line(tmp_path):
 def test_the_bundled_demo_explores_and_ends_on_key4(tmp_path):
     demo = EXAMPLES_DIR / "programs" / "demo.c"
     output = tmp_path / "demo"
-    built = subprocess.run(eyesim_command("cc", "-Wall", "-Wextra", "-Werror", str(demo), "-o", str(output)),
-                           capture_output=True, text=True)
+    built = subprocess.run(
+        eyesim_command("cc", "-Wall", "-Wextra", "-Werror", str(demo), "-o", str(output)),
+        capture_output=True,
+        text=True,
+    )
     assert built.returncode == 0, built.stderr
     result = run_headless("--program", f"1={output}", "--key", "1:KEY4@6", "--record", "path.csv", cwd=tmp_path)
     assert result.returncode == 0, result.stdout + result.stderr
@@ -127,9 +144,12 @@ def test_the_bundled_demo_explores_and_ends_on_key4(tmp_path):
 
 def _log(recording: Path) -> list[tuple[int, str]]:
     from mcap.reader import make_reader
+
     with open(recording, "rb") as file:
-        return [(message.log_time, json.loads(message.data)["message"])
-                for _, _, message in make_reader(file).iter_messages(topics=["/log"])]
+        return [
+            (message.log_time, json.loads(message.data)["message"])
+            for _, _, message in make_reader(file).iter_messages(topics=["/log"])
+        ]
 
 
 def test_program_output_is_stamped_when_the_program_wrote_it(tmp_path):

@@ -7,8 +7,16 @@ from support.programs import build, run_headless
 
 
 def test_image_start_sets_the_data_size_of_maps_and_tiles(tmp_path):
-    program = build("lcd_image_start", tmp_path, "-Wall", "-Wextra", "-Werror", "-g", "-fsanitize=address",
-                    "-fno-omit-frame-pointer")
+    program = build(
+        "lcd_image_start",
+        tmp_path,
+        "-Wall",
+        "-Wextra",
+        "-Werror",
+        "-g",
+        "-fsanitize=address",
+        "-fno-omit-frame-pointer",
+    )
     result = run_headless("--program", f"1={program}", "--save-lcd", "lcd", cwd=tmp_path)
     assert "AddressSanitizer" not in result.stderr, result.stderr
     assert result.returncode == 0, result.stdout + result.stderr

@@ -10,9 +10,23 @@ from eyesim.robot.components.lcd import CELL_HEIGHT, CELL_WIDTH, HEIGHT, MENU_HE
 
 def test_drawing_printing_images_keys_and_touches_from_c(tmp_path):
     program = build("lcd_graphics", tmp_path, "-Wall", "-Wextra", "-Werror")
-    result = run_headless("--program", f"1={program}", "--key", "1:KEY1@0.2", "--key", "1:KEY3@0.3",
-                          "--key", "1:KEY4@0.4", "--touch", "1:100,50@0.5", "--touch", "1:5,6@0.7",
-                          "--save-lcd", "lcd", cwd=tmp_path)
+    result = run_headless(
+        "--program",
+        f"1={program}",
+        "--key",
+        "1:KEY1@0.2",
+        "--key",
+        "1:KEY3@0.3",
+        "--key",
+        "1:KEY4@0.4",
+        "--touch",
+        "1:100,50@0.5",
+        "--touch",
+        "1:5,6@0.7",
+        "--save-lcd",
+        "lcd",
+        cwd=tmp_path,
+    )
     assert result.returncode == 0, result.stdout + result.stderr
     lines = [line.removeprefix("[robot 1] ") for line in result.stdout.splitlines() if line.startswith("[robot 1] ")]
     assert lines[-1] == "done"
@@ -21,14 +35,14 @@ def test_drawing_printing_images_keys_and_touches_from_c(tmp_path):
     assert "eyesim: LCDSetPos: row 21 is outside the text rows 0..20" in result.stdout + result.stderr
 
     lcd = np.asarray(Image.open(tmp_path / "lcd" / "robot1-lcd.png").convert("RGB")).astype(int)
-    title = lcd[:CELL_HEIGHT, :5 * CELL_WIDTH].reshape(-1, 3)
+    title = lcd[:CELL_HEIGHT, : 5 * CELL_WIDTH].reshape(-1, 3)
     assert ((title == [0, 0, 255]).all(axis=1)).sum() > 100  # blue background ...
     assert ((title == [255, 0, 0]).all(axis=1)).sum() > 10  # ... and red letters
     big = lcd[128:160, :60]
     assert (big.sum(axis=2) > 600).sum() > 150  # "Big" in 24-point Times bold
     assert (lcd[255:265, 10:40] == [0, 238, 238]).all()  # shown by LCDRefresh
     assert (lcd[255:265, 70:100] == 200).all()  # still the gray image: the cyan came after the refresh
-    bar = lcd[HEIGHT - MENU_HEIGHT:]
+    bar = lcd[HEIGHT - MENU_HEIGHT :]
     assert (bar[10, 125:235] == [0, 255, 0]).all(axis=1).mean() > 0.8  # KEY2's own colours
 
 
@@ -41,10 +55,10 @@ def test_menu_labels_set_one_by_one_count_positions_from_0_as_eyesim(tmp_path):
     assert "[robot 1] LCDMenuI(4) = 1" in result.stdout
     assert "eyesim: LCDMenuI: menu position 4 is not 0..3 (0 is KEY1 ... 3 is KEY4, as on EyeSim)" in result.stderr
     assert "[robot 1] key 8" in result.stdout  # KEY4
-    bar = np.asarray(Image.open(tmp_path / "lcd" / "robot1-lcd.png").convert("RGB")).astype(int)[HEIGHT - MENU_HEIGHT:]
+    bar = np.asarray(Image.open(tmp_path / "lcd" / "robot1-lcd.png").convert("RGB")).astype(int)[HEIGHT - MENU_HEIGHT :]
     backgrounds = [[0, 0, 255], [255, 255, 255], [255, 0, 0], [0, 255, 0]]  # as the program gave them, in key order
     for key, colour in enumerate(backgrounds):
-        assert (bar[4, 120 * key + 5:120 * key + 20] == colour).all(), key
+        assert (bar[4, 120 * key + 5 : 120 * key + 20] == colour).all(), key
 
 
 def test_long_lines_wrap_after_80_columns_as_with_eyesims_6x13_font(eyesim_sim, eyesim_cc):

@@ -14,14 +14,17 @@ from eyesim import __version__
 
 ROOT = Path(__file__).resolve().parents[2]
 CRASH = '#include "eyebot.h"\nint main(void) { LCDPrintf("x"); volatile int *p = 0; *p = 1; return 0; }\n'
-WAIT = '#include <stdio.h>\n#include "eyebot.h"\nint main(void) { printf("ready\\n"); fflush(stdout); ' \
-       'for (;;) OSWait(100); }\n'
+WAIT = (
+    '#include <stdio.h>\n#include "eyebot.h"\nint main(void) { printf("ready\\n"); fflush(stdout); '
+    "for (;;) OSWait(100); }\n"
+)
 
 
 def compile_c(source: str, path: Path) -> Path:
     path.with_suffix(".c").write_text(source)
-    done = subprocess.run(eyesim_command("cc", str(path.with_suffix(".c")), "-o", str(path)), capture_output=True,
-                          text=True)
+    done = subprocess.run(
+        eyesim_command("cc", str(path.with_suffix(".c")), "-o", str(path)), capture_output=True, text=True
+    )
     assert done.returncode == 0, done.stderr
     return path
 
@@ -61,8 +64,13 @@ def test_the_testing_api_reports_the_exit_code_of_a_program_exiting_at_until(tmp
 
 def test_ctrl_c_ends_the_run_with_status_130(tmp_path):
     program = compile_c(WAIT, tmp_path / "wait")
-    process = subprocess.Popen(eyesim_command("run", "--headless", "--port", "0", "--program", f"1={program}"),
-                               cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    process = subprocess.Popen(
+        eyesim_command("run", "--headless", "--port", "0", "--program", f"1={program}"),
+        cwd=tmp_path,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+    )
     try:
         for line in process.stdout:  # the program runs: the simulator is inside its loop
             if "ready" in line:
@@ -77,8 +85,13 @@ def test_ctrl_c_ends_the_run_with_status_130(tmp_path):
 
 
 def test_make_demo_takes_other_ports():
-    done = subprocess.run(["make", "-n", "demo", "PORT=9800", "VIEWER_PORT=8081"], cwd=ROOT, capture_output=True,
-                          text=True, env={**os.environ, "MAKEFLAGS": ""})
+    done = subprocess.run(
+        ["make", "-n", "demo", "PORT=9800", "VIEWER_PORT=8081"],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        env={**os.environ, "MAKEFLAGS": ""},
+    )
     assert done.returncode == 0, done.stderr
     run_line = next(line for line in done.stdout.splitlines() if "eyesim run" in line)
     assert "--port 9800" in run_line and "--viewer-port 8081" in run_line

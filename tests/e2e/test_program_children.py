@@ -12,11 +12,8 @@ from support.programs import run_headless
 def test_a_childs_process_ends_with_the_run(tmp_path):
     marker = f"{random.randint(100000, 999999)}"
     (tmp_path / "spawner.py").write_text(
-        "import subprocess\n"
-        f"subprocess.Popen(['sleep', '{marker}'])\n"
-        "from eye import *\n"
-        "while True:\n"
-        "    OSWait(100)\n")
+        f"import subprocess\nsubprocess.Popen(['sleep', '{marker}'])\nfrom eye import *\nwhile True:\n    OSWait(100)\n"
+    )
     result = run_headless("--program", "1=spawner.py", "--until", "2", cwd=tmp_path)
     assert result.returncode == 0, result.stderr
     assert "still running at the end (stopped)" in result.stdout

@@ -13,8 +13,13 @@ from support.programs import build, eyesim_command, run_headless
 
 def _start_run(tmp_path, *args: str) -> tuple[subprocess.Popen, str, Path | None]:
     """`eyesim run` on a free port; (process, port, token file it printed)."""
-    simulator = subprocess.Popen(eyesim_command("run", "--headless", "--clock", "realtime", "--port", "0", *args),
-                                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=tmp_path)
+    simulator = subprocess.Popen(
+        eyesim_command("run", "--headless", "--clock", "realtime", "--port", "0", *args),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        cwd=tmp_path,
+    )
     port, token_file = None, None
     line = simulator.stdout.readline()
     while "programs connect to" not in line:
@@ -30,8 +35,13 @@ def _start_run(tmp_path, *args: str) -> tuple[subprocess.Popen, str, Path | None
 
 def _hand_started(program: Path, port: str, **env: str) -> subprocess.Popen:
     environment = {k: v for k, v in os.environ.items() if k not in ("EYESIM_TOKEN", "EYESIM_ROBOT")}
-    return subprocess.Popen([str(program)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                            env=dict(environment, EYESIM_PORT=port, **env))
+    return subprocess.Popen(
+        [str(program)],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=dict(environment, EYESIM_PORT=port, **env),
+    )
 
 
 def test_a_hand_started_program_connects_through_the_token_file_and_a_wrong_token_is_refused(tmp_path):
@@ -47,8 +57,9 @@ def test_a_hand_started_program_connects_through_the_token_file_and_a_wrong_toke
         out, err = wrong.communicate(timeout=30)
         assert wrong.returncode == 4, out + err  # ES_EXIT_REFUSED
         assert out == ""
-        assert (f"eyesim: the simulator at 127.0.0.1:{port} refused this program: this program sent a wrong "
-                f"program token") in err
+        assert (
+            f"eyesim: the simulator at 127.0.0.1:{port} refused this program: this program sent a wrong program token"
+        ) in err
         assert "[it sent EYESIM_TOKEN]" in err and token not in err
 
         hand_started = _hand_started(program, port)  # no EYESIM_TOKEN: the file

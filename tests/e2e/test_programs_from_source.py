@@ -11,8 +11,10 @@ from support.programs import read_trajectory, run_headless
 from eyesim.programs.sources import COMPILER_OUTPUT
 
 DRIVE = '#include "eyebot.h"\nint main(void) { VWStraight(%d, 300); VWWait(); LCDPrintf("done"); return 0; }\n'
-DRIVE_CPP = ('#include "eyebot.h"\n#include <string>\nint main() { std::string s = "c++"; VWStraight(200, 300); '
-             'VWWait(); LCDPrintf("%s", s.c_str()); return 0; }\n')
+DRIVE_CPP = (
+    '#include "eyebot.h"\n#include <string>\nint main() { std::string s = "c++"; VWStraight(200, 300); '
+    'VWWait(); LCDPrintf("%s", s.c_str()); return 0; }\n'
+)
 
 
 def moved(csv_path) -> float:

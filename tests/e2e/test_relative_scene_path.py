@@ -8,7 +8,6 @@ from support.programs import build, run_headless
 from support.rooms import Run
 
 
-
 def test_a_scene_run_by_its_name_from_its_folder_sees_the_same_world(tmp_path):
     shutil.copytree(CORPUS / "ASAX21__VRRoboticProject/Test Assets", tmp_path / "Test Assets")
     folder = tmp_path / "Test Assets/examples/drivemodes"
@@ -21,7 +20,8 @@ def test_a_scene_run_by_its_name_from_its_folder_sees_the_same_world(tmp_path):
     [[front, left, right, back, five, six]] = by_name.values(1, "psd")
     assert front < 9999 and right < 9999  # walls of the soccer field, not an empty world
     assert (five, six) == (-1, -1)  # S4 has four PSDs
-    warnings = sorted(line.replace(str(folder / "Diff.sim"), "Diff.sim")
-                      for line in by_path.stderr.splitlines() if "warning" in line)
+    warnings = sorted(
+        line.replace(str(folder / "Diff.sim"), "Diff.sim") for line in by_path.stderr.splitlines() if "warning" in line
+    )
     assert sorted(line for line in by_name.stderr.splitlines() if "warning" in line) == warnings
     assert not any("world file not found" in line for line in warnings)

@@ -13,9 +13,23 @@ def test_serial_irtv_io_and_audio_from_c_with_scripted_input(tmp_path):
         sound.setsampwidth(1)
         sound.setframerate(8000)
         sound.writeframes(bytes(2400))
-    result = run_headless("--program", f"1={program}", "--serial-loopback", "1:1", "--serial", "1:0:hello\\n@0.1",
-                          "--irtv", "1:OK@0.3", "--irtv", "1:7@0.3", "--digital", "1:3=1@0.2",
-                          "--analog", "1:2=700@0.2", cwd=tmp_path)
+    result = run_headless(
+        "--program",
+        f"1={program}",
+        "--serial-loopback",
+        "1:1",
+        "--serial",
+        "1:0:hello\\n@0.1",
+        "--irtv",
+        "1:OK@0.3",
+        "--irtv",
+        "1:7@0.3",
+        "--digital",
+        "1:3=1@0.2",
+        "--analog",
+        "1:2=700@0.2",
+        cwd=tmp_path,
+    )
     assert result.returncode == 0, result.stdout + result.stderr
     lines = [line.removeprefix("[robot 1] ") for line in result.stdout.splitlines() if line.startswith("[robot 1] ")]
     assert lines[-1] == "done"
@@ -31,4 +45,6 @@ def test_serial_irtv_io_and_audio_from_c_with_scripted_input(tmp_path):
 def test_bad_scripted_input_is_a_usage_error(tmp_path):
     result = run_headless("--digital", "1:17=1@1", "--until", "0.1", cwd=tmp_path)
     assert result.returncode == 2
-    assert "eyesim run: --digital '1:17=1@1': digital: line must be a whole number from 1 to 16, not 17" in result.stderr
+    assert (
+        "eyesim run: --digital '1:17=1@1': digital: line must be a whole number from 1 to 16, not 17" in result.stderr
+    )

@@ -9,8 +9,7 @@ import time
 from support.programs import eyesim_command, run_headless
 
 KEY_WAIT = '#include "eyebot.h"\nint main(void) { LCDPrintf("press"); KEYWait(ANYKEY); return 0; }\n'
-COMPUTE = '#include "eyebot.h"\nint main(void) { LCDPrintf("plan"); volatile unsigned long n = 0; ' \
-          'for (;;) n++; }\n'
+COMPUTE = '#include "eyebot.h"\nint main(void) { LCDPrintf("plan"); volatile unsigned long n = 0; for (;;) n++; }\n'
 
 
 def test_a_program_waiting_for_a_key_is_named_and_the_wall_limit_ends_the_run(tmp_path):
@@ -34,8 +33,13 @@ def test_a_program_computing_without_calls_is_named(tmp_path):
 
 
 def test_a_wall_limit_must_be_positive(tmp_path):
-    done = subprocess.run(eyesim_command("run", "--headless", "--wall-limit", "0"), capture_output=True, text=True,
-                          cwd=tmp_path, timeout=60)
+    done = subprocess.run(
+        eyesim_command("run", "--headless", "--wall-limit", "0"),
+        capture_output=True,
+        text=True,
+        cwd=tmp_path,
+        timeout=60,
+    )
     assert done.returncode == 2 and "--wall-limit 0: expected a positive number of seconds" in done.stderr
 
 

@@ -39,6 +39,7 @@ EXAMPLE_FILES = (".c", ".cpp", ".py", ".sim")
 @dataclass(frozen=True)
 class Bounds:
     """How long a run of an example lasts (simulation seconds) and the input its programs wait for."""
+
     until: float
     inputs: tuple[str, ...] = ()
 
@@ -47,16 +48,17 @@ class Bounds:
 # of simulation time after its programs are done; programs that run until KEY4 get it.
 BOUNDS = {
     "programs/demo": Bounds(6, ("--key", "1:KEY4@4")),
-    "programs/menu_demo": Bounds(8, ("--key", "1:KEY1@1", "--key", "1:KEY2@3", "--key", "1:KEY3@5",
-                                     "--key", "1:KEY4@6")),
+    "programs/menu_demo": Bounds(
+        8, ("--key", "1:KEY1@1", "--key", "1:KEY2@3", "--key", "1:KEY3@5", "--key", "1:KEY4@6")
+    ),
     "scenes/wall_follow.sim": Bounds(12, ("--key", "1:KEY4@10")),
     "scenes/lidar_map.sim": Bounds(10, ("--key", "1:KEY4@8")),
-    "scenes/colour_track.sim": Bounds(12),   # arrives at about 8 s
-    "scenes/drive_types.sim": Bounds(20),    # done at about 17 s
-    "scenes/pool.sim": Bounds(28),           # surfaced at about 25 s
-    "scenes/workshop.sim": Bounds(22),       # done at about 19 s
-    "scenes/maze.sim": Bounds(38),           # at the finish at about 35 s
-    "scenes/radio.sim": Bounds(10),          # done at about 8 s
+    "scenes/colour_track.sim": Bounds(12),  # arrives at about 8 s
+    "scenes/drive_types.sim": Bounds(20),  # done at about 17 s
+    "scenes/pool.sim": Bounds(28),  # surfaced at about 25 s
+    "scenes/workshop.sim": Bounds(22),  # done at about 19 s
+    "scenes/maze.sim": Bounds(38),  # at the finish at about 35 s
+    "scenes/radio.sim": Bounds(10),  # done at about 8 s
 }
 
 
@@ -95,7 +97,7 @@ class ExampleRun:
     def lines(self, robot: int) -> list[str]:
         """What robot's program printed, without the simulator's prefix."""
         prefix = f"[robot {robot}] "
-        return [line[len(prefix):] for line in self.stdout.splitlines() if line.startswith(prefix)]
+        return [line[len(prefix) :] for line in self.stdout.splitlines() if line.startswith(prefix)]
 
     def values(self, robot: int, tag: str) -> list[int]:
         """The numbers of the one line `<tag> n n ...` robot printed."""
@@ -109,8 +111,9 @@ class ExampleRun:
     def lcd(self, robot: int) -> np.ndarray:
         return np.asarray(Image.open(self.out / "lcd" / f"robot{robot}-lcd.png").convert("RGB"))
 
-    def lcd_shows(self, robot: int, row: int, text: str, column: int = 0,
-                  colours: tuple[int, int] | None = None) -> bool:
+    def lcd_shows(
+        self, robot: int, row: int, text: str, column: int = 0, colours: tuple[int, int] | None = None
+    ) -> bool:
         """Whether robot's final LCD shows `text` at (row, column) of the default font's grid, in
         white on black or in `colours` (foreground, background): pixel for pixel as the
         simulator's LCD draws it."""
@@ -148,8 +151,18 @@ def run_example(tmp_path_factory):
         bounds = BOUNDS[example_of(command)]
         out = tmp_path_factory.mktemp("run")
         before = {p for p in folder.rglob("*") if p.is_file()}
-        result = run_headless(*words[2:], "--until", str(bounds.until), *bounds.inputs, "--record",
-                              str(out / "path.csv"), "--save-lcd", str(out / "lcd"), cwd=folder, env=env)
+        result = run_headless(
+            *words[2:],
+            "--until",
+            str(bounds.until),
+            *bounds.inputs,
+            "--record",
+            str(out / "path.csv"),
+            "--save-lcd",
+            str(out / "lcd"),
+            cwd=folder,
+            env=env,
+        )
         (out / "written").mkdir()
         for made in {p for p in folder.rglob("*") if p.is_file()} - before:  # keep them with this run
             shutil.move(made, out / "written" / made.name)
@@ -157,8 +170,9 @@ def run_example(tmp_path_factory):
         assert result.returncode == 0, said
         assert "warning" not in result.stderr.lower() and "not found" not in result.stderr, said
         summary = [line for line in result.stdout.splitlines() if re.match(r"robot \d+ \S+: x=", line)]
-        assert summary and all(re.search(r"program \S+: (exit code 0|still running at the end \(stopped\))$", line)
-                               for line in summary), said
+        assert summary and all(
+            re.search(r"program \S+: (exit code 0|still running at the end \(stopped\))$", line) for line in summary
+        ), said
         runs[command] = ExampleRun(command, result.stdout, result.stderr, out)
         return runs[command]
 
@@ -182,14 +196,16 @@ def test_every_example_documents_how_to_run_it_and_has_a_python_version():
     for program in sorted((EXAMPLES / "programs").iterdir()):
         if program.suffix in (".c", ".py"):
             assert f"programs/{program.name}" in named, f"no documented command runs {program.name}"
-            assert any(Path("programs") / program.name in files for files in commands.values()), \
+            assert any(Path("programs") / program.name in files for files in commands.values()), (
                 f"{program.name} says nowhere how to run it"
+            )
         if program.suffix == ".c":
             assert program.with_suffix(".py").is_file(), f"{program.name} has no Python version"
     for scene in sorted((EXAMPLES / "scenes").glob("*.sim")):
         own = [command for command, files in commands.items() if Path("scenes") / scene.name in files]
-        assert any(shlex.split(command)[2] == f"scenes/{scene.name}" for command in own), \
+        assert any(shlex.split(command)[2] == f"scenes/{scene.name}" for command in own), (
             f"{scene.name} says nowhere how to run it"
+        )
     assert {example_of(command) for command in commands} == set(BOUNDS)  # every run has bounds, all bounds a run
 
 
@@ -238,7 +254,7 @@ def test_lidar_map_saves_its_map(run_example, command):
     data = run.written("map.pgm").read_bytes()
     header = b"P5\n300 300\n255\n"
     assert data.startswith(header) and len(data) == len(header) + 300 * 300
-    assert data[len(header):].count(0) > 200  # walls seen
+    assert data[len(header) :].count(0) > 200  # walls seen
     assert run.lcd_shows(1, 0, "Lidar map (1 pixel = 20 mm)")
     lcd = run.lcd(1)
     assert (lcd[20:280, 100:] == 255).all(axis=2).sum() > 200  # the map drawn on the LCD
@@ -340,7 +356,9 @@ def test_eyesim_examples_copies_them_and_will_not_overwrite(tmp_path):
     done = subprocess.run(eyesim_command("examples", str(target)), capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     copied = sorted(p.relative_to(target) for p in target.rglob("*") if p.is_file())
-    shipped = sorted(p.relative_to(EXAMPLES) for p in EXAMPLES.rglob("*") if p.is_file() and "__pycache__" not in p.parts)
+    shipped = sorted(
+        p.relative_to(EXAMPLES) for p in EXAMPLES.rglob("*") if p.is_file() and "__pycache__" not in p.parts
+    )
     assert copied == shipped and Path("scenes/wall_follow.sim") in copied
     again = subprocess.run(eyesim_command("examples", str(target)), capture_output=True, text=True)
     assert again.returncode == 2 and "already exists and is not an empty folder" in again.stderr

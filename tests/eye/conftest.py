@@ -78,11 +78,21 @@ def run_python(robios_prefix, tmp_path):
         for robot, source in programs.items():
             path = tmp_path / f"robot{robot}.py"
             path.write_text(textwrap.dedent(source))
-            env = program_env(EYESIM_HOST="127.0.0.1", EYESIM_PORT=str(port), EYESIM_ROBOT=str(robot),
-                              EYESIM_TOKEN=sim.program_token,
-                              PYTHONUNBUFFERED="1")
-            processes[robot] = subprocess.Popen([sys.executable, str(path)], cwd=tmp_path, env=env, text=True,
-                                                stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+            env = program_env(
+                EYESIM_HOST="127.0.0.1",
+                EYESIM_PORT=str(port),
+                EYESIM_ROBOT=str(robot),
+                EYESIM_TOKEN=sim.program_token,
+                PYTHONUNBUFFERED="1",
+            )
+            processes[robot] = subprocess.Popen(
+                [sys.executable, str(path)],
+                cwd=tmp_path,
+                env=env,
+                text=True,
+                stdout=subprocess.PIPE,
+                stderr=subprocess.PIPE,
+            )
         results = {}
         for robot, process in processes.items():
             try:

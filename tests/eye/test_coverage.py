@@ -53,15 +53,35 @@ def parameter_type(parameter: str) -> str:
 def kind_of_c(c_type: str) -> str:
     """The ctypes-level kind of a C type, as eye's prototypes must declare it."""
     bare = c_type.replace("const ", "").replace("unsigned char", "BYTE").replace("uint8_t", "BYTE").strip()
-    kinds = {"int": "int", "COLOR": "int", "TIMER": "int", "BYTE": "byte", "char": "char", "bool": "bool",
-             "void": "void", "char *": "text", "BYTE *": "bytes", "int *": "ints", "function": "function"}
+    kinds = {
+        "int": "int",
+        "COLOR": "int",
+        "TIMER": "int",
+        "BYTE": "byte",
+        "char": "char",
+        "bool": "bool",
+        "void": "void",
+        "char *": "text",
+        "BYTE *": "bytes",
+        "int *": "ints",
+        "function": "function",
+    }
     return kinds.get(bare, f"unknown C type {c_type!r}")
 
 
 def kind_of_ctypes(t) -> str:
-    kinds = {None: "void", ctypes.c_int: "int", ctypes.c_ubyte: "byte", ctypes.c_char: "char",
-             ctypes.c_bool: "bool", ctypes.c_char_p: "text", ctypes.POINTER(ctypes.c_char): "text",
-             ctypes.c_void_p: "text", ctypes.POINTER(ctypes.c_ubyte): "bytes", ctypes.POINTER(ctypes.c_int): "ints"}
+    kinds = {
+        None: "void",
+        ctypes.c_int: "int",
+        ctypes.c_ubyte: "byte",
+        ctypes.c_char: "char",
+        ctypes.c_bool: "bool",
+        ctypes.c_char_p: "text",
+        ctypes.POINTER(ctypes.c_char): "text",
+        ctypes.c_void_p: "text",
+        ctypes.POINTER(ctypes.c_ubyte): "bytes",
+        ctypes.POINTER(ctypes.c_int): "ints",
+    }
     if isinstance(t, type) and issubclass(t, ctypes._CFuncPtr):
         return "function"
     return kinds.get(t, f"unknown ctypes type {t!r}")
@@ -77,8 +97,11 @@ def test_the_header_parser_finds_what_it_should():
 
 
 def test_every_declared_function_has_a_wrapper(eye):
-    missing = [name for name in declarations()
-               if name not in C_ONLY and (not callable(getattr(eye, name, None)) or name not in eye.__all__)]
+    missing = [
+        name
+        for name in declarations()
+        if name not in C_ONLY and (not callable(getattr(eye, name, None)) or name not in eye.__all__)
+    ]
     assert not missing, f"eyebot.h functions without a Python wrapper in eye: {missing}"
 
 
@@ -109,7 +132,8 @@ def test_every_wrapper_has_type_hints_and_a_docstring(eye):
             continue
         signature = inspect.signature(function)
         hinted = signature.return_annotation is not inspect.Signature.empty and all(
-            p.annotation is not inspect.Parameter.empty for p in signature.parameters.values())
+            p.annotation is not inspect.Parameter.empty for p in signature.parameters.values()
+        )
         if not hinted or not (function.__doc__ or "").strip():
             lacking.append(name)
     assert not lacking, f"without type hints or docstring: {lacking}"
@@ -131,8 +155,10 @@ def test_every_constant_has_the_header_value(eye, compiler, tmp_path):
             lines.append(f'printf("{name} %s\\n", {name});')
         else:
             lines.append(f'printf("{name} %lld\\n", (long long)({name}));')
-    exe = compiler.build('#include "eyebot.h"\n#include <stdio.h>\nint main(void)\n{\n' + "\n".join(lines)
-                         + "\nreturn 0;\n}\n", name="constants")
+    exe = compiler.build(
+        '#include "eyebot.h"\n#include <stdio.h>\nint main(void)\n{\n' + "\n".join(lines) + "\nreturn 0;\n}\n",
+        name="constants",
+    )
     printed = subprocess.run([str(exe)], capture_output=True, text=True, check=True).stdout.splitlines()
     wrong = []
     for line in printed:

@@ -76,8 +76,9 @@ def test_lcd(run_python, tmp_path):
     assert out["pos-eye.py"] == ["0", "2", "7"]
     assert out["settings"] == ["0"] * 6 + ["1"]
     assert out["image"] == out["gray"] == out["binary"] == out["signed"] == ["0"]
-    assert " ".join(out["short"]) == ("LCDImage: the image has 19200 bytes, but 46080 are needed "
-                                      "(a 128 x 120 image, LCDImageStart/LCDImageSize)")
+    assert " ".join(out["short"]) == (
+        "LCDImage: the image has 19200 bytes, but 46080 are needed (a 128 x 120 image, LCDImageStart/LCDImageSize)"
+    )
     shown = screen(run)
     np.testing.assert_array_equal(shown[120:240, 0:160], np.load(tmp_path / "colour.npy"))
     np.testing.assert_array_equal(shown[120:240, 160:320], np.repeat(np.load(tmp_path / "gray.npy")[..., None], 3, 2))
@@ -103,10 +104,17 @@ KEYS = """
 
 
 def test_keys_and_touches(run_python):
-    run = run_python(KEYS, inputs=[(0.1, lambda s: robot_input.key(s, 1, KEY1)), (0.2, lambda s: robot_input.key(s, 1, KEY3)),
-                                   (0.3, lambda s: robot_input.key(s, 1, KEY2)), (0.4, lambda s: robot_input.key(s, 1, KEY4)),
-                                   (0.5, lambda s: robot_input.touch(s, 1, 123, 45)),
-                                   (0.7, lambda s: robot_input.touch(s, 1, 7, 8))])
+    run = run_python(
+        KEYS,
+        inputs=[
+            (0.1, lambda s: robot_input.key(s, 1, KEY1)),
+            (0.2, lambda s: robot_input.key(s, 1, KEY3)),
+            (0.3, lambda s: robot_input.key(s, 1, KEY2)),
+            (0.4, lambda s: robot_input.key(s, 1, KEY4)),
+            (0.5, lambda s: robot_input.touch(s, 1, 123, 45)),
+            (0.7, lambda s: robot_input.touch(s, 1, 7, 8)),
+        ],
+    )
     assert_ended_cleanly(run)
     out = run.output()
     assert out["read"] == ["0"]
@@ -235,9 +243,14 @@ IRTV = """
 
 
 def test_ir_remote(run_python):
-    run = run_python(IRTV, inputs=[(0.2, lambda s: robot_input.irtv(s, 1, ord("5"))),
-                                   (0.3, lambda s: robot_input.irtv(s, 1, ord("O"))),
-                                   (0.3, lambda s: robot_input.irtv(s, 1, ord("9")))])
+    run = run_python(
+        IRTV,
+        inputs=[
+            (0.2, lambda s: robot_input.irtv(s, 1, ord("5"))),
+            (0.3, lambda s: robot_input.irtv(s, 1, ord("O"))),
+            (0.3, lambda s: robot_input.irtv(s, 1, ord("9"))),
+        ],
+    )
     assert_ended_cleanly(run)
     out = run.output()
     assert out["read"][0] == "0" and out["read"][1] in ("0", "1")
@@ -371,5 +384,10 @@ def test_a_field_longer_than_the_simulator_takes_is_refused_with_its_limit(run_p
     assert_ended_cleanly(run)
     out = run.output()
     assert out["long"] == ["1", "1"] and out["longest"] == ["0"]
-    assert "eyesim: LCDPrintf: text of 65537 bytes is too large (the simulator takes at most 65536)" in run.results[1].stderr
-    assert "eyesim: SERSend: data of 65537 bytes is too large (the simulator takes at most 65536)" in run.results[1].stderr
+    assert (
+        "eyesim: LCDPrintf: text of 65537 bytes is too large (the simulator takes at most 65536)"
+        in run.results[1].stderr
+    )
+    assert (
+        "eyesim: SERSend: data of 65537 bytes is too large (the simulator takes at most 65536)" in run.results[1].stderr
+    )

@@ -42,8 +42,15 @@ def test_every_kind_of_buffer_is_accepted(ip):
     gray = step_image()
     expected = bytes(ip.IPLaplace(gray))
     signed = (ctypes.c_byte * gray.size)(*[v - 256 if v > 127 else v for v in gray.flatten().tolist()])
-    for kind in (gray, gray.tobytes(), bytearray(gray.tobytes()), memoryview(gray.tobytes()), signed,
-                 gray.flatten().tolist(), (ctypes.c_ubyte * gray.size).from_buffer_copy(gray.tobytes())):
+    for kind in (
+        gray,
+        gray.tobytes(),
+        bytearray(gray.tobytes()),
+        memoryview(gray.tobytes()),
+        signed,
+        gray.flatten().tolist(),
+        (ctypes.c_ubyte * gray.size).from_buffer_copy(gray.tobytes()),
+    ):
         assert bytes(ip.IPLaplace(kind)) == expected, type(kind)
 
 
@@ -68,8 +75,7 @@ def test_colour_conversions(ip):
     assert [h[0], s[0], i[0]] == ip.IPPRGB2HSI(*rgb[0, 0].tolist())
     top = np.zeros_like(rgb)
     top[:60] = 255
-    np.testing.assert_array_equal(as_array(ip.IPOverlay(rgb, top), (120, 160, 3)),
-                                  np.concatenate([top[:60], rgb[60:]]))
+    np.testing.assert_array_equal(as_array(ip.IPOverlay(rgb, top), (120, 160, 3)), np.concatenate([top[:60], rgb[60:]]))
     marked = as_array(ip.IPOverlayGray(step_image(), step_image(), ip.RED), (120, 160, 3))
     assert tuple(marked[0, 100]) == (255, 0, 0) and tuple(marked[0, 10]) == (0, 0, 0)
 
@@ -111,18 +117,24 @@ def test_the_ip_size_decides_the_buffer_sizes(ip):
     assert len(ip.IPCol2Gray(bytes(160 * 120 * 3))) == 160 * 120
     assert ip.IPSetSize(ip.QVGA) == 0
     assert len(ip.IPGray2Col(bytes(320 * 240))) == 320 * 240 * 3
-    with pytest.raises(ValueError, match=r"IPGray2Col: the gray image has 19200 bytes, but 76800 are needed "
-                                         r"\(the IP size is 320 x 240\)"):
+    with pytest.raises(
+        ValueError,
+        match=r"IPGray2Col: the gray image has 19200 bytes, but 76800 are needed "
+        r"\(the IP size is 320 x 240\)",
+    ):
         ip.IPGray2Col(bytes(160 * 120))
 
 
-@pytest.mark.parametrize("call,error,message", [
-    (lambda ip: ip.IPLaplace("image"), TypeError, "IPLaplace: the gray image must be an image buffer"),
-    (lambda ip: ip.IPLaplace(None), TypeError, "IPLaplace: the gray image must be an image buffer"),
-    (lambda ip: ip.IPLaplace(bytes(19200), bytes(19200)), TypeError, "the output image must be a writable"),
-    (lambda ip: ip.IPLaplace(bytes(19200), bytearray(10)), ValueError, "the output image has 10 bytes"),
-    (lambda ip: ip.IPCol2Gray([1, 2, 3]), ValueError, "the colour image has 3 bytes, but 57600"),
-])
+@pytest.mark.parametrize(
+    "call,error,message",
+    [
+        (lambda ip: ip.IPLaplace("image"), TypeError, "IPLaplace: the gray image must be an image buffer"),
+        (lambda ip: ip.IPLaplace(None), TypeError, "IPLaplace: the gray image must be an image buffer"),
+        (lambda ip: ip.IPLaplace(bytes(19200), bytes(19200)), TypeError, "the output image must be a writable"),
+        (lambda ip: ip.IPLaplace(bytes(19200), bytearray(10)), ValueError, "the output image has 10 bytes"),
+        (lambda ip: ip.IPCol2Gray([1, 2, 3]), ValueError, "the colour image has 3 bytes, but 57600"),
+    ],
+)
 def test_bad_buffers_raise_clear_errors(ip, call, error, message):
     with pytest.raises(error, match=message):
         call(ip)

@@ -40,15 +40,15 @@ def write_program(directory, source: str, name: str = "prog.py"):
 def program_output(result, robot: int = 1) -> list[str]:
     """What the robot's program printed, without the simulator's prefix."""
     prefix = f"[robot {robot}] "
-    return [line[len(prefix):] for line in result.stdout.splitlines() if line.startswith(prefix)]
+    return [line[len(prefix) :] for line in result.stdout.splitlines() if line.startswith(prefix)]
 
 
 def test_a_python_program_named_in_a_sim_file_drives_s4(robios_prefix, tmp_path):
     write_program(tmp_path, DRIVE, "drive.py")
-    (tmp_path / "lab.sim").write_text("# a Python program, started by the simulator\n"
-                                      "world scenes/arena.wld\nS4 500 500 0 drive.py\n")
-    result = run_headless("lab.sim", "--key", "1:KEY2@0.5", "--record", "path.csv", "--save-lcd", "lcd",
-                          cwd=tmp_path)
+    (tmp_path / "lab.sim").write_text(
+        "# a Python program, started by the simulator\nworld scenes/arena.wld\nS4 500 500 0 drive.py\n"
+    )
+    result = run_headless("lab.sim", "--key", "1:KEY2@0.5", "--record", "path.csv", "--save-lcd", "lcd", cwd=tmp_path)
     assert result.returncode == 0, result.stdout + result.stderr
     assert "program drive.py: exit code 0" in result.stdout
     done = next(line for line in program_output(result) if line.startswith("done")).split()
@@ -59,10 +59,10 @@ def test_a_python_program_named_in_a_sim_file_drives_s4(robios_prefix, tmp_path)
     assert math.hypot(end["x"] - start["x"] - 0.300, end["y"] - start["y"]) < 0.010  # 300 mm east, true pose
 
     lcd = np.asarray(Image.open(tmp_path / "lcd" / "robot1-lcd.png").convert("RGB"))
-    text = lcd[:HEIGHT - MENU_HEIGHT]
+    text = lcd[: HEIGHT - MENU_HEIGHT]
     lit_rows = np.flatnonzero((text > 128).any(axis=(1, 2)))
     assert lit_rows.size and lit_rows.max() - lit_rows.min() > 20  # three printed lines
-    assert (lcd[HEIGHT - MENU_HEIGHT:] > 0).any()  # and the menu bar
+    assert (lcd[HEIGHT - MENU_HEIGHT :] > 0).any()  # and the menu bar
 
 
 def test_a_failing_python_program_fails_the_run(robios_prefix, tmp_path):
@@ -116,10 +116,13 @@ def test_python_programs_reach_each_group_of_the_c_library(robios_prefix, tmp_pa
     assert out["unknown"] == ["None"]
 
 
-@pytest.mark.parametrize("call,message", [
-    ("IPLaplace(b'123')", "IPLaplace: the gray image has 3 bytes, but 76800 are needed (the IP size is 320 x 240)"),
-    ("OSAttachTimer(100, 5)", "OSAttachTimer: the timer function must be callable, not int"),
-])
+@pytest.mark.parametrize(
+    "call,message",
+    [
+        ("IPLaplace(b'123')", "IPLaplace: the gray image has 3 bytes, but 76800 are needed (the IP size is 320 x 240)"),
+        ("OSAttachTimer(100, 5)", "OSAttachTimer: the timer function must be callable, not int"),
+    ],
+)
 def test_bad_arguments_raise_clear_python_errors(robios_prefix, tmp_path, call, message):
     program = write_program(tmp_path, f"from eye import *\n{call}\n")
     result = run_headless("--program", f"1={program}", cwd=tmp_path)

@@ -21,12 +21,44 @@ def dask_cluster(tmp_path):
 
     scheduler_file = tmp_path / "scheduler.json"
     common = ["--no-dashboard"]
-    scheduler = subprocess.Popen([sys.executable, "-m", "dask", "scheduler", "--host", "127.0.0.1", "--port", "0",
-                                  "--scheduler-file", str(scheduler_file), *common],
-                                 cwd=tmp_path, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    workers = subprocess.Popen([sys.executable, "-m", "dask", "worker", "--scheduler-file", str(scheduler_file),
-                                "--nworkers", "2", "--nthreads", "1", "--host", "127.0.0.1", *common],
-                               cwd=tmp_path, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    scheduler = subprocess.Popen(
+        [
+            sys.executable,
+            "-m",
+            "dask",
+            "scheduler",
+            "--host",
+            "127.0.0.1",
+            "--port",
+            "0",
+            "--scheduler-file",
+            str(scheduler_file),
+            *common,
+        ],
+        cwd=tmp_path,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+    )
+    workers = subprocess.Popen(
+        [
+            sys.executable,
+            "-m",
+            "dask",
+            "worker",
+            "--scheduler-file",
+            str(scheduler_file),
+            "--nworkers",
+            "2",
+            "--nthreads",
+            "1",
+            "--host",
+            "127.0.0.1",
+            *common,
+        ],
+        cwd=tmp_path,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+    )
     try:
         for _ in range(600):  # the scheduler writes its file when it listens
             if scheduler_file.exists() and scheduler_file.stat().st_size:
@@ -54,8 +86,9 @@ def test_the_lab_graded_on_a_dask_cluster_equals_the_local_grading(lab, graded_l
     assert result.returncode == 0, result.stdout + result.stderr
     report = json.loads((out / "report.json").read_text())
     assert report["executor"] == f"Dask cluster {dask_cluster} (2 worker(s))"
-    assert [(s["name"], s["score"]) for s in report["students"]] == \
-        [(s["name"], s["score"]) for s in local_report["students"]]
+    assert [(s["name"], s["score"]) for s in report["students"]] == [
+        (s["name"], s["score"]) for s in local_report["students"]
+    ]
     compared = 0
     for student, local_student in zip(report["students"], local_report["students"]):
         for case, local_case in zip(student["cases"], local_student["cases"]):
@@ -68,9 +101,12 @@ def test_the_lab_graded_on_a_dask_cluster_equals_the_local_grading(lab, graded_l
 
 
 def test_a_cluster_that_cannot_be_reached_or_a_bad_local_size_is_a_usage_error(lab, tmp_path):
-    for address, message in (("local:zero", "expected local:N with N workers"),
-                             ("tcp://127.0.0.1:9", "cannot reach the Dask scheduler at tcp://127.0.0.1:9")):
-        result = grade(str(LAB_SPEC), str(lab[0]), "--out", str(tmp_path / "out"), "--cluster", address,
-                       cwd=tmp_path, timeout=120)
+    for address, message in (
+        ("local:zero", "expected local:N with N workers"),
+        ("tcp://127.0.0.1:9", "cannot reach the Dask scheduler at tcp://127.0.0.1:9"),
+    ):
+        result = grade(
+            str(LAB_SPEC), str(lab[0]), "--out", str(tmp_path / "out"), "--cluster", address, cwd=tmp_path, timeout=120
+        )
         assert result.returncode == 2 and message in result.stderr, result.stderr
         assert "Traceback" not in result.stderr

@@ -28,15 +28,20 @@ def test_the_sandbox_attacks_fail_on_dask_workers_as_they_do_locally(tmp_path):
     write_submission(submissions, "alice", HONEST % ("SECRET_ALICE", 250))
     host_tmp = Path("/tmp") / f"eyesim-attack-{uuid.uuid4().hex}"
     marker = f"{os.getpid() % 1000}.{uuid.uuid4().int % 100000:05d}"
-    values = {"alice": str(submissions / "alice" / "prog.c"), "alice_dir": str(submissions / "alice"),
-              "out": str(out), "grader": str(os.getpid()), "host_tmp": str(host_tmp), "marker": marker}
+    values = {
+        "alice": str(submissions / "alice" / "prog.c"),
+        "alice_dir": str(submissions / "alice"),
+        "out": str(out),
+        "grader": str(os.getpid()),
+        "host_tmp": str(host_tmp),
+        "marker": marker,
+    }
     for name, source in HOSTILE.items():
         for key, value in values.items():
             source = source.replace("{" + key + "}", value)
         write_submission(submissions, f"hostile_{name}", source)
 
-    done = grade(str(tmp_path / "spec.toml"), str(submissions), "--out", str(out), "--cluster", "local:2",
-                 cwd=tmp_path)
+    done = grade(str(tmp_path / "spec.toml"), str(submissions), "--out", str(out), "--cluster", "local:2", cwd=tmp_path)
     assert done.returncode == 0, done.stdout + done.stderr
     report = json.loads((out / "report.json").read_text())
     assert report["executor"] == "Dask cluster local:2 (2 worker(s))"

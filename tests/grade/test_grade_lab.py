@@ -43,14 +43,18 @@ def test_failures_carry_their_evidence(graded_lab):
 
     broken = case(students["compile_error"])
     assert broken["status"] == "compile_error"
-    assert "wall_follow.c:" in broken["build"]["follower"]["output"] and "error" in broken["build"]["follower"]["output"]
+    assert (
+        "wall_follow.c:" in broken["build"]["follower"]["output"] and "error" in broken["build"]["follower"]["output"]
+    )
     assert "/tmp" not in broken["build"]["follower"]["output"]  # names the student's file, not our directory
     assert all(c["message"] == "not run: program 'follower' does not compile" for c in broken["checks"])
 
     misnamed = case(students["misnamed"])
     assert misnamed["status"] == "missing_sources"
-    assert "no file matching 'wall_follow.c' in the submission (its files: wallfollow.c)" in \
-        misnamed["build"]["follower"]["output"]
+    assert (
+        "no file matching 'wall_follow.c' in the submission (its files: wallfollow.c)"
+        in misnamed["build"]["follower"]["output"]
+    )
 
     crash = case(students["crash"])
     assert crash["status"] == "crashed" and crash["programs"]["1"]["crashed"]
@@ -81,7 +85,9 @@ def test_reports_json_junit_html_and_images(graded_lab):
     failed = sum(not c["passed"] for s in report["students"] for k in s["cases"] for c in k["checks"])
     assert int(suites.get("failures")) == failed - 20
     crash = next(s for s in suites if s.get("name") == "crash")
-    assert any(f.get("message", "").startswith("robot 1's program was killed by SIGSEGV") for f in crash.iter("failure"))
+    assert any(
+        f.get("message", "").startswith("robot 1's program was killed by SIGSEGV") for f in crash.iter("failure")
+    )
     html = (out / "index.html").read_text()
     assert "<td class='score total'>100.0</td>" in html and "compile error</span>" in html
     for name in ("robot1-lcd.png", "trajectory.png"):

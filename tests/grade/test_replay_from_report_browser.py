@@ -18,6 +18,7 @@ from browser import chromium_available, launch_browser  # noqa: E402
 
 pytestmark = pytest.mark.browser
 
+
 def test_a_failing_case_is_replayed_from_the_report(tmp_path):
     assert chromium_available(), "the browser tests need Chromium at /usr/bin/chromium"
     out = grade_class(tmp_path, ARRIVE_SPEC, {"good": ARRIVES, "lost": GETS_LOST})
@@ -27,8 +28,12 @@ def test_a_failing_case_is_replayed_from_the_report(tmp_path):
     assert lost["score"] == 0 and "case.mcap" in lost["files"]
     assert good["score"] == 1 and "case.mcap" not in good["files"]  # only failed cases keep theirs
 
-    server = subprocess.Popen(eyesim_command("replay", str(out), "--viewer-port", "0"), stdout=subprocess.PIPE,
-                              stderr=subprocess.PIPE, text=True)
+    server = subprocess.Popen(
+        eyesim_command("replay", str(out), "--viewer-port", "0"),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
     try:
         report_url = re.search(r"(http://\S+)", server.stdout.readline()).group(1)
         with launch_browser() as context:
@@ -42,8 +47,10 @@ def test_a_failing_case_is_replayed_from_the_report(tmp_path):
             page.screenshot(path=str(tmp_path / "report-badges.png"))
             print(f"screenshot: {tmp_path / 'report-badges.png'}")
             page.locator("#student-lost a.replay-link").click()
-            page.wait_for_function("() => window.eyesimViewer?.connectionState() === 'open' && "
-                                   "window.eyesimViewer.timeline()?.mode === 'replay'")
+            page.wait_for_function(
+                "() => window.eyesimViewer?.connectionState() === 'open' && "
+                "window.eyesimViewer.timeline()?.mode === 'replay'"
+            )
             shown = page.evaluate("() => window.eyesimViewer.timeline()")
             assert shown["end"] == pytest.approx(lost["end"]["time"], abs=0.05)  # the lost student's run
             assert page.evaluate("() => window.eyesimViewer.robotIds()") == [1]

@@ -23,8 +23,10 @@ def test_the_report_shows_every_students_score_and_images(graded_lab, tmp_path):
         page.goto((out / "index.html").as_uri())
         rows = page.locator("#scores tbody tr")
         assert rows.count() == len(report["students"]) == 7
-        shown = {rows.nth(i).locator("td").nth(0).inner_text(): rows.nth(i).locator("td.total").inner_text()
-                 for i in range(rows.count())}
+        shown = {
+            rows.nth(i).locator("td").nth(0).inner_text(): rows.nth(i).locator("td.total").inner_text()
+            for i in range(rows.count())
+        }
         assert shown == {s["name"]: f"{s['score']:.1f}" for s in report["students"]}
         assert shown["good"] == "100.0" and shown["compile_error"] == "0.0"
         assert "compile error" in page.locator("tr[data-student='compile_error']").inner_text()

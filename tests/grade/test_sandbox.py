@@ -130,8 +130,14 @@ def classes(tmp_path_factory):
     out_alone, out_mixed = root / "out-alone", root / "out-mixed"
     host_tmp = Path("/tmp") / f"eyesim-attack-{uuid.uuid4().hex}"
     marker = f"{os.getpid() % 1000}.{uuid.uuid4().int % 100000:05d}"
-    values = {"alice": str(mixed / "alice" / "prog.c"), "alice_dir": str(mixed / "alice"), "out": str(out_mixed),
-              "grader": str(os.getpid()), "host_tmp": str(host_tmp), "marker": marker}
+    values = {
+        "alice": str(mixed / "alice" / "prog.c"),
+        "alice_dir": str(mixed / "alice"),
+        "out": str(out_mixed),
+        "grader": str(os.getpid()),
+        "host_tmp": str(host_tmp),
+        "marker": marker,
+    }
     for name, source in HOSTILE.items():
         for key, value in values.items():
             source = source.replace("{" + key + "}", value)
@@ -139,9 +145,14 @@ def classes(tmp_path_factory):
     for submissions, out in ((alone, out_alone), (mixed, out_mixed)):
         done = grade(str(root / "spec.toml"), str(submissions), "--out", str(out), "--workers", "2", cwd=root)
         assert done.returncode == 0, done.stdout + done.stderr
-    return {"alone": json.loads((out_alone / "report.json").read_text()),
-            "mixed": json.loads((out_mixed / "report.json").read_text()),
-            "out": out_mixed, "mixed_dir": mixed, "host_tmp": host_tmp, "marker": marker}
+    return {
+        "alone": json.loads((out_alone / "report.json").read_text()),
+        "mixed": json.loads((out_mixed / "report.json").read_text()),
+        "out": out_mixed,
+        "mixed_dir": mixed,
+        "host_tmp": host_tmp,
+        "marker": marker,
+    }
 
 
 def case_of(report: dict, student: str) -> dict:
@@ -230,8 +241,15 @@ def test_one_case_leaves_nothing_for_the_next(tmp_path):
     (tmp_path / "spec.toml").write_text(SPEC)
     write_submission(tmp_path / "class", "a_leaver", LEAVER)
     write_submission(tmp_path / "class", "b_finder", FINDER)
-    done = grade(str(tmp_path / "spec.toml"), str(tmp_path / "class"), "--out", str(tmp_path / "out"),
-                 "--workers", "1", cwd=tmp_path)
+    done = grade(
+        str(tmp_path / "spec.toml"),
+        str(tmp_path / "class"),
+        "--out",
+        str(tmp_path / "out"),
+        "--workers",
+        "1",
+        cwd=tmp_path,
+    )
     assert done.returncode == 0, done.stdout + done.stderr
     report = json.loads((tmp_path / "out" / "report.json").read_text())
     assert lcd(report, "a_leaver") == "left 1 done"  # only in its own folder

@@ -27,8 +27,11 @@ def test_a_flood_of_blocking_calls_is_held_back_and_others_go_on():
             assert honest.call("PSD_GET", 1)[0] > 0
 
         held = []
-        sim.call(lambda s: held.append(max((len(x.pending) + len(x.queued), len(x.pending), len(x.queued))
-                                           for x in s.sessions)))
+        sim.call(
+            lambda s: held.append(
+                max((len(x.pending) + len(x.queued), len(x.pending), len(x.queued)) for x in s.sessions)
+            )
+        )
         deadline = time.monotonic() + 10
         while not held:
             assert time.monotonic() < deadline

@@ -17,7 +17,6 @@ from support.scenes import arena
 from support.simulator import running_simulation
 
 
-
 def wait_until(condition, timeout: float = 30.0) -> None:
     deadline = time.monotonic() + timeout
     while not condition():
@@ -78,9 +77,13 @@ def test_running_out_of_descriptors_rests_instead_of_spinning(tmp_path):
     listener it cannot serve, and programs get in again once sockets are closed."""
     log_path = tmp_path / "simulator.log"
     with open(log_path, "w") as log_file:
-        simulator = subprocess.Popen(eyesim_command("run", "--headless", "--clock", "realtime", "--port", "0"),
-                                     stdout=subprocess.PIPE, stderr=log_file, text=True,
-                                     preexec_fn=lambda: resource.setrlimit(resource.RLIMIT_NOFILE, (64, 64)))
+        simulator = subprocess.Popen(
+            eyesim_command("run", "--headless", "--clock", "realtime", "--port", "0"),
+            stdout=subprocess.PIPE,
+            stderr=log_file,
+            text=True,
+            preexec_fn=lambda: resource.setrlimit(resource.RLIMIT_NOFILE, (64, 64)),
+        )
     held = []
     try:
         port = None

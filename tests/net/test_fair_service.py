@@ -24,8 +24,9 @@ def simulation():
 
 
 def _pipeline(client: ProgramClient, name: str, count: int, *args) -> None:
-    frames = b"".join(encode_message(g.OPS_BY_NAME[name].code, g.KIND_REQUEST, client.next_id + 1 + i, args)
-                      for i in range(count))
+    frames = b"".join(
+        encode_message(g.OPS_BY_NAME[name].code, g.KIND_REQUEST, client.next_id + 1 + i, args) for i in range(count)
+    )
     client.next_id += count
     client.sock.sendall(frames)
 
@@ -72,8 +73,9 @@ def test_handshakes_go_through_while_a_program_floods(simulation):
     assert all(client.call("OS_GET_COUNT")[0] >= 0 for client in others)
 
 
-def test_a_program_that_stops_reading_is_held_back_then_dropped_and_its_memory_returned(simulation, caplog,
-                                                                                      monkeypatch):
+def test_a_program_that_stops_reading_is_held_back_then_dropped_and_its_memory_returned(
+    simulation, caplog, monkeypatch
+):
     sim, port = simulation
     monkeypatch.setattr(program_server, "STALL_TIMEOUT", 1.0)
     reader, sleeper = ProgramClient(port), ProgramClient(port)

@@ -23,7 +23,9 @@ def test_every_limited_field_is_refused_one_byte_over_its_limit():
     with connected_program() as (sim, client):
         for op, index, most in limited:
             name = op.request[index][0]
-            with pytest.raises(RemoteError, match=rf"{name}: {most + 1} bytes is too large \(at most {most}\)") as refused:
+            with pytest.raises(
+                RemoteError, match=rf"{name}: {most + 1} bytes is too large \(at most {most}\)"
+            ) as refused:
                 client.call(op.name, *_args(op, index, most + 1))
             assert refused.value.code == g.ERR_BAD_ARGUMENT
         assert client.call("LCD_PRINTF", "x" * g.OPS[g.OP_LCD_PRINTF].lengths[0][1]) == (0,)  # the limit itself

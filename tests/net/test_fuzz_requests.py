@@ -31,8 +31,13 @@ SEED = os.environ.get("FUZZ_SEED")
 
 
 def fuzz_settings(test):
-    test = settings(max_examples=EXAMPLES, deadline=None, derandomize=SEED is None, database=None,
-                    suppress_health_check=list(HealthCheck))(test)
+    test = settings(
+        max_examples=EXAMPLES,
+        deadline=None,
+        derandomize=SEED is None,
+        database=None,
+        suppress_health_check=list(HealthCheck),
+    )(test)
     return seed(int(SEED))(test) if SEED is not None else test
 
 
@@ -45,14 +50,39 @@ MEMORY_LIMIT_MB = 150
 def fuzz_scene():
     x1, y1, x2, y2 = ROOM
     room = (Wall(x1, y1, x2, y1), Wall(x2, y1, x2, y2), Wall(x2, y2, x1, y2), Wall(x1, y2, x1, y1))
-    return arena_scene([("S4", (500, 500, 0)), ("S4", ((x1 + x2) / 2, (y1 + y2) / 2, 0)),
-                        (example_robot("Picker"), (1500, 1500, 0))],
-                       objects=[("Can", (1000, 2500, 0))], size=4000, walls=room)
+    return arena_scene(
+        [("S4", (500, 500, 0)), ("S4", ((x1 + x2) / 2, (y1 + y2) / 2, 0)), (example_robot("Picker"), (1500, 1500, 0))],
+        objects=[("Can", (1000, 2500, 0))],
+        size=4000,
+        walls=room,
+    )
 
 
 # -- values ------------------------------------------------------------------------------------------
-EDGES = [0, 1, -1, 2, 7, 8, 16, 255, 256, 319, 320, 479, 480, 3600, 65535, 100_000, 10_000_000, 10_000_001,
-         INT_MAX, INT_MIN, INT_MAX - 1, INT_MIN + 1]
+EDGES = [
+    0,
+    1,
+    -1,
+    2,
+    7,
+    8,
+    16,
+    255,
+    256,
+    319,
+    320,
+    479,
+    480,
+    3600,
+    65535,
+    100_000,
+    10_000_000,
+    10_000_001,
+    INT_MAX,
+    INT_MIN,
+    INT_MAX - 1,
+    INT_MIN + 1,
+]
 i32 = st.sampled_from(EDGES) | st.integers(INT_MIN, INT_MAX)
 u32 = st.sampled_from([0, 1, 999_999_999, 1_000_000_000, INT_MAX, U32_MAX]) | st.integers(0, U32_MAX)
 
@@ -60,13 +90,20 @@ u32 = st.sampled_from([0, 1, 999_999_999, 1_000_000_000, INT_MAX, U32_MAX]) | st
 def big(kind):
     """Up to 200 kB of one repeated piece: sizes the handlers must stay quick with (the bench and
     tests/net/test_worst_requests.py take the 16 MiB ones)."""
-    pieces = ["x", "\n", "\t\n", "é", "\r", "\x00", "ID3", "\ud7ff"] if kind == "str" else \
-        [b"\x00", b"\xff", b"\xff\xfb\x90\x64", b"RIFF\x00\x00\x00\x00WAVE"]
-    return st.tuples(st.sampled_from(pieces), st.integers(0, 200_000)).map(lambda p: (p[0] * (p[1] // len(p[0]) + 1))[:p[1]])
+    pieces = (
+        ["x", "\n", "\t\n", "é", "\r", "\x00", "ID3", "\ud7ff"]
+        if kind == "str"
+        else [b"\x00", b"\xff", b"\xff\xfb\x90\x64", b"RIFF\x00\x00\x00\x00WAVE"]
+    )
+    return st.tuples(st.sampled_from(pieces), st.integers(0, 200_000)).map(
+        lambda p: (p[0] * (p[1] // len(p[0]) + 1))[: p[1]]
+    )
 
 
 FIELD = {
-    "i32": i32, "u32": u32, "f64": st.floats(),
+    "i32": i32,
+    "u32": u32,
+    "f64": st.floats(),
     "str": st.text(max_size=64) | big("str"),
     "bytes": st.binary(max_size=64) | big("bytes"),
     "i32s": st.lists(i32, max_size=64),
@@ -105,7 +142,7 @@ def mutated_frames(draw):
         for _ in range(draw(st.integers(1, 8))):
             body[draw(st.integers(8, len(body) - 1))] = draw(st.integers(0, 255))
     elif how == "cut":
-        del body[8 + draw(st.integers(0, len(body) - 8)):]
+        del body[8 + draw(st.integers(0, len(body) - 8)) :]
     else:
         body += draw(st.binary(min_size=1, max_size=64))
     return op, request_id, struct.pack("<I", len(body)) + bytes(body)
@@ -206,9 +243,14 @@ def test_fuzzed_requests_are_answered_and_harm_nobody(fuzz_target, robot, reques
     good.check()
 
 
-EXTREMES = {"i32": (0, INT_MAX, INT_MIN), "u32": (0, U32_MAX, U32_MAX), "f64": (0.0, 1e308, -1e308),
-            "str": ("", "\t\n" * 50_000, "\x00é"), "bytes": (b"", b"\xff" * 100_000, b"\x00"),
-            "i32s": ([], [INT_MAX] * 1000, [INT_MIN])}
+EXTREMES = {
+    "i32": (0, INT_MAX, INT_MIN),
+    "u32": (0, U32_MAX, U32_MAX),
+    "f64": (0.0, 1e308, -1e308),
+    "str": ("", "\t\n" * 50_000, "\x00é"),
+    "bytes": (b"", b"\xff" * 100_000, b"\x00"),
+    "i32s": ([], [INT_MAX] * 1000, [INT_MIN]),
+}
 
 
 @pytest.mark.parametrize("code", sorted(g.OPS), ids=lambda code: g.OPS[code].name)

@@ -38,7 +38,9 @@ def robot_taken(port: int) -> bool:
 
 
 def key_waits(count: int) -> bytes:
-    return encode_frame(g.OP_KEY_WAIT, g.KIND_REQUEST, 7, encode_payload(g.OPS[g.OP_KEY_WAIT].request, (FOREVER,))) * count
+    return (
+        encode_frame(g.OP_KEY_WAIT, g.KIND_REQUEST, 7, encode_payload(g.OPS[g.OP_KEY_WAIT].request, (FOREVER,))) * count
+    )
 
 
 def test_a_program_whose_waiting_calls_fill_its_cap_and_that_left_frees_its_robot():
@@ -46,8 +48,10 @@ def test_a_program_whose_waiting_calls_fill_its_cap_and_that_left_frees_its_robo
         flooder = ProgramClient(port)
         flooder.hello("1")
         flooder.sock.sendall(key_waits(MAX_QUEUED))
-        until(lambda: any(c.held() == MAX_QUEUED and not c.reading() for c in list(sim.network.connections)),
-              "the simulator holds the cap's worth of calls and stops reading")
+        until(
+            lambda: any(c.held() == MAX_QUEUED and not c.reading() for c in list(sim.network.connections)),
+            "the simulator holds the cap's worth of calls and stops reading",
+        )
         assert robot_taken(port)
         flooder.close()
         until(lambda: not robot_taken(port), "the robot is free again")

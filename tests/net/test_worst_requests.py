@@ -48,8 +48,9 @@ class WatchingBrowser:
 
 
 def test_the_worst_request_of_every_operation_is_answered_within_bounded_memory():
-    scene = arena_scene([("S4", (500, 500, 0)), (example_robot("Picker"), (1500, 1500, 0))],
-                        objects=[("Can", (1000, 1500, 0))])
+    scene = arena_scene(
+        [("S4", (500, 500, 0)), (example_robot("Picker"), (1500, 1500, 0))], objects=[("Can", (1000, 1500, 0))]
+    )
     with viewer_simulation(scene) as (sim, port, server):
         browser = WatchingBrowser(server.port)
         client = ProgramClient(port, timeout=60)

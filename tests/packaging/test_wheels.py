@@ -79,6 +79,7 @@ def dist_info(files: dict[str, bytes]) -> str:
 
 # ---- Binary formats, from their headers -------------------------------------------------------
 
+
 def elf_header(data: bytes) -> dict:
     assert data[:4] == b"\x7fELF", "not ELF"
     e_type, e_machine = struct.unpack_from("<HH", data, 16)
@@ -87,14 +88,15 @@ def elf_header(data: bytes) -> dict:
 
 def glibc_versions(data: bytes) -> set[tuple[int, ...]]:
     """The glibc symbol versions an ELF file asks for (their names are in its string table)."""
-    return {tuple(int(part) for part in match.split(b"."))
-            for match in re.findall(rb"\x00GLIBC_(\d+(?:\.\d+)+)\x00", data)}
+    return {
+        tuple(int(part) for part in match.split(b".")) for match in re.findall(rb"\x00GLIBC_(\d+(?:\.\d+)+)\x00", data)
+    }
 
 
 def pe_header(data: bytes) -> dict:
     assert data[:2] == b"MZ", "not a PE file"
     (offset,) = struct.unpack_from("<I", data, 0x3C)
-    assert data[offset:offset + 4] == b"PE\x00\x00", "no PE signature"
+    assert data[offset : offset + 4] == b"PE\x00\x00", "no PE signature"
     machine, _, _, _, _, _, characteristics = struct.unpack_from("<HHIIIHH", data, offset + 4)
     (optional_magic,) = struct.unpack_from("<H", data, offset + 24)
     return {"machine": machine, "dll": bool(characteristics & 0x2000), "pe32_plus": optional_magic == 0x20B}
@@ -110,7 +112,7 @@ def macho(data: bytes) -> dict:
         command, size = struct.unpack_from("<II", data, offset)
         if command in (LC_ID_DYLIB, LC_LOAD_DYLIB):
             (name_offset,) = struct.unpack_from("<I", data, offset + 8)
-            name = data[offset + name_offset:offset + size].split(b"\x00")[0].decode()
+            name = data[offset + name_offset : offset + size].split(b"\x00")[0].decode()
             if command == LC_ID_DYLIB:
                 info["id"] = name
             else:
@@ -128,6 +130,7 @@ def tag_macos_version(tag: str) -> tuple[int, int]:
 
 
 # ---- What every wheel is ----------------------------------------------------------------------
+
 
 def test_one_wheel_per_system(wheels):
     assert set(wheels) == set(EXPECTED)
@@ -175,15 +178,21 @@ def test_wheel_has_the_package(wheels, name):
     """Every file of the eyesim and eye packages (Python modules, viewer bundle, scenes, robots)
     and the headers, and nothing outside the packages and the dist-info."""
     files = wheel_files(wheels[name])
-    tracked = subprocess.run(["git", "ls-files", "src/eyesim", "src/eye"], cwd=ROOT, capture_output=True,
-                             text=True, check=True).stdout.split()
+    tracked = subprocess.run(
+        ["git", "ls-files", "src/eyesim", "src/eye"], cwd=ROOT, capture_output=True, text=True, check=True
+    ).stdout.split()
     expected = {path.removeprefix("src/") for path in tracked if (ROOT / path).is_file()}
     assert expected, "git lists no package files"
     missing = expected - set(files)
     assert not missing, f"missing from the wheel: {sorted(missing)[:10]}"
-    for required in ("eyesim/web/static/index.html", "eye/_prototypes.py", "eyesim/paths.py",
-                     "eyesim/protocol/viewer.schema.json",
-                     f"{LIBRARY_DIR}/include/eyebot.h", f"{LIBRARY_DIR}/include/eyebot++.h"):
+    for required in (
+        "eyesim/web/static/index.html",
+        "eye/_prototypes.py",
+        "eyesim/paths.py",
+        "eyesim/protocol/viewer.schema.json",
+        f"{LIBRARY_DIR}/include/eyebot.h",
+        f"{LIBRARY_DIR}/include/eyebot++.h",
+    ):
         assert required in files
     assert any(file.startswith("eyesim/web/static/assets/") for file in files)
     assert any(file.startswith("eyesim/data/scenes/") for file in files)
@@ -191,8 +200,11 @@ def test_wheel_has_the_package(wheels, name):
     info = dist_info(files)
     assert {file.split("/")[0] for file in files} == {"eyesim", "eye", info}
     # Nothing compiled but the C library (the py3-none tag says the files suit any Python 3).
-    compiled = [file for file in files if file.endswith((".so", ".pyd", ".dll", ".dylib"))
-                and not file.startswith(f"{LIBRARY_DIR}/lib/")]
+    compiled = [
+        file
+        for file in files
+        if file.endswith((".so", ".pyd", ".dll", ".dylib")) and not file.startswith(f"{LIBRARY_DIR}/lib/")
+    ]
     assert not compiled
 
 
@@ -217,8 +229,11 @@ def test_metadata_keeps_dependencies_and_markers(wheels, name):
     got = {str(Requirement(text)) for text in metadata.get_all("Requires-Dist")}
     assert got == wanted
     assert set(metadata.get_all("Provides-Extra")) == set(declared["optional-dependencies"])
-    ziglang = [Requirement(text) for text in metadata.get_all("Requires-Dist")
-               if Requirement(text).name == "ziglang" and "extra" not in str(Requirement(text).marker)]
+    ziglang = [
+        Requirement(text)
+        for text in metadata.get_all("Requires-Dist")
+        if Requirement(text).name == "ziglang" and "extra" not in str(Requirement(text).marker)
+    ]
     assert len(ziglang) == 1 and ziglang[0].marker is not None
     assert ziglang[0].marker.evaluate({"sys_platform": "win32"})
     assert ziglang[0].marker.evaluate({"sys_platform": "darwin"})
@@ -233,6 +248,7 @@ def project() -> dict:
 
 
 # ---- The libraries ----------------------------------------------------------------------------
+
 
 def library(wheels, name: str) -> bytes:
     return wheel_files(wheels[name])[f"{LIBRARY_DIR}/lib/{EXPECTED[name][1]}"]
@@ -287,9 +303,27 @@ def test_pip_refuses_a_wheel_of_another_platform(wheels, tmp_path):
 
 def pip_dry_run(wheel: Path, platform: str, tmp_path: Path) -> subprocess.CompletedProcess:
     return subprocess.run(
-        [sys.executable, "-m", "pip", "install", "--dry-run", "--only-binary=:all:", "--platform", platform,
-         "--python-version", "3.13", "--no-deps", "--no-index", "--target", str(tmp_path / "target"), str(wheel)],
-        capture_output=True, text=True, timeout=300)
+        [
+            sys.executable,
+            "-m",
+            "pip",
+            "install",
+            "--dry-run",
+            "--only-binary=:all:",
+            "--platform",
+            platform,
+            "--python-version",
+            "3.13",
+            "--no-deps",
+            "--no-index",
+            "--target",
+            str(tmp_path / "target"),
+            str(wheel),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
 
 
 PROGRAM = r"""
@@ -312,19 +346,51 @@ def test_linux_wheel_installed_finds_its_library_and_links_programs(wheels, tmp_
     venv = tmp_path / "venv"
     subprocess.run([sys.executable, "-m", "venv", "--without-pip", str(venv)], check=True)
     python = venv / "bin" / "python"
-    subprocess.run([sys.executable, "-m", "pip", "--python", str(python), "install", "--quiet", "--no-deps",
-                    "--no-index", str(wheels["linux-x86_64"])], check=True, timeout=300)
-    site = Path(subprocess.run([str(python), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
-                               capture_output=True, text=True, check=True).stdout.strip())
-    here = subprocess.run([sys.executable, "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
-                          capture_output=True, text=True, check=True).stdout.strip()
+    subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "pip",
+            "--python",
+            str(python),
+            "install",
+            "--quiet",
+            "--no-deps",
+            "--no-index",
+            str(wheels["linux-x86_64"]),
+        ],
+        check=True,
+        timeout=300,
+    )
+    site = Path(
+        subprocess.run(
+            [str(python), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
+            capture_output=True,
+            text=True,
+            check=True,
+        ).stdout.strip()
+    )
+    here = subprocess.run(
+        [sys.executable, "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout.strip()
     (site / "test-environment.pth").write_text(here + "\n")
     env = {key: value for key, value in os.environ.items() if key != "EYESIM_ROBIOS"}
 
     check = subprocess.run(
-        [str(python), "-c", "import eye, eye._library as l; print(l.library_path()); print(eye.__file__); "
-                            "print(l.lib.VWSetSpeed is not None)"],
-        capture_output=True, text=True, env=env, timeout=120)
+        [
+            str(python),
+            "-c",
+            "import eye, eye._library as l; print(l.library_path()); print(eye.__file__); "
+            "print(l.lib.VWSetSpeed is not None)",
+        ],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=120,
+    )
     assert check.returncode == 0, check.stderr
     library_path, eye_file, bound = check.stdout.split("\n")[:3]
     assert Path(library_path) == site / LIBRARY_DIR / "lib" / "libeyesim.so"
@@ -332,8 +398,14 @@ def test_linux_wheel_installed_finds_its_library_and_links_programs(wheels, tmp_
     assert bound == "True"
 
     (tmp_path / "prog.c").write_text(PROGRAM)
-    compiled = subprocess.run([str(venv / "bin" / "eyesim"), "cc", "-Wall", "prog.c", "-o", "prog"],
-                              cwd=tmp_path, capture_output=True, text=True, env=env, timeout=300)
+    compiled = subprocess.run(
+        [str(venv / "bin" / "eyesim"), "cc", "-Wall", "prog.c", "-o", "prog"],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=300,
+    )
     assert compiled.returncode == 0, compiled.stdout + compiled.stderr
     linked = subprocess.run(["ldd", str(tmp_path / "prog")], capture_output=True, text=True, check=True).stdout
     assert re.search(rf"libeyesim\.so => {re.escape(str(site / LIBRARY_DIR / 'lib' / 'libeyesim.so'))}", linked), linked
@@ -342,10 +414,12 @@ def test_linux_wheel_installed_finds_its_library_and_links_programs(wheels, tmp_
 @pytest.fixture
 def unpacked(wheels, tmp_path):
     """A wheel's files unpacked into a folder: unpacked(name) -> the library prefix (include/, lib/)."""
+
     def unpack(name: str) -> Path:
         with zipfile.ZipFile(wheels[name]) as archive:
             archive.extractall(tmp_path / name)
         return tmp_path / name / LIBRARY_DIR
+
     return unpack
 
 
@@ -353,8 +427,18 @@ def unpacked(wheels, tmp_path):
 def test_program_links_against_macos_wheel(unpacked, name, tmp_path):
     prefix = unpacked(name)
     (tmp_path / "prog.c").write_text(PROGRAM)
-    result = zig_cc(TARGETS[name], "-Wall", "prog.c", f"-I{prefix / 'include'}", f"-L{prefix / 'lib'}", "-leyesim",
-                    f"-Wl,-rpath,{prefix / 'lib'}", "-o", "prog", cwd=tmp_path)
+    result = zig_cc(
+        TARGETS[name],
+        "-Wall",
+        "prog.c",
+        f"-I{prefix / 'include'}",
+        f"-L{prefix / 'lib'}",
+        "-leyesim",
+        f"-Wl,-rpath,{prefix / 'lib'}",
+        "-o",
+        "prog",
+        cwd=tmp_path,
+    )
     assert result.returncode == 0, result.stderr
     program = macho((tmp_path / "prog").read_bytes())
     assert program["cpu"] == MACHO_CPU[name] and program["filetype"] == MH_EXECUTE
@@ -364,8 +448,17 @@ def test_program_links_against_macos_wheel(unpacked, name, tmp_path):
 def test_program_links_against_windows_wheel(unpacked, tmp_path):
     prefix = unpacked("windows-x86_64")
     (tmp_path / "prog.c").write_text(PROGRAM)
-    result = zig_cc(TARGETS["windows-x86_64"], "-Wall", "prog.c", f"-I{prefix / 'include'}",
-                    f"-L{prefix / 'lib'}", "-leyesim", "-o", "prog.exe", cwd=tmp_path)
+    result = zig_cc(
+        TARGETS["windows-x86_64"],
+        "-Wall",
+        "prog.c",
+        f"-I{prefix / 'include'}",
+        f"-L{prefix / 'lib'}",
+        "-leyesim",
+        "-o",
+        "prog.exe",
+        cwd=tmp_path,
+    )
     assert result.returncode == 0, result.stderr
     data = (tmp_path / "prog.exe").read_bytes()
     assert pe_header(data) == {"machine": 0x8664, "dll": False, "pe32_plus": True}

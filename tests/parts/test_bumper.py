@@ -30,21 +30,26 @@ def test_the_line_reads_writes_and_round_trips_through_json():
     robot, errors = read(BUMPER_BOT)
     assert not errors
     assert [(b.id, b.x, b.y, b.angle, b.width, b.line) for b in robot.bumpers] == [
-        (1, 90.0, 0.0, 0.0, 140.0, 9), (2, -90.0, 0.0, 180.0, 140.0, 10)]
+        (1, 90.0, 0.0, 0.0, 140.0, 9),
+        (2, -90.0, 0.0, 180.0, 140.0, 10),
+    ]
     assert "bumper 1 90 0 0 140\nbumper 2 -90 0 180 140" in write_robi(robot)
     diagnostics = Diagnostics()
     _, again = parse_json(dumps(to_json("robot", robot)), "bot.json", diagnostics)
     assert not diagnostics.has_errors and again.bumpers == robot.bumpers
 
 
-@pytest.mark.parametrize("line, message", [
-    ("bumper 1 90 0 0", "bumper: expected 5 arguments"),
-    ("bumper 0 90 0 0 140", "bumper: expected bumper id, 1..8 (a whole number >= 1), found '0'"),
-    ("bumper 9 90 0 0 140", "bumper: expected bumper id 1..8 (digital lines 9..16), found 9"),
-    ("bumper 1 90 zero 0 140", "found 'zero'"),
-    ("bumper 1 90 0 0 0", "bumper: expected width > 0, found '0'"),
-    ("bumper 1 90 0 0 140\nbumper 1 -90 0 180 140", "bumper id 1 is already used: expected a different id"),
-])
+@pytest.mark.parametrize(
+    "line, message",
+    [
+        ("bumper 1 90 0 0", "bumper: expected 5 arguments"),
+        ("bumper 0 90 0 0 140", "bumper: expected bumper id, 1..8 (a whole number >= 1), found '0'"),
+        ("bumper 9 90 0 0 140", "bumper: expected bumper id 1..8 (digital lines 9..16), found 9"),
+        ("bumper 1 90 zero 0 140", "found 'zero'"),
+        ("bumper 1 90 0 0 0", "bumper: expected width > 0, found '0'"),
+        ("bumper 1 90 0 0 140\nbumper 1 -90 0 180 140", "bumper id 1 is already used: expected a different id"),
+    ],
+)
 def test_bad_lines_are_reported(line, message):
     _, errors = read(S4 + line + "\n")
     assert any(message in error for error in errors), errors
@@ -58,8 +63,17 @@ def levels(sim, robot: int = 0) -> tuple[int, int]:
 def test_a_wall_or_a_robot_presses_the_strip_that_touches_it():
     bot, _ = read(BUMPER_BOT)
     wall_x = 3000 - 5  # the arena's east wall: inner face (10 mm thick walls centred on the edge)
-    sim = Simulation(arena_scene([(bot, (1500, 1500, 0)), (bot, (wall_x - FRONT + 2, 1000, 0)),
-                                  (bot, (1500, 2000, 0)), (bot, (1500 - FRONT - FRONT + 4, 2000, 0))], size=3000))
+    sim = Simulation(
+        arena_scene(
+            [
+                (bot, (1500, 1500, 0)),
+                (bot, (wall_x - FRONT + 2, 1000, 0)),
+                (bot, (1500, 2000, 0)),
+                (bot, (1500 - FRONT - FRONT + 4, 2000, 0)),
+            ],
+            size=3000,
+        )
+    )
     for _ in range(3):
         sim.step()
     assert levels(sim, 0) == (1, 1)  # free: both read 1 (a switch to ground on a pulled-up line)
@@ -88,9 +102,9 @@ def test_a_program_drives_until_its_bumper_is_pressed_and_stops(tmp_path, progra
     run = Run(run_headless(str(scene), "--program", f"1={program}", cwd=tmp_path, timeout=120))
     assert run.returncode == 0, run.stdout + run.stderr
     assert run.values(1, "released") == [[1, 1]]
-    (x, y, phi), = run.values(1, "pressed")
+    ((x, y, phi),) = run.values(1, "pressed")
     wall = 2000 - 5
     assert wall - FRONT - 10 <= x <= wall - FRONT + 5, x  # the strip (5 mm deep beyond x=90) at the wall
     assert abs(y - 1000) <= 10 and abs(phi) <= 3
-    (x2, y2, _, _, back), = run.values(1, "stopped")
+    ((x2, y2, _, _, back),) = run.values(1, "stopped")
     assert abs(x2 - x) <= 10 and x2 <= wall - FRONT + 5 and back == 1  # it stopped there, not through the wall

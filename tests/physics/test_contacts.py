@@ -17,8 +17,10 @@ def run(sim, seconds: float) -> None:
 
 
 def test_robots_push_a_crate_and_a_ball_ahead_of_them():
-    scene = arena_scene(robots=[("S4", (500, 500, 0)), ("S4", (500, 1500, 0))],
-                        objects=[("Crate", (900, 500, 0)), ("Soccer", (900, 1500, 0))])
+    scene = arena_scene(
+        robots=[("S4", (500, 500, 0)), ("S4", (500, 1500, 0))],
+        objects=[("Crate", (900, 500, 0)), ("Soccer", (900, 1500, 0))],
+    )
     sim = Simulation(scene, Clock("deterministic"))
     for robot in sim.robots:
         robot.component(VwController).straight(1.0, 0.2)

@@ -26,8 +26,13 @@ def triangles_as_points(part):
 
 def test_every_face_form_and_negative_indices_give_the_same_triangles(tmp_path):
     corners = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n"
-    forms = {"plain": "f 1 2 3\n", "texture": "f 1/1 2/1 3/1\n", "normal": "f 1//1 2//1 3//1\n",
-             "both": "f 1/1/1 2/1/1 3/1/1\n", "negative": "f -4 -3/1 -2//1\n"}
+    forms = {
+        "plain": "f 1 2 3\n",
+        "texture": "f 1/1 2/1 3/1\n",
+        "normal": "f 1//1 2//1 3//1\n",
+        "both": "f 1/1/1 2/1/1 3/1/1\n",
+        "negative": "f -4 -3/1 -2//1\n",
+    }
     for name, face in forms.items():
         mesh = read_obj(write(tmp_path, f"{name}.obj", corners + face))
         assert len(mesh.parts) == 1, name
@@ -44,9 +49,15 @@ def test_polygons_become_a_fan_of_triangles(tmp_path):
 
 def test_materials_group_faces_and_take_their_diffuse_colour_from_the_mtl(tmp_path):
     write(tmp_path, "paint.mtl", "newmtl red\nKd 1 0 0\nnewmtl blue\nKd 0 0 1 # a comment\nnewmtl crimson\nKd 1 0 0\n")
-    mesh = read_obj(write(tmp_path, "two.obj", "mtllib paint.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
-                          "o first\nusemtl red\nf 1 2 3\ng second\nusemtl blue\nf 1 2 4\nf 1 3 4\n"
-                          "usemtl crimson\nf 2 3 4\n"))
+    mesh = read_obj(
+        write(
+            tmp_path,
+            "two.obj",
+            "mtllib paint.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+            "o first\nusemtl red\nf 1 2 3\ng second\nusemtl blue\nf 1 2 4\nf 1 3 4\n"
+            "usemtl crimson\nf 2 3 4\n",
+        )
+    )
     by_colour = {p.color: p for p in mesh.parts}
     # red and crimson have one colour: one part (one geom) for both
     assert set(by_colour) == {(1.0, 0.0, 0.0), (0.0, 0.0, 1.0)}
@@ -64,8 +75,11 @@ def test_a_missing_mtl_warns_once_with_file_and_line_and_draws_grey(tmp_path, ca
 
 
 def test_bad_lines_are_skipped_with_warnings_and_the_rest_is_kept(tmp_path):
-    path = write(tmp_path, "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv one 2 3\nv 0 0 1\n"
-                 "f 1 2 3\nf 1 2\nf 1 2 9\nf 0 1 2\nf 1 x 3\nf 1 2 4\nf 1 2 5\n")
+    path = write(
+        tmp_path,
+        "bad.obj",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv one 2 3\nv 0 0 1\nf 1 2 3\nf 1 2\nf 1 2 9\nf 0 1 2\nf 1 x 3\nf 1 2 4\nf 1 2 5\n",
+    )
     mesh = read_obj(path)
     texts = "\n".join(mesh.warnings)
     assert f"{path}:4: expected a vertex 'v <x> <y> <z>', found 'v one 2 3'" in texts

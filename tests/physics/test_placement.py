@@ -18,7 +18,8 @@ def test_a_robot_half_in_a_wall_is_moved_out_stays_upright_and_its_psds_read_the
     overlaps = [w for w in scene.warnings if w.code == "overlap"]
     assert [(Path(w.location.file).name, w.location.line) for w in overlaps] == [
         (scene_file.name, 1 + scene_file.read_text().splitlines().index("LabBot 20 1000 0")),
-        (scene_file.name, 1 + scene_file.read_text().splitlines().index("Can 800 10 0"))]
+        (scene_file.name, 1 + scene_file.read_text().splitlines().index("Can 800 10 0")),
+    ]
     assert "overlaps the wall" in overlaps[0].message and "moved to (116, 1000)" in overlaps[0].message
     robot = scene.robots[0].pose
     assert robot.x == 116 and robot.y == 1000  # the wall's face at 5 mm, 1 mm clear, the hull 110 mm behind its centre

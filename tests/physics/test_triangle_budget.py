@@ -29,8 +29,9 @@ def test_too_many_triangles_together_are_refused_at_the_placement(tmp_path):
     detailed_model(tmp_path)
     count = MAX_SCENE_TRIANGLES // TRIANGLES_PER_MODEL + 1
     placements = [f"Detailed {100 + 120 * (k % 15)} {100 + 120 * (k // 15)} 0" for k in range(count)]
-    (tmp_path / "heavy.sim").write_text("\n".join(["world %sim%/scenes/arena.wld", "obj Detailed.esObj",
-                                                   *placements]) + "\n")
+    (tmp_path / "heavy.sim").write_text(
+        "\n".join(["world %sim%/scenes/arena.wld", "obj Detailed.esObj", *placements]) + "\n"
+    )
     result = run_headless("heavy.sim", "--until", "0.1", cwd=tmp_path, timeout=300)
     assert result.returncode == 2
     line = 2 + count  # the placement that passes the limit
@@ -41,7 +42,8 @@ def test_too_many_triangles_together_are_refused_at_the_placement(tmp_path):
 
 def test_a_few_placements_of_the_same_model_are_fine(tmp_path):
     detailed_model(tmp_path)
-    (tmp_path / "light.sim").write_text("world %sim%/scenes/arena.wld\nobj Detailed.esObj\nDetailed 500 500 0\n"
-                                        "Detailed 800 500 0\n")
+    (tmp_path / "light.sim").write_text(
+        "world %sim%/scenes/arena.wld\nobj Detailed.esObj\nDetailed 500 500 0\nDetailed 800 500 0\n"
+    )
     result = run_headless("light.sim", "--until", "0.1", cwd=tmp_path, timeout=300)
     assert result.returncode == 0, result.stderr

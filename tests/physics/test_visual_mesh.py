@@ -2,7 +2,6 @@
 size on their bodies, collisions, mass and sensors still use the colliders, and the OpenGL camera
 sees the model where the ray caster (and the colliders alone) would not."""
 
-
 import mujoco
 import numpy as np
 import pytest
@@ -27,8 +26,11 @@ def scene_file(tmp_path, placements, extra=()):
 @pytest.fixture(scope="module")
 def sim(tmp_path_factory):
     """A stop sign at (1000, 1000), its face towards -x, and S4blue at (500, 1000) facing it."""
-    path = scene_file(tmp_path_factory.mktemp("stop"), ["S4blue 500 1000 0", "StopSign 1000 1000 0"],
-                      [f'obj "{STOP_SIGN / "stopsign.esObj"}"', f'robi "{S4BLUE}"'])
+    path = scene_file(
+        tmp_path_factory.mktemp("stop"),
+        ["S4blue 500 1000 0", "StopSign 1000 1000 0"],
+        [f'obj "{STOP_SIGN / "stopsign.esObj"}"', f'robi "{S4BLUE}"'],
+    )
     return Simulation(load_scene(path))
 
 
@@ -37,7 +39,7 @@ def world_box(model, data, geoms):
     points = []
     for geom in geoms:
         mesh = model.geom_dataid[geom]
-        vertices = model.mesh_vert[model.mesh_vertadr[mesh]:model.mesh_vertadr[mesh] + model.mesh_vertnum[mesh]]
+        vertices = model.mesh_vert[model.mesh_vertadr[mesh] : model.mesh_vertadr[mesh] + model.mesh_vertnum[mesh]]
         points.append(data.geom_xpos[geom] + vertices @ data.geom_xmat[geom].reshape(3, 3).T)
     points = np.concatenate(points)
     return points.min(axis=0), points.max(axis=0)
@@ -53,12 +55,17 @@ def test_the_stop_sign_gets_mesh_geoms_as_big_as_the_file_says(sim):
     file_low, file_high = read_obj(STOP_SIGN / "STOP.obj").bounds()
     scale = sign.type.scale
     # the file's Y is up, its Z forward (+x) and its x (mirrored twice) to the left (+y)
-    assert np.allclose(high - low, np.array([file_high[2] - file_low[2], file_high[0] - file_low[0],
-                                             file_high[1] - file_low[1]]) * scale, atol=1e-5)  # 50 x 126 x 378 mm
+    assert np.allclose(
+        high - low,
+        np.array([file_high[2] - file_low[2], file_high[0] - file_low[0], file_high[1] - file_low[1]]) * scale,
+        atol=1e-5,
+    )  # 50 x 126 x 378 mm
     assert np.allclose(high[2], file_high[1] * scale, atol=1e-5)  # the sign stands where the file says
-    assert np.allclose([(low[0] + high[0]) / 2, (low[1] + high[1]) / 2],
-                       [1.0 + (file_low[2] + file_high[2]) / 2 * scale, 1.0 + (file_low[0] + file_high[0]) / 2 * scale],
-                       atol=1e-5)
+    assert np.allclose(
+        [(low[0] + high[0]) / 2, (low[1] + high[1]) / 2],
+        [1.0 + (file_low[2] + file_high[2]) / 2 * scale, 1.0 + (file_low[0] + file_high[0]) / 2 * scale],
+        atol=1e-5,
+    )
 
 
 def test_colliders_keep_colliding_and_the_mass_is_the_declared_one(sim):
@@ -76,8 +83,9 @@ def test_s4blue_gets_its_model_turned_as_its_robi_says(sim):
     low, high = world_box(model, data, mesh_geoms(model, robot.body))
     size = high - low
     # model S4blue.obj 0 0 0 0 90 0: the long side forward, as the robot's declared size
-    assert size == pytest.approx([robot.type.length / 1000, robot.type.width / 1000, robot.type.height / 1000],
-                                 abs=0.003)
+    assert size == pytest.approx(
+        [robot.type.length / 1000, robot.type.width / 1000, robot.type.height / 1000], abs=0.003
+    )
     assert low[2] == pytest.approx(0.0, abs=0.001)
 
 

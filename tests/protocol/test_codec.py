@@ -5,8 +5,15 @@ import struct
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from eyesim.protocol import (FrameDecoder, ProtocolError, decode_payload, encode_frame, encode_message, encode_payload,
-                             generated as g)
+from eyesim.protocol import (
+    FrameDecoder,
+    ProtocolError,
+    decode_payload,
+    encode_frame,
+    encode_message,
+    encode_payload,
+    generated as g,
+)
 
 FRAMES = [
     encode_message(g.OP_HELLO, g.KIND_REQUEST, 1, (g.VERSION, "S4", "prog", 7, "token")),
@@ -18,8 +25,10 @@ FRAMES = [
 
 
 @settings(max_examples=300, deadline=None)
-@given(order=st.lists(st.integers(0, len(FRAMES) - 1), min_size=1, max_size=12),
-       cuts=st.lists(st.integers(0, 40000), max_size=30))
+@given(
+    order=st.lists(st.integers(0, len(FRAMES) - 1), min_size=1, max_size=12),
+    cuts=st.lists(st.integers(0, 40000), max_size=30),
+)
 def test_any_split_of_the_stream_gives_the_same_messages(order, cuts):
     stream = b"".join(FRAMES[i] for i in order)
     points = sorted({c % (len(stream) + 1) for c in cuts} | {0, len(stream)})
@@ -43,10 +52,13 @@ def test_a_frame_shorter_than_its_header_is_refused():
         FrameDecoder().feed((3).to_bytes(4, "little") + b"abc")
 
 
-@pytest.mark.parametrize("payload, reason", [
-    (b"\x01\x00", "too short"),
-    (b"\x01\x00\x00\x00\x02", "unexpected bytes"),
-])
+@pytest.mark.parametrize(
+    "payload, reason",
+    [
+        (b"\x01\x00", "too short"),
+        (b"\x01\x00\x00\x00\x02", "unexpected bytes"),
+    ],
+)
 def test_payload_errors_say_what_is_wrong(payload, reason):
     with pytest.raises(ProtocolError, match=reason) as error:
         decode_payload(g.OPS[g.OP_PSD_GET].request, payload)
@@ -76,7 +88,7 @@ def test_random_payloads_raise_only_protocol_errors(payload):
 
 
 def test_frame_header_layout():
-    assert encode_frame(0x1234, 2, 0x01020304, b"") == bytes.fromhex("08000000" "3412" "0200" "04030201")
+    assert encode_frame(0x1234, 2, 0x01020304, b"") == bytes.fromhex("080000003412020004030201")
 
 
 def test_a_large_bytes_field_is_a_read_only_view_of_the_frame_and_a_small_one_a_copy():
@@ -89,8 +101,12 @@ def test_a_large_bytes_field_is_a_read_only_view_of_the_frame_and_a_small_one_a_
         values = decode_payload(g.OPS[g.OP_LCD_IMAGE].request, message.payload)
         assert type(values[-1]) is kept_as and values[-1] == data
     with pytest.raises(TypeError):
-        values = decode_payload(g.OPS[g.OP_LCD_IMAGE].request, FrameDecoder().feed(
-            encode_message(g.OP_LCD_IMAGE, g.KIND_REQUEST, 5, (0, 0, 1, len(image), 1, 1, 1, image)))[0].payload)
+        values = decode_payload(
+            g.OPS[g.OP_LCD_IMAGE].request,
+            FrameDecoder()
+            .feed(encode_message(g.OP_LCD_IMAGE, g.KIND_REQUEST, 5, (0, 0, 1, len(image), 1, 1, 1, image)))[0]
+            .payload,
+        )
         values[-1][0] = 0  # nobody can change the frame it came from
 
 
@@ -108,13 +124,13 @@ def test_messages_of_fixed_size_fields_pack_in_one_go_as_field_by_field():
             values = tuple(samples[typ] for _, typ in layout)
             general = encode_frame(op.code, kind, 77, encode_payload(layout, values))
             assert encode_message(op.code, kind, 77, values) == general
-            assert decode_payload(layout, general[4 + 8:]) == values
+            assert decode_payload(layout, general[4 + 8 :]) == values
             with pytest.raises(ValueError, match="expected"):
                 encode_message(op.code, kind, 77, values + (1,))
             checked += 1
     assert checked > 100  # most calls: PSDGet, VWGetPosition, OSGetCount ...
     with pytest.raises(struct.error):
-        encode_message(g.OP_PSD_GET, g.KIND_REQUEST, 1, (2 ** 31,))
+        encode_message(g.OP_PSD_GET, g.KIND_REQUEST, 1, (2**31,))
 
 
 def test_a_lone_frame_is_still_held_to_the_decoders_limit():

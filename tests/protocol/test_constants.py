@@ -26,11 +26,23 @@ PYTHON_NAMES = {entry["name"] for entry in ENTRIES if not entry.get("c_only")}
 
 # eyebot.h's macros that are no RoBIOS constants: its include guard, the feature-test macro, the
 # printf attribute, the DLL-export marker and the sleep functions rerouted on Windows and macOS.
-NOT_CONSTANTS = {"EYEBOT_H", "_DEFAULT_SOURCE", "EYEBOT_PRINTF", "EYESIM_EXPORTS_MARKED", "sleep", "usleep",
-                 "nanosleep", "clock_nanosleep", "Sleep"}
+NOT_CONSTANTS = {
+    "EYEBOT_H",
+    "_DEFAULT_SOURCE",
+    "EYEBOT_PRINTF",
+    "EYESIM_EXPORTS_MARKED",
+    "sleep",
+    "usleep",
+    "nanosleep",
+    "clock_nanosleep",
+    "Sleep",
+}
 DEFINE = re.compile(r"^\s*#\s*define\s+(\w+)", re.MULTILINE)
-SIM_GENERATED = {ROOT / "src/eyesim/protocol/constants.py", ROOT / "src/eyesim/protocol/generated.py",
-                 ROOT / "src/eye/constants.py"}
+SIM_GENERATED = {
+    ROOT / "src/eyesim/protocol/constants.py",
+    ROOT / "src/eyesim/protocol/generated.py",
+    ROOT / "src/eye/constants.py",
+}
 
 
 def header_parts() -> tuple[str, str]:
@@ -49,8 +61,13 @@ def test_every_define_in_eyebot_h_is_a_generated_constant_or_no_constant():
 
 def test_eye_constants_and_the_simulators_are_the_same_names_and_values():
     eye_module = ast.parse((ROOT / "src/eye/constants.py").read_text())
-    assigned = {target.id for node in eye_module.body if isinstance(node, ast.Assign) for target in node.targets
-                if isinstance(target, ast.Name) and target.id != "__all__"}
+    assigned = {
+        target.id
+        for node in eye_module.body
+        if isinstance(node, ast.Assign)
+        for target in node.targets
+        if isinstance(target, ast.Name) and target.id != "__all__"
+    }
     assert assigned == PYTHON_NAMES
     values = {name: getattr(sim_constants, name) for name in PYTHON_NAMES}
     assert values["KEY_ESCAPE"] == 0x80000000 and values["IRTV_OK"] == ord("O") and values["VGA_SIZE"] == 921600
@@ -106,8 +123,10 @@ def test_no_python_module_defines_a_robios_constant_by_hand():
 def test_the_copy_finder_finds_the_copies_this_repository_had(tmp_path):
     """The kinds of copy there were before the constants were generated."""
     module = tmp_path / "copies.py"
-    module.write_text('KEY1, KEY2 = 0x1, 0x2\nAUTOREFRESH = 0x01\nPSD_IDS = {"PSD_FRONT": 1}\nTAB = 4\n'
-                      'BUTTONS = {"RED": "R", "OK": "K"}\n')
+    module.write_text(
+        'KEY1, KEY2 = 0x1, 0x2\nAUTOREFRESH = 0x01\nPSD_IDS = {"PSD_FRONT": 1}\nTAB = 4\n'
+        'BUTTONS = {"RED": "R", "OK": "K"}\n'
+    )
     found = [line.split(" ", 1)[1] for line in hand_copies(module, tmp_path)]
     assert found == ["KEY1 = 1", "KEY2 = 2", "AUTOREFRESH = 1", "{'PSD_FRONT': 1}", "{'RED': 'R'}"]
 
@@ -131,14 +150,17 @@ def test_make_protocol_writes_the_constants_and_a_changed_one_goes_stale():
     assert "PSD_BACK = 5" in regenerated[robios_constants.SIM_CONSTANTS]
 
 
-@pytest.mark.parametrize("entry, message", [
-    ({"name": "KEY1", "value": 1}, "a C name used only once"),
-    ({"name": "TWO", "value": 1, "text": "1"}, "exactly one of"),
-    ({"name": "AREA", "expression": "QVGA_X * WIDTH"}, "unknown: WIDTH"),
-    ({"name": "BIG", "value": "0x1FFFFFFFF"}, "not a 32-bit integer"),
-    ({"name": "LOWER", "value": "0xff"}, "hex literal in upper case"),
-    ({"name": "QUOTE", "char": "'"}, "one printable ASCII character"),
-])
+@pytest.mark.parametrize(
+    "entry, message",
+    [
+        ({"name": "KEY1", "value": 1}, "a C name used only once"),
+        ({"name": "TWO", "value": 1, "text": "1"}, "exactly one of"),
+        ({"name": "AREA", "expression": "QVGA_X * WIDTH"}, "unknown: WIDTH"),
+        ({"name": "BIG", "value": "0x1FFFFFFFF"}, "not a 32-bit integer"),
+        ({"name": "LOWER", "value": "0xff"}, "hex literal in upper case"),
+        ({"name": "QUOTE", "char": "'"}, "one printable ASCII character"),
+    ],
+)
 def test_the_generator_refuses_a_constant_it_cannot_write(entry, message):
     changed = copy.deepcopy(SPEC)
     changed["constants"][-1]["constants"].append(entry)

@@ -29,8 +29,18 @@ def test_drawing_and_the_clock_are_local_sensors_and_motors_reach_the_robot():
     assert all(by_class[op.name] == LOCAL for op in g.OPS.values() if op.group == "lcd")
     for name in ("OS_GET_COUNT", "OS_MACHINE_NAME", "TIMER_ATTACH", "HELLO"):
         assert by_class[name] == LOCAL, name
-    for name in ("PSD_GET", "VW_GET_POSITION", "VW_SET_SPEED", "MOTOR_DRIVE", "KEY_READ", "CAM_GET",
-                 "RADIO_SEND", "SIM_GET_ROBOT", "LIDAR_GET", "SER_SEND"):
+    for name in (
+        "PSD_GET",
+        "VW_GET_POSITION",
+        "VW_SET_SPEED",
+        "MOTOR_DRIVE",
+        "KEY_READ",
+        "CAM_GET",
+        "RADIO_SEND",
+        "SIM_GET_ROBOT",
+        "LIDAR_GET",
+        "SER_SEND",
+    ):
         assert by_class[name] == DEVICE, name
     # a local call costs microseconds (an image some more), far below the 4 ms call time
     assert max(op.cost_us for op in g.OPS.values() if op.cost == LOCAL) <= 500
@@ -39,16 +49,19 @@ def test_drawing_and_the_clock_are_local_sensors_and_motors_reach_the_robot():
 
 def test_the_docs_list_each_class():
     docs = (ROOT / "docs" / "protocol.md").read_text()
-    section = docs[docs.index("## What a call costs"):]
+    section = docs[docs.index("## What a call costs") :]
     for cost in (LOCAL, DEVICE, WAIT):
         assert f"| `{cost}` |" in section
 
 
-@pytest.mark.parametrize("change,message", [
-    ({"cost": "cheap"}, "cost must be one of local, device, wait, not 'cheap'"),
-    ({"cost": "wait"}, "a blocking op costs its wait"),
-    ({"cost": None}, "cost must be one of"),
-])
+@pytest.mark.parametrize(
+    "change,message",
+    [
+        ({"cost": "cheap"}, "cost must be one of local, device, wait, not 'cheap'"),
+        ({"cost": "wait"}, "a blocking op costs its wait"),
+        ({"cost": None}, "cost must be one of"),
+    ],
+)
 def test_the_generator_refuses_a_missing_or_wrong_class(change, message, capsys):
     spec = copy.deepcopy(SPEC)
     op = next(op for op in spec["ops"] if op["name"] == "PSD_GET")

@@ -20,8 +20,9 @@ ROOT = Path(__file__).resolve().parents[2]
 def test_generated_files_match_protocol_json():
     """Also the viewer channel's: web/src/generated/viewer_protocol.ts (the messages' and the HTTP
     routes' types and parsers) and the server's copy of protocol/viewer.schema.json."""
-    result = subprocess.run([sys.executable, str(ROOT / "protocol" / "generate.py"), "--check"],
-                            capture_output=True, text=True)
+    result = subprocess.run(
+        [sys.executable, str(ROOT / "protocol" / "generate.py"), "--check"], capture_output=True, text=True
+    )
     assert result.returncode == 0, result.stdout + result.stderr
 
 
@@ -35,8 +36,10 @@ def test_the_route_table_is_generated_from_the_schema_and_goes_stale_with_it():
     for route, entry in schema["routes"].items():
         answer = entry["response"]["$ref"].removeprefix("#/$defs/")
         assert f'  "{route}": {{ request: ' in committed and f'  "{route}": parse{answer},' in committed
-    schema["routes"]["POST /scenes/rename"] = {"request": {"$ref": "#/$defs/Place"},
-                                               "response": {"$ref": "#/$defs/EditorState"}}
+    schema["routes"]["POST /scenes/rename"] = {
+        "request": {"$ref": "#/$defs/Place"},
+        "response": {"$ref": "#/$defs/EditorState"},
+    }
     regenerated = generate_viewer.Generator(schema).typescript()
     assert regenerated != committed
     assert '  "POST /scenes/rename": { request: Place; response: EditorState };' in regenerated
@@ -53,6 +56,7 @@ def test_every_operation_but_the_sessions_own_has_a_handler():
 
 def test_a_handler_module_may_only_handle_its_own_groups_operations(monkeypatch):
     from eyesim.commands import psd
+
     monkeypatch.setitem(psd.HANDLERS, "LIDAR_GET", psd.HANDLERS["PSD_GET"])
     with pytest.raises(RuntimeError, match="eyesim.commands.psd handles LIDAR_GET, an operation of group lidar"):
         commands._build_registry()
@@ -94,21 +98,47 @@ def test_a_new_pass_through_function_is_generated_in_every_layer():
     """docs/developing.md's walk-through: an op and an api entry in protocol.json give the C wrapper,
     the eyebot.h declaration, the ctypes prototype and the Python wrapper."""
     spec = copy.deepcopy(SPEC)
-    spec["ops"].append({"name": "PSD_GET_BOTH", "code": 2099, "group": "psd", "cost": "device", "cost_us": 100,
-                        "request": [["psd", "i32"]], "reply": [["result", "i32"], ["mm", "i32"], ["raw", "i32"]]})
+    spec["ops"].append(
+        {
+            "name": "PSD_GET_BOTH",
+            "code": 2099,
+            "group": "psd",
+            "cost": "device",
+            "cost_us": 100,
+            "request": [["psd", "i32"]],
+            "reply": [["result", "i32"], ["mm", "i32"], ["raw", "i32"]],
+        }
+    )
     psd = next(g for g in spec["api"] if g["group"] == "psd")
-    psd["functions"].append({"name": "PSDGetBoth", "c": "int PSDGetBoth(int psd, int *mm, int *raw)",
-                             "op": "PSD_GET_BOTH", "error": "1", "python": "hand", "doc": "both readings"})
-    psd["functions"].append({"name": "PSDGetTwice", "c": "int PSDGetTwice(int psd)", "op": "PSD_GET",
-                             "error": "-1", "doc": "the distance again"})
+    psd["functions"].append(
+        {
+            "name": "PSDGetBoth",
+            "c": "int PSDGetBoth(int psd, int *mm, int *raw)",
+            "op": "PSD_GET_BOTH",
+            "error": "1",
+            "python": "hand",
+            "doc": "both readings",
+        }
+    )
+    psd["functions"].append(
+        {
+            "name": "PSDGetTwice",
+            "c": "int PSDGetTwice(int psd)",
+            "op": "PSD_GET",
+            "error": "-1",
+            "doc": "the distance again",
+        }
+    )
     new = layers.outputs(spec)
     changed = {path for path, text in new.items() if path.read_text() != text}
     assert changed == {layers.HEADER, layers.C_WRAPPERS, layers.PY_PROTOTYPES, layers.EYE / "psd.py"}
     assert "int PSDGetBoth(int psd, int *mm, int *raw); /* both readings */" in new[layers.HEADER]
-    assert ("int PSDGetBoth(int psd, int *mm, int *raw)\n{\n    es_value args[1] = {es_int(psd)};\n"
-            "    es_value result[3] = {{0}};\n    int rc = es_call(\"PSDGetBoth\", ES_OP_PSD_GET_BOTH, args, result);\n"
-            "    es_out(mm, result[1].i); /* zeros after an error */\n    es_out(raw, result[2].i);\n"
-            "    return rc ? 1 : (int)result[0].i;\n}") in new[layers.C_WRAPPERS]
+    assert (
+        "int PSDGetBoth(int psd, int *mm, int *raw)\n{\n    es_value args[1] = {es_int(psd)};\n"
+        '    es_value result[3] = {{0}};\n    int rc = es_call("PSDGetBoth", ES_OP_PSD_GET_BOTH, args, result);\n'
+        "    es_out(mm, result[1].i); /* zeros after an error */\n    es_out(raw, result[2].i);\n"
+        "    return rc ? 1 : (int)result[0].i;\n}"
+    ) in new[layers.C_WRAPPERS]
     assert '"PSDGetBoth": (INT, [INT, INTS, INTS]),' in new[layers.PY_PROTOTYPES]
     module = new[layers.EYE / "psd.py"]
     assert "from eye.handwritten.psd import PSDGetBoth" in module
@@ -120,8 +150,11 @@ def code_names(path: Path) -> set[str]:
     if path.suffix == ".c":
         return set(re.findall(r"\w+", re.sub(r"/\*.*?\*/|//[^\n]*", " ", path.read_text(), flags=re.S)))
     tree = ast.parse(path.read_text())
-    docstrings = {id(node.body[0].value) for node in ast.walk(tree)
-                  if isinstance(node, (ast.Module, ast.FunctionDef, ast.ClassDef)) and ast.get_docstring(node)}
+    docstrings = {
+        id(node.body[0].value)
+        for node in ast.walk(tree)
+        if isinstance(node, (ast.Module, ast.FunctionDef, ast.ClassDef)) and ast.get_docstring(node)
+    }
     names = set()
     for node in ast.walk(tree):
         if isinstance(node, ast.Name):
@@ -156,13 +189,16 @@ def test_every_api_function_is_generated_or_written_by_hand_once():
         assert bool(hand) == module.exists(), group["group"]
 
 
-@pytest.mark.parametrize("change, message", [
-    (lambda f: f.update(c="int PSDGet(int psd, int extra)"), "do not match PSD_GET's request"),
-    (lambda f: f.update(op="PSD_GONE"), "unknown op 'PSD_GONE'"),
-    (lambda f: f.pop("error"), "needs its \"error\" return value"),
-    (lambda f: f.update(c="int PSDGet(float psd)"), "unknown C type 'float'"),
-    (lambda f: f.update(doc=""), "needs its \"doc\""),
-])
+@pytest.mark.parametrize(
+    "change, message",
+    [
+        (lambda f: f.update(c="int PSDGet(int psd, int extra)"), "do not match PSD_GET's request"),
+        (lambda f: f.update(op="PSD_GONE"), "unknown op 'PSD_GONE'"),
+        (lambda f: f.pop("error"), 'needs its "error" return value'),
+        (lambda f: f.update(c="int PSDGet(float psd)"), "unknown C type 'float'"),
+        (lambda f: f.update(doc=""), 'needs its "doc"'),
+    ],
+)
 def test_a_wrong_api_entry_is_refused_with_its_name(change, message):
     spec = copy.deepcopy(SPEC)
     psd = next(g for g in spec["api"] if g["group"] == "psd")

@@ -41,4 +41,4 @@ def test_decoding_the_vector_bytes_gives_the_values(vector):
 def test_a_hand_checked_vector():
     # VW_STRAIGHT request id 0xFFFFFFFF, dist -1000, speed 300: length 16, op 3077 (group vw = 12), kind 0.
     vector = next(v for v in VECTORS if v["name"] == "vw straight negative")
-    assert vector["hex"] == "10000000" "050c" "0000" "ffffffff" "18fcffff" "2c010000"
+    assert vector["hex"] == "10000000050c0000ffffffff18fcffff2c010000"

@@ -22,9 +22,15 @@ from eyesim.record import Recorder, Recording, schemas
 from eyesim.robot.components.lcd import Lcd
 from eyesim.scene import DEFAULT_SCENE, load_scene
 
-ROBOT_CHANNELS = {"state": "eyesim.RobotState", "lcd": "foxglove.CompressedImage",
-                  "camera": "foxglove.CompressedImage", "lidar": "foxglove.LaserScan",
-                  "psd": "eyesim.PsdReading", "command": "eyesim.Command", "input": "eyesim.Input"}
+ROBOT_CHANNELS = {
+    "state": "eyesim.RobotState",
+    "lcd": "foxglove.CompressedImage",
+    "camera": "foxglove.CompressedImage",
+    "lidar": "foxglove.LaserScan",
+    "psd": "eyesim.PsdReading",
+    "command": "eyesim.Command",
+    "input": "eyesim.Input",
+}
 
 
 @pytest.fixture(scope="module")
@@ -32,8 +38,9 @@ def recorded(tmp_path_factory):
     """The tour program recorded headless and deterministic, as .mcap and .csv in one run."""
     directory = tmp_path_factory.mktemp("recorded")
     program = build("record_tour", directory)
-    result = run_headless("--program", f"1={program}", "--record", "run.mcap", "--record", "run.csv",
-                          "--save-lcd", "lcd", cwd=directory)
+    result = run_headless(
+        "--program", f"1={program}", "--record", "run.mcap", "--record", "run.csv", "--save-lcd", "lcd", cwd=directory
+    )
     assert result.returncode == 0, result.stdout + result.stderr
     return directory
 
@@ -43,9 +50,15 @@ def test_the_recording_has_the_documented_channels_and_every_message_fits_its_sc
         reader = make_reader(file)
         summary = reader.get_summary()
         channels = {c.topic: summary.schemas[c.schema_id] for c in summary.channels.values()}
-        expected = {"/scene": "eyesim.Scene", "/tf": "foxglove.FrameTransforms", "/events": "eyesim.ViewerEvent",
-                    "/log": "foxglove.Log", "/edits": "eyesim.SceneEdit", "/rays": "eyesim.SensorRays",
-                    **{f"/robot/1/{name}": schema for name, schema in ROBOT_CHANNELS.items()}}
+        expected = {
+            "/scene": "eyesim.Scene",
+            "/tf": "foxglove.FrameTransforms",
+            "/events": "eyesim.ViewerEvent",
+            "/log": "foxglove.Log",
+            "/edits": "eyesim.SceneEdit",
+            "/rays": "eyesim.SensorRays",
+            **{f"/robot/1/{name}": schema for name, schema in ROBOT_CHANNELS.items()},
+        }
         assert {topic: schema.name for topic, schema in channels.items()} == expected
         assert all(c.message_encoding == "json" for c in summary.channels.values())
         assert all(schema.encoding == "jsonschema" for schema in channels.values())
@@ -59,14 +72,20 @@ def test_the_recording_has_the_documented_channels_and_every_message_fits_its_sc
     assert counts["/tf"] == counts["/robot/1/state"] == 203
     assert counts["/robot/1/psd"] == 4 and counts["/robot/1/command"] == 5
     assert counts["/robot/1/lcd"] >= 5  # the start, four steps, "done"
-    logs = [json.loads(m.data)["message"] for _, c, m in make_reader(open(recorded / "run.mcap", "rb")).iter_messages(topics=["/log"])]
+    logs = [
+        json.loads(m.data)["message"]
+        for _, c, m in make_reader(open(recorded / "run.mcap", "rb")).iter_messages(topics=["/log"])
+    ]
     assert logs[0] == "program record_tour started"  # console lines and the exit race each other through pipes
-    assert sorted(logs[1:]) == sorted(["step 1", "step 2", "step 3", "step 4", "done", "program record_tour exited with code 0"])
+    assert sorted(logs[1:]) == sorted(
+        ["step 1", "step 2", "step 3", "step 4", "done", "program record_tour exited with code 0"]
+    )
 
 
 def test_export_writes_the_same_csv_as_the_live_run(recorded):
-    result = subprocess.run(eyesim_command("export", "run.mcap", "--csv", "exported.csv"), capture_output=True,
-                            text=True, cwd=recorded)
+    result = subprocess.run(
+        eyesim_command("export", "run.mcap", "--csv", "exported.csv"), capture_output=True, text=True, cwd=recorded
+    )
     assert result.returncode == 0, result.stderr
     assert (recorded / "exported.csv").read_bytes() == (recorded / "run.csv").read_bytes()
 
@@ -87,8 +106,9 @@ def test_deterministic_runs_record_the_same_poses_sensors_commands_and_lcds(reco
 
     def messages(path):
         with open(path, "rb") as file:
-            return [(c.topic, m.log_time, m.data) for _, c, m in make_reader(file).iter_messages()
-                    if c.topic not in racing]
+            return [
+                (c.topic, m.log_time, m.data) for _, c, m in make_reader(file).iter_messages() if c.topic not in racing
+            ]
 
     assert messages(recorded / "run.mcap") == messages(tmp_path / "again.mcap")
 
@@ -149,8 +169,10 @@ def test_camera_images_and_lidar_scans_are_recorded_as_the_program_saw_them(tmp_
     lidar = re.search(r"lidar ahead (\d+) left (\d+)", result.stdout)
     assert camera and lidar, result.stdout
     with open(tmp_path / "sensors.mcap", "rb") as file:
-        messages = {c.topic: json.loads(m.data) for _, c, m in make_reader(file).iter_messages(
-            topics=["/robot/1/camera", "/robot/1/lidar"])}
+        messages = {
+            c.topic: json.loads(m.data)
+            for _, c, m in make_reader(file).iter_messages(topics=["/robot/1/camera", "/robot/1/lidar"])
+        }
     image = messages["/robot/1/camera"]
     assert image["format"] == "jpeg" and image["frame_id"] == "robot/1"
     pixels = _decode_image(image["data"])
@@ -173,12 +195,16 @@ def test_inputs_and_viewer_edits_are_recorded(tmp_path):
     sim.schedule(200_000, lambda s: robot_input.touch(s, 1, 100, 50))
     sim.schedule(300_000, lambda s: robot_input.analog(s, 1, 2, 700))
     # the viewer's command is checked, then queued: done at the next step boundary
-    sim.schedule(400_000, lambda s: s.call(inputs.prepare(s, {"type": "place", "robot": 1, "x": 1.5, "y": 1.0, "phi": 1.0})))
+    sim.schedule(
+        400_000, lambda s: s.call(inputs.prepare(s, {"type": "place", "robot": 1, "x": 1.5, "y": 1.0, "phi": 1.0}))
+    )
     with Recorder(sim, tmp_path / "inputs.mcap"):
         sim.run(until=1)
     with open(tmp_path / "inputs.mcap", "rb") as file:
-        found = [(c.topic, m.log_time // 1000, json.loads(m.data)) for _, c, m in make_reader(file).iter_messages(
-            topics=["/robot/1/input", "/edits"])]
+        found = [
+            (c.topic, m.log_time // 1000, json.loads(m.data))
+            for _, c, m in make_reader(file).iter_messages(topics=["/robot/1/input", "/edits"])
+        ]
     assert found == [
         ("/robot/1/input", 100_000, {"robot": 1, "input": "key", "key": 2}),
         ("/robot/1/input", 200_000, {"robot": 1, "input": "touch", "x": 100, "y": 50}),

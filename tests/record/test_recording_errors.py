@@ -41,7 +41,7 @@ def broken_files(good, directory):
         writer.finish()
     damaged = bytearray(data)
     middle = len(data) // 2
-    damaged[len(data) // 4:len(data) // 4 + 64] = bytes(64)  # inside the compressed messages
+    damaged[len(data) // 4 : len(data) // 4 + 64] = bytes(64)  # inside the compressed messages
     files = {
         "missing.mcap": (None, "cannot read"),
         "folder.mcap": (b"", "is a directory"),
@@ -69,8 +69,11 @@ def test_the_commands_say_what_is_wrong_without_a_traceback(good, tmp_path):
     files = broken_files(good, tmp_path)
     commands = [["export", str(path), "--csv", str(tmp_path / "out.csv")] for path in files]
     some = [path for path in files if path.name in ("truncated.mcap", "notes.mcap")]
-    commands += [[name, str(path), *extra] for path in some for name, *extra in
-                 (["plot", "-o", "p.png"], ["render", "-o", "v.mp4"], ["replay", "--viewer-port", "0"])]
+    commands += [
+        [name, str(path), *extra]
+        for path in some
+        for name, *extra in (["plot", "-o", "p.png"], ["render", "-o", "v.mp4"], ["replay", "--viewer-port", "0"])
+    ]
     for command in commands:
         result = subprocess.run(eyesim_command(*command), capture_output=True, text=True, cwd=tmp_path)
         text = files[Path(command[1])]

@@ -40,25 +40,43 @@ def test_render_writes_one_frame_per_time_step_of_the_recording(tour):
     assert meta["size"] == view.size == (720, 720) and meta["fps"] == 30
     frame = np.frombuffer([f for _, f in zip(range(46), reader)][-1], dtype=np.uint8).reshape(720, 720, 3)
     u, v = (round(c) for c in view.pixel(*robot["pos"][:2]))
-    colour = frame[v - 3:v + 4, u + 8:u + 14].reshape(-1, 3).mean(axis=0)  # beside the white heading line
+    colour = frame[v - 3 : v + 4, u + 8 : u + 14].reshape(-1, 3).mean(axis=0)  # beside the white heading line
     assert np.abs(colour - (40, 90, 200)).max() < 30  # robot 1's body is where the recording has it
 
 
 def test_render_takes_speed_fps_size_and_a_time_range(tour):
-    result = eyesim("render", str(tour), "-o", "fast.webm", "--fps", "10", "--speed", "2", "--size", "200",
-                    "--start", "0.5", "--end", "1.5", cwd=tour.parent)
+    result = eyesim(
+        "render",
+        str(tour),
+        "-o",
+        "fast.webm",
+        "--fps",
+        "10",
+        "--speed",
+        "2",
+        "--size",
+        "200",
+        "--start",
+        "0.5",
+        "--end",
+        "1.5",
+        cwd=tour.parent,
+    )
     assert result.returncode == 0, result.stderr
     frames, _ = imageio_ffmpeg.count_frames_and_secs(str(tour.parent / "fast.webm"))
     assert frames == 6  # 1 s at 2x, 10 per second: 0.5, 0.7, ..., 1.5
     assert next(imageio_ffmpeg.read_frames(str(tour.parent / "fast.webm")))["size"] == (200, 200)
 
 
-@pytest.mark.parametrize("args, message", [
-    (["-o", "tour.gif"], "must end in .mp4 or .webm"),
-    (["-o", "x.mp4", "--fps", "0"], "expected 1 to 120"),
-    (["-o", "x.mp4", "--speed", "-1"], "positive factor"),
-    (["-o", "x.mp4", "--end", "99"], "goes from 0 to"),
-])
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["-o", "tour.gif"], "must end in .mp4 or .webm"),
+        (["-o", "x.mp4", "--fps", "0"], "expected 1 to 120"),
+        (["-o", "x.mp4", "--speed", "-1"], "positive factor"),
+        (["-o", "x.mp4", "--end", "99"], "goes from 0 to"),
+    ],
+)
 def test_render_says_what_is_wrong_with_its_options(tour, args, message):
     result = eyesim("render", str(tour), *args, cwd=tour.parent)
     assert result.returncode == 2 and message in result.stderr and "Traceback" not in result.stderr

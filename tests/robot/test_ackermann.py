@@ -12,7 +12,7 @@ from support.driving import EXAMPLE_ROBOTS
 def fitted_circle(points: np.ndarray) -> tuple[float, float, float]:
     """Least-squares circle through points: centre x, y and radius."""
     a = np.c_[2 * points, np.ones(len(points))]
-    cx, cy, c = np.linalg.lstsq(a, (points ** 2).sum(axis=1), rcond=None)[0]
+    cx, cy, c = np.linalg.lstsq(a, (points**2).sum(axis=1), rcond=None)[0]
     return cx, cy, math.sqrt(c + cx * cx + cy * cy)
 
 

@@ -34,10 +34,13 @@ def forward_kinematics(robot_type, positions, chassis: np.ndarray) -> np.ndarray
     return chain[:3, 3]
 
 
-@pytest.mark.parametrize("name,settings", [
-    ("Reacher", [(0, 128, 128), (100, 30, 200), (255, 255, 0), (50, 180, 60)]),
-    ("Picker", [(128, 128, 128), (64, 200, 40), (255, 20, 250)]),
-])
+@pytest.mark.parametrize(
+    "name,settings",
+    [
+        ("Reacher", [(0, 128, 128), (100, 30, 200), (255, 255, 0), (50, 180, 60)]),
+        ("Picker", [(128, 128, 128), (64, 200, 40), (255, 20, 250)]),
+    ],
+)
 def test_the_end_effector_is_where_the_dh_table_puts_it(name, settings):
     robot_type = example_robot(name)
     pose = (1000, 1000, 30)

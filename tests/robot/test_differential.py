@@ -19,8 +19,10 @@ def turned(a, b) -> float:
 def ahead(row, forward: float, left: float) -> tuple[float, float]:
     """The point `forward` m ahead and `left` m to the left of a recorded pose."""
     phi = math.radians(heading(row))
-    return (row["x"] + forward * math.cos(phi) - left * math.sin(phi),
-            row["y"] + forward * math.sin(phi) + left * math.cos(phi))
+    return (
+        row["x"] + forward * math.cos(phi) - left * math.sin(phi),
+        row["y"] + forward * math.sin(phi) + left * math.cos(phi),
+    )
 
 
 @pytest.fixture(scope="module")

@@ -25,10 +25,16 @@ def test_the_json_schema_lists_the_declared_drives():
     assert schema("robot")["properties"]["drive"]["enum"] == [drive.name for drive in DRIVES]
 
 
-@pytest.mark.parametrize("robot,machine,wheeled,swims,mounted", [
-    ("Trolley", MachineType.VEHICLE, True, False, False), ("Car", MachineType.VEHICLE, True, False, False),
-    ("Mecanum", MachineType.VEHICLE, True, False, False), ("Minnow", MachineType.VEHICLE, False, True, False),
-    ("Reacher", MachineType.PLATFORM, False, False, True)])
+@pytest.mark.parametrize(
+    "robot,machine,wheeled,swims,mounted",
+    [
+        ("Trolley", MachineType.VEHICLE, True, False, False),
+        ("Car", MachineType.VEHICLE, True, False, False),
+        ("Mecanum", MachineType.VEHICLE, True, False, False),
+        ("Minnow", MachineType.VEHICLE, False, True, False),
+        ("Reacher", MachineType.PLATFORM, False, False, True),
+    ],
+)
 def test_each_example_robot_gets_its_drives_declared_traits(robot, machine, wheeled, swims, mounted):
     drive = drive_of(example_robot(robot))
     assert (drive.machine_type, drive.wheeled, drive.swims, drive.mounted) == (machine, wheeled, swims, mounted)
@@ -36,8 +42,10 @@ def test_each_example_robot_gets_its_drives_declared_traits(robot, machine, whee
 
 def test_the_declarations_and_the_scene_package_need_no_physics():
     """Reading, checking and converting scene files never loads MuJoCo (only the drives' components do)."""
-    code = ("import sys, eyesim.scene, eyesim.scene.cli, eyesim.scene.drives; "
-            "assert 'mujoco' not in sys.modules, sorted(m for m in sys.modules if m.startswith('eyesim'))")
+    code = (
+        "import sys, eyesim.scene, eyesim.scene.cli, eyesim.scene.drives; "
+        "assert 'mujoco' not in sys.modules, sorted(m for m in sys.modules if m.startswith('eyesim'))"
+    )
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=Path(__file__).parent)
     assert result.returncode == 0, result.stderr
 
@@ -51,6 +59,7 @@ def test_each_declared_component_name_resolves_to_a_kinematics_component():
     """A declaration names its wheel component by module path (declarations sit below the physics);
     the name must resolve, and only drives that need wheels name one."""
     import importlib
+
     named = {}
     for drive in DRIVES:
         if not drive.component:
@@ -58,5 +67,8 @@ def test_each_declared_component_name_resolves_to_a_kinematics_component():
         module, name = drive.component.split(":")
         named[drive.name] = getattr(importlib.import_module(module), name)
         assert drive.wheeled and issubclass(named[drive.name], Kinematics)
-    assert named == {"differential": differential_wheels.DifferentialDrive,
-                     "ackermann": ackermann_wheels.AckermannDrive, "omni": omni_wheels.OmniDrive}
+    assert named == {
+        "differential": differential_wheels.DifferentialDrive,
+        "ackermann": ackermann_wheels.AckermannDrive,
+        "omni": omni_wheels.OmniDrive,
+    }

@@ -16,9 +16,20 @@ EXAMPLES = EXAMPLES_DIR
 def run_example(tmp_path: Path, scene: str, *programs: str) -> tuple[Run, dict]:
     options = []
     for robot, name in enumerate(programs, start=1):
-        built = subprocess.run(eyesim_command("cc", "-O2", "-Wall", "-Wextra", "-Werror",
-                                              str(EXAMPLES / "programs" / f"{name}.c"), "-o", str(tmp_path / name)),
-                               capture_output=True, text=True)
+        built = subprocess.run(
+            eyesim_command(
+                "cc",
+                "-O2",
+                "-Wall",
+                "-Wextra",
+                "-Werror",
+                str(EXAMPLES / "programs" / f"{name}.c"),
+                "-o",
+                str(tmp_path / name),
+            ),
+            capture_output=True,
+            text=True,
+        )
         assert built.returncode == 0, built.stderr
         options += ["--program", f"{robot}={tmp_path / name}"]
     result = run_headless(str(EXAMPLES / "scenes" / f"{scene}.sim"), *options, "--record", "path.csv", cwd=tmp_path)

@@ -51,6 +51,10 @@ def test_the_command_line_option_numbers_the_sensors_the_same_way(tmp_path):
 def test_only_the_robios7_front_and_left_trade_numbers():
     s4 = load_robot_type("S4")
     assert [(p.id, p.name) for p in eyesim6_numbering(s4.psds)] == [
-        (2, "PSD_FRONT"), (1, "PSD_LEFT"), (3, "PSD_RIGHT"), (4, "PSD_BACK")]
+        (2, "PSD_FRONT"),
+        (1, "PSD_LEFT"),
+        (3, "PSD_RIGHT"),
+        (4, "PSD_BACK"),
+    ]
     mako = load_robot_type("Mako")  # FRONT 1 but FRONT_LEFT 2: its own numbering, kept
     assert eyesim6_numbering(mako.psds) == mako.psds

@@ -31,8 +31,9 @@ wheel drive 50 3600 500 55
 wheel turn 50 3600 500 55
 """
 # The same car whose skid reaches 2 mm below the floor the wheels stand on.
-LOW_SKID_CAR = VR_CAR.replace("name SkidCar", "name LowSkidCar").replace("collider box 110 5 30 0 6 100",
-                                                                            "collider box 110 6 30 0 1 100")
+LOW_SKID_CAR = VR_CAR.replace("name SkidCar", "name LowSkidCar").replace(
+    "collider box 110 5 30 0 6 100", "collider box 110 6 30 0 1 100"
+)
 # A two-wheeler with the VR S4's pattern: body boxes 9 and 10 mm above the floor and a rear caster
 # capsule reaching 4 mm below it.
 VR_TWO_WHEELER = """drive DIFFERENTIAL_DRIVE
@@ -107,8 +108,11 @@ def test_low_colliders_glide_are_raised_to_the_floor_and_weigh_their_volume(tmp_
     robot_type = robot_file(tmp_path, VR_TWO_WHEELER)
     sim = Simulation(arena_scene([(robot_type, (1500, 1500, 0))], size=3000))
     model = sim.world.model
-    geoms = [g for g in range(model.ngeom)
-             if (mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_GEOM, g) or "").startswith("robot1/hull")]
+    geoms = [
+        g
+        for g in range(model.ngeom)
+        if (mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_GEOM, g) or "").startswith("robot1/hull")
+    ]
     assert len(geoms) == 3
     for g in geoms:  # all three reach below the 12 mm chassis clearance
         assert list(model.geom_friction[g]) == [0, 0, 0] and model.geom_condim[g] == 1
@@ -116,8 +120,7 @@ def test_low_colliders_glide_are_raised_to_the_floor_and_weigh_their_volume(tmp_
     bottom = model.geom_pos[capsule][2] - model.geom_size[capsule][0] - model.geom_size[capsule][1]
     assert bottom == pytest.approx(0.001)
     # The hull's centre of mass is its colliders' centroid by volume (not the mean of their centres).
-    volumes = [0.095 * 0.074 * 0.065, 0.095 * 0.040 * 0.030,
-               math.pi * 0.01 ** 2 * 0.03 + 4 / 3 * math.pi * 0.01 ** 3]
+    volumes = [0.095 * 0.074 * 0.065, 0.095 * 0.040 * 0.030, math.pi * 0.01**2 * 0.03 + 4 / 3 * math.pi * 0.01**3]
     centres = [model.geom_pos[g] for g in geoms]
     expected = sum(v * c for v, c in zip(volumes, centres)) / sum(volumes)
     hull = sim.world.body_id("robot1")

@@ -32,8 +32,12 @@ def step_responses(robot: str) -> list[float]:
             if step + 1 == round((AT - 0.01) / dt):
                 start = [motor.angle for motor in motors]
             elif step + 1 == round((AT + 0.01) / dt):
-                errors.append(max(abs((motor.angle - angle) / 0.02 / motor.max_speed * 100 - percent)
-                                  for motor, angle in zip(motors, start)))
+                errors.append(
+                    max(
+                        abs((motor.angle - angle) / 0.02 / motor.max_speed * 100 - percent)
+                        for motor, angle in zip(motors, start)
+                    )
+                )
     return errors
 
 

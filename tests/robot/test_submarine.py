@@ -30,8 +30,9 @@ def test_a_buoyant_submarine_rises_and_floats_at_the_surface(drive, tmp_path: Pa
     buoyant = (EXAMPLE_ROBOTS / "Minnow.robi").read_text().replace("name Minnow", "name Bobber")
     buoyant = buoyant.replace("buoyancy 4.0", "buoyancy 5.0")  # 5 litres displaced, 4 kg
     (tmp_path / "Bobber.robi").write_text(buoyant)
-    run = drive(["Bobber 1500 1500 0"], {1: "float_up"}, extra=[f"robi {tmp_path / 'Bobber.robi'}"],
-                wall_height=SURFACE)
+    run = drive(
+        ["Bobber 1500 1500 0"], {1: "float_up"}, extra=[f"robi {tmp_path / 'Bobber.robi'}"], wall_height=SURFACE
+    )
     depths = [z for second, z in run.values(1, "depth")]
     assert depths[0] == 300
     assert depths[3] > depths[0] + 200  # rising

@@ -4,7 +4,6 @@ corner ends its manoeuvres stalled instead of waiting for ever (real C programs)
 import math
 
 
-
 def heading(row) -> float:
     """Heading in degrees of a recorded pose (the robot stays level)."""
     return math.degrees(2 * math.atan2(row["qz"], row["qw"]))
@@ -18,8 +17,10 @@ def heading_error(start, end, turns: int) -> float:
 def test_twelve_quarter_turns_and_a_square_end_on_the_true_heading(drive):
     run = drive(["S4 1500 1500 0"], {1: "vw_accuracy"})
     at = run.marks(1)
-    errors = {speed: heading_error(previous, at[f"turns{speed}"], 12)
-              for speed, previous in ((20, at["start"]), (45, at["turns20"]), (90, at["turns45"]))}
+    errors = {
+        speed: heading_error(previous, at[f"turns{speed}"], 12)
+        for speed, previous in ((20, at["start"]), (45, at["turns20"]), (90, at["turns45"]))
+    }
     assert all(abs(error) <= 0.5 for error in errors.values()), errors
     assert abs(heading_error(at["turns90"], at["square"], 4)) <= 0.5
     start, end = at["turns90"], at["square"]
@@ -40,8 +41,10 @@ def test_a_robot_jammed_in_a_corner_ends_its_manoeuvres_stalled(drive):
 def ahead(row, forward: float, left: float) -> tuple[float, float]:
     """The point `forward` m ahead and `left` m to the left of a recorded pose."""
     phi = math.radians(heading(row))
-    return (row["x"] + forward * math.cos(phi) - left * math.sin(phi),
-            row["y"] + forward * math.sin(phi) + left * math.cos(phi))
+    return (
+        row["x"] + forward * math.cos(phi) - left * math.sin(phi),
+        row["y"] + forward * math.sin(phi) + left * math.cos(phi),
+    )
 
 
 def test_vw_drive_as_far_ahead_as_aside_is_a_quarter_circle(drive):

@@ -16,9 +16,11 @@ def heading(row) -> float:
 def moved(start, end, offset: float = 0.0) -> tuple[float, float, float]:
     """How far (mm ahead, mm to the left, degrees turned) the point `offset` m ahead of the robot's
     centre moved from one recorded pose to the other, in the frame of the first."""
+
     def point(row):
         phi = math.radians(heading(row))
         return row["x"] + offset * math.cos(phi), row["y"] + offset * math.sin(phi)
+
     (x0, y0), (x1, y1) = point(start), point(end)
     phi = math.radians(heading(start))
     ahead = (x1 - x0) * math.cos(phi) + (y1 - y0) * math.sin(phi)

@@ -42,8 +42,11 @@ def snapshot() -> dict:
     for key, path in robi_files().items():
         diagnostics = Diagnostics()
         robot = parse_robi(read_text(path), key, diagnostics)
-        result[key] = {"description": plain(robot), "diagnostics": [str(d) for d in diagnostics.items],
-                       "written": write_robi(robot)}
+        result[key] = {
+            "description": plain(robot),
+            "diagnostics": [str(d) for d in diagnostics.items],
+            "written": write_robi(robot),
+        }
     return result
 
 

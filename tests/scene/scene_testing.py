@@ -21,13 +21,16 @@ def manifest() -> list[tuple[str, str]]:
 def corpus_texts(kind: str) -> list[str]:
     """The decoded texts of the corpus files of one kind (distinct ones only)."""
     from eyesim.scene.lexer import read_text
+
     texts = {read_text(CORPUS / path) for path, k in manifest() if k == kind}
     return sorted(texts)
 
 
 def mutated(texts: list[str]):
     """A strategy: one of `texts` with random characters and lines inserted, deleted or changed."""
-    alphabet = st.sampled_from(list(" \t\n\r;#\"'()_|.,-+0123456789eE.SsUxXoOF") + ["push", "pop", "psd", "nan", "1e999"])
+    alphabet = st.sampled_from(
+        list(" \t\n\r;#\"'()_|.,-+0123456789eE.SsUxXoOF") + ["push", "pop", "psd", "nan", "1e999"]
+    )
     edit = st.tuples(st.integers(0, 10_000), st.integers(0, 3), alphabet)
 
     @st.composite
@@ -38,9 +41,9 @@ def mutated(texts: list[str]):
             if op == 0:
                 text = text[:i] + piece + text[i:]
             elif op == 1:
-                text = text[:i] + text[i + len(piece):]
+                text = text[:i] + text[i + len(piece) :]
             elif op == 2:
-                text = text[:i] + piece + text[i + 1:]
+                text = text[:i] + piece + text[i + 1 :]
             else:
                 lines = text.split("\n")
                 j = position % len(lines)
@@ -53,15 +56,20 @@ def mutated(texts: list[str]):
 
 def random_text():
     """A strategy: arbitrary text, biased towards the characters scene files use."""
-    return st.one_of(st.text(max_size=300),
-                     st.text(alphabet=st.sampled_from(list(" \t\n;#\"'_|.-+0123456789abcdefSUDLRoxF()")), max_size=300))
+    return st.one_of(
+        st.text(max_size=300),
+        st.text(alphabet=st.sampled_from(list(" \t\n;#\"'_|.-+0123456789abcdefSUDLRoxF()")), max_size=300),
+    )
 
 
 def without_locations(value):
     """A document compared without source names and locations (they differ across copies)."""
     if dataclasses.is_dataclass(value):
-        return tuple((f.name, without_locations(getattr(value, f.name))) for f in dataclasses.fields(value)
-                     if f.name not in ("location", "source", "row_lines"))
+        return tuple(
+            (f.name, without_locations(getattr(value, f.name)))
+            for f in dataclasses.fields(value)
+            if f.name not in ("location", "source", "row_lines")
+        )
     if isinstance(value, (tuple, list)):
         return tuple(without_locations(v) for v in value)
     return value

@@ -33,8 +33,12 @@ def test_s4():
     s4 = load_robot_type("S4")
     assert (s4.drive, s4.length, s4.width, s4.height, s4.mass, s4.axis_offset) == ("differential", 180, 150, 90, 0.8, 0)
     assert s4.wheels == WheelSpec(54, 3600, 1100, 90)
-    assert s4.psds == (PsdSpec(1, "PSD_FRONT", 90, 0, 40, 0), PsdSpec(2, "PSD_LEFT", 0, 75, 40, 90),
-                       PsdSpec(3, "PSD_RIGHT", 0, -75, 40, -90), PsdSpec(4, "PSD_BACK", -90, 0, 40, 180))
+    assert s4.psds == (
+        PsdSpec(1, "PSD_FRONT", 90, 0, 40, 0),
+        PsdSpec(2, "PSD_LEFT", 0, 75, 40, 90),
+        PsdSpec(3, "PSD_RIGHT", 0, -75, 40, -90),
+        PsdSpec(4, "PSD_BACK", -90, 0, 40, 180),
+    )
     # every sensor on the chassis edge, facing outward
     for psd in s4.psds:
         assert abs(psd.x) == s4.length / 2 or abs(psd.y) == s4.width / 2
@@ -63,11 +67,21 @@ def test_mako_is_numbered_as_the_eyesim_submarine_examples_expect():
     mako = load_robot_type("Mako")
     assert mako.drive == "submarine"
     thrusters = {t.name: (t.motor, (t.dx, t.dy, t.dz)) for t in mako.thrusters}
-    assert thrusters == {"LEFT": (1, (1, 0, 0)), "FRONT": (2, (0, 0, 1)), "RIGHT": (3, (1, 0, 0)),
-                         "BACK": (4, (0, 0, 1))}
+    assert thrusters == {
+        "LEFT": (1, (1, 0, 0)),
+        "FRONT": (2, (0, 0, 1)),
+        "RIGHT": (3, (1, 0, 0)),
+        "BACK": (4, (0, 0, 1)),
+    }
     by_id = {p.id: p for p in mako.psds}
-    assert [by_id[i].name for i in range(1, 7)] == ["PSD_FRONT", "PSD_FRONT_LEFT", "PSD_FRONT_RIGHT",
-                                                    "PSD_BACK_LEFT", "PSD_BACK_RIGHT", "PSD_DOWN"]
+    assert [by_id[i].name for i in range(1, 7)] == [
+        "PSD_FRONT",
+        "PSD_FRONT_LEFT",
+        "PSD_FRONT_RIGHT",
+        "PSD_BACK_LEFT",
+        "PSD_BACK_RIGHT",
+        "PSD_DOWN",
+    ]
     assert by_id[6].pitch == -90 and by_id[1].heading == 0 and by_id[2].heading == 90
     assert mako.camera is not None and mako.camera.x > 0
     # it floats: more water displaced than it weighs
@@ -94,16 +108,18 @@ def test_every_stock_robot_name_stands_for_a_built_in_robot():
         assert builtins.robot_path(stock) is None, f"{stock} is a built-in itself"
 
 
-@pytest.mark.parametrize("reference, builtin, drive", [
-    ("%sim%/robots/ModelCar/ModelCar.robi", "Car", "ackermann"),  # EyeSim 6 drivemodes/Ackermann.sim
-    ("%sim%/robots/Omni/Omni2.robi", "Omni", "omni"),  # drivemodes/Omni.sim
-    ("%sim%/robots/Eve/Eve.robi", "S4", "differential"),  # maze/MazeSearch.sim
-    ("/robots/Ackermann/Ackermann.robi", "Car", "ackermann"),  # EyeSim VR's test assets
-    ("robots/Omni/Omni3.robi", "Omni", "omni"),  # a file of EyeSim's Omni folder: named by its folder
-    ("..\\robots\\ModelCar\\ModelCar2.robi", "Car", "ackermann"),
-])
-def test_a_missing_stock_robot_file_gets_the_built_in_of_its_drive_and_says_which(tmp_path, reference, builtin,
-                                                                                  drive):
+@pytest.mark.parametrize(
+    "reference, builtin, drive",
+    [
+        ("%sim%/robots/ModelCar/ModelCar.robi", "Car", "ackermann"),  # EyeSim 6 drivemodes/Ackermann.sim
+        ("%sim%/robots/Omni/Omni2.robi", "Omni", "omni"),  # drivemodes/Omni.sim
+        ("%sim%/robots/Eve/Eve.robi", "S4", "differential"),  # maze/MazeSearch.sim
+        ("/robots/Ackermann/Ackermann.robi", "Car", "ackermann"),  # EyeSim VR's test assets
+        ("robots/Omni/Omni3.robi", "Omni", "omni"),  # a file of EyeSim's Omni folder: named by its folder
+        ("..\\robots\\ModelCar\\ModelCar2.robi", "Car", "ackermann"),
+    ],
+)
+def test_a_missing_stock_robot_file_gets_the_built_in_of_its_drive_and_says_which(tmp_path, reference, builtin, drive):
     (tmp_path / "w.wld").write_text("floor 3000 3000\n")
     (tmp_path / "a.sim").write_text(f"world w.wld\nrobi {reference} drive.dll 600 500 0\n")
     scene = load_scene(tmp_path / "a.sim")
@@ -129,7 +145,13 @@ def test_omni_is_numbered_as_eyesims_omni_robot_files():
     omni = load_robot_type("Omni")
     assert omni.drive == "omni" and omni.wheels == WheelSpec(100, 360, 7300, 220)
     assert [(p.id, p.name) for p in omni.psds] == [
-        (1, "PSD_FRONT"), (2, "PSD_LEFT"), (3, "PSD_RIGHT"), (4, "PSD_BACK"), (5, "PSD_FRONT2"),
-        (6, "PSD_LEFTDIAG"), (7, "PSD_RIGHTDIAG")]
+        (1, "PSD_FRONT"),
+        (2, "PSD_LEFT"),
+        (3, "PSD_RIGHT"),
+        (4, "PSD_BACK"),
+        (5, "PSD_FRONT2"),
+        (6, "PSD_LEFTDIAG"),
+        (7, "PSD_RIGHTDIAG"),
+    ]
     assert omni.camera is not None and omni.camera.x > 0
     assert omni.drive_motors[::2] == ("MOTOR_FL", "MOTOR_FR", "MOTOR_BL", "MOTOR_BR")

@@ -33,20 +33,31 @@ def test_bad_call_times_are_errors_with_their_place():
         "c.sim:2:10: error: settings: CALLTIME expects a time in ms from 0 to 1000, found '-1'",
         "c.sim:2:22: error: settings: CALLTIME expects a time in ms from 0 to 1000, found 'fast'",
         "c.sim:2:36: error: settings: CALLTIME expects a time in ms from 0 to 1000, found '5000'",
-        "c.sim:2:50: error: settings: CALLTIME needs a value: CALLTIME=<a time in ms from 0 to 1000>"]
+        "c.sim:2:50: error: settings: CALLTIME needs a value: CALLTIME=<a time in ms from 0 to 1000>",
+    ]
     text = dumps(to_json("scene", parse_sim("settings CALLTIME=2\n", "d.sim", Diagnostics())))
     diagnostics = Diagnostics()
     parse_json(text.replace('"call_time": 2.0', '"call_time": -2'), "e.json", diagnostics)
     assert [str(d) for d in diagnostics.items] == [
-        "e.json:5:18: error: /settings/call_time: expected a number >= 0, found -2"]
+        "e.json:5:18: error: /settings/call_time: expected a number >= 0, found -2"
+    ]
 
-@pytest.mark.parametrize("value,message", [
-    ("-1", "eyesim run: --call-time -1: must be from 0 to 1000 (ms)"),
-    ("2000", "eyesim run: --call-time 2000: must be from 0 to 1000 (ms)"),
-    ("soon", "argument --call-time: invalid float value: 'soon'"),
-])
+
+@pytest.mark.parametrize(
+    "value,message",
+    [
+        ("-1", "eyesim run: --call-time -1: must be from 0 to 1000 (ms)"),
+        ("2000", "eyesim run: --call-time 2000: must be from 0 to 1000 (ms)"),
+        ("soon", "argument --call-time: invalid float value: 'soon'"),
+    ],
+)
 def test_bad_call_times_on_the_command_line(tmp_path, value, message):
-    result = subprocess.run(eyesim_command("run", "--headless", "--port", "0", "--until", "0.1", "--call-time", value),
-                            capture_output=True, text=True, cwd=tmp_path, timeout=60)
+    result = subprocess.run(
+        eyesim_command("run", "--headless", "--port", "0", "--until", "0.1", "--call-time", value),
+        capture_output=True,
+        text=True,
+        cwd=tmp_path,
+        timeout=60,
+    )
     assert result.returncode == 2
     assert message in result.stderr

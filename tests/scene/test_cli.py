@@ -73,8 +73,10 @@ def test_convert_errors(tmp_path, capsys):
     assert not (tmp_path / "out.wld").exists()
 
 
-@pytest.mark.parametrize("kind, title", [("scene", "EyeSim scene"), ("robi", "EyeSim robot type"),
-                                         ("esObj", "EyeSim object type"), ("maz", "EyeSim maze")])
+@pytest.mark.parametrize(
+    "kind, title",
+    [("scene", "EyeSim scene"), ("robi", "EyeSim robot type"), ("esObj", "EyeSim object type"), ("maz", "EyeSim maze")],
+)
 def test_schema(kind, title, capsys):
     assert run("schema", kind) == 0
     assert json.loads(capsys.readouterr().out)["title"] == title
@@ -82,6 +84,7 @@ def test_schema(kind, title, capsys):
 
 def test_schema_export_writes_every_kind(tmp_path, capsys):
     from eyesim.scene.json_format import KINDS, schema_text
+
     assert run("schema", "export", str(tmp_path / "schemas")) == 0
     printed = capsys.readouterr().out.split()
     for kind in KINDS:
@@ -104,14 +107,20 @@ def test_schema_unknown_kind(capsys):
 def test_registered_in_the_eyesim_command(capsys):
     try:
         from eyesim.app.cli import main
+
         main(["schema", "world"])
     except ImportError as e:  # another part of the command is not there yet
         pytest.skip(f"eyesim command incomplete: {e}")
     assert "EyeSim world" in capsys.readouterr().out
 
 
-EYESIM6_EXAMPLES = ("drivemodes/Diff.sim", "drivemodes/Ackermann.sim", "drivemodes/Omni.sim",
-                    "pantilt/PanTilt.sim", "maze/MazeSearch.sim")
+EYESIM6_EXAMPLES = (
+    "drivemodes/Diff.sim",
+    "drivemodes/Ackermann.sim",
+    "drivemodes/Omni.sim",
+    "pantilt/PanTilt.sim",
+    "maze/MazeSearch.sim",
+)
 
 
 @pytest.mark.parametrize("scene", EYESIM6_EXAMPLES)

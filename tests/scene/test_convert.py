@@ -36,15 +36,23 @@ def test_errors_give_no_output(tmp_path):
     assert convert(bad, diagnostics) is None and diagnostics.has_errors
 
 
-@pytest.mark.parametrize("name, suffix, out", [("a.sim", ".json", "a.sim.json"), ("a.sim.json", ".sim", "a.sim"),
-                                               ("w.json", ".wld", "w.wld"), ("R.robi", ".json", "R.robi.json"),
-                                               ("o.esobj.json", ".esObj", "o.esobj")])
+@pytest.mark.parametrize(
+    "name, suffix, out",
+    [
+        ("a.sim", ".json", "a.sim.json"),
+        ("a.sim.json", ".sim", "a.sim"),
+        ("w.json", ".wld", "w.wld"),
+        ("R.robi", ".json", "R.robi.json"),
+        ("o.esobj.json", ".esObj", "o.esobj"),
+    ],
+)
 def test_default_output_names(name, suffix, out):
     assert default_output(Path("d") / name, suffix) == Path("d") / out
 
 
 def test_a_converted_scene_loads_to_the_same_scene(tmp_path):
     from eyesim.scene import load_scene
+
     for name in ("Cluster.sim", "world1.wld"):
         (tmp_path / name).write_bytes((CORPUS / "mikyeo__CITS2200" / name).read_bytes())
     text, _ = convert(tmp_path / "world1.wld", Diagnostics())
@@ -53,7 +61,8 @@ def test_a_converted_scene_loads_to_the_same_scene(tmp_path):
     (tmp_path / "Cluster.sim.json").write_text(scene_json.replace('"world1.wld"', '"world1.wld.json"'))
     original, converted = load_scene(tmp_path / "Cluster.sim"), load_scene(tmp_path / "Cluster.sim.json")
     assert converted.world.walls == original.world.walls
-    assert [(r.type_name, r.pose, r.program) for r in converted.robots] == \
-        [(r.type_name, r.pose, r.program) for r in original.robots]
+    assert [(r.type_name, r.pose, r.program) for r in converted.robots] == [
+        (r.type_name, r.pose, r.program) for r in original.robots
+    ]
     assert [(o.type_name, o.pose) for o in converted.objects] == [(o.type_name, o.pose) for o in original.objects]
     assert converted.robot_types == original.robot_types and converted.settings == original.settings

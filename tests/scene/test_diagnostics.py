@@ -10,8 +10,11 @@ def test_scene_error_lists_every_diagnostic_in_file_order():
     diagnostics.warning(Location("a.wld", 9, 4), "note")
     diagnostics.error(Location("b.sim", 1, 5), "first")
     error = SceneError(diagnostics.items)
-    assert str(error).splitlines() == ["a.wld:9:4: warning: note", "b.sim:1:5: error: first",
-                                       "b.sim:2:1: error: second"]
+    assert str(error).splitlines() == [
+        "a.wld:9:4: warning: note",
+        "b.sim:1:5: error: first",
+        "b.sim:2:1: error: second",
+    ]
     assert [d.message for d in error.errors] == ["first", "second"]
 
 

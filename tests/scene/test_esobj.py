@@ -32,8 +32,11 @@ def test_crate_with_stray_number_and_fixed():
 
 def test_box_centre_first_then_size_and_axis_letters():
     obj, _ = parse("collider box 10 20 30 1 2 3\ncollider capsule 0 0 0 5 50 x\ncollider sphere 1 2 3 4\n")
-    assert obj.colliders == (Collider("box", (3, 1, 2), (30, -10, 20)), Collider("capsule", (5, 50), (0, 0, 0), "y"),
-                             Collider("sphere", (4,), (3, -1, 2)))
+    assert obj.colliders == (
+        Collider("box", (3, 1, 2), (30, -10, 20)),
+        Collider("capsule", (5, 50), (0, 0, 0), "y"),
+        Collider("sphere", (4,), (3, -1, 2)),
+    )
 
 
 def test_bare_2018_shapes_and_name_from_file():
@@ -42,14 +45,25 @@ def test_bare_2018_shapes_and_name_from_file():
 
 
 def test_our_dialect_is_already_in_the_object_frame():
-    obj, diagnostics = parse("dialect eyesim\nname Can\nscale 0.5\ncollider cylinder 0 0 61 33 122 z\ncolor 200 30 30\n")
+    obj, diagnostics = parse(
+        "dialect eyesim\nname Can\nscale 0.5\ncollider cylinder 0 0 61 33 122 z\ncolor 200 30 30\n"
+    )
     assert obj.colliders == (Collider("cylinder", (33, 122), (0, 0, 61), "z"),) and obj.color == (200, 30, 30)
     assert not diagnostics.items
 
 
-@pytest.mark.parametrize("line, column", [("scale 0", 7), ("mass x", 6), ("collider box 1 2 3", 10),
-                                          ("collider capsule 0 0 0 1 2 w", 28), ("buoyancy -1", 10),
-                                          ("color 1 2 256", 11), ("obj", 1)])
+@pytest.mark.parametrize(
+    "line, column",
+    [
+        ("scale 0", 7),
+        ("mass x", 6),
+        ("collider box 1 2 3", 10),
+        ("collider capsule 0 0 0 1 2 w", 28),
+        ("buoyancy -1", 10),
+        ("color 1 2 256", 11),
+        ("obj", 1),
+    ],
+)
 def test_errors(line, column):
     _, diagnostics = parse(line)
     assert [(d.kind, d.location.column) for d in diagnostics.items][:1] == [("error", column)]
@@ -72,13 +86,27 @@ size = st.floats(0.001, 1e4, allow_nan=False)
 colliders = st.one_of(
     st.builds(Collider, st.just("box"), st.tuples(size, size, size), st.tuples(coord, coord, coord)),
     st.builds(Collider, st.just("sphere"), st.tuples(size), st.tuples(coord, coord, coord)),
-    st.builds(Collider, st.sampled_from(["capsule", "cylinder"]), st.tuples(size, size), st.tuples(coord, coord, coord),
-              st.sampled_from("xyz")))
-objects = st.builds(ObjectType, name=st.text("abc XYZ_1", min_size=1, max_size=10).map(str.strip).filter(bool),
-                    source=st.just("o.esObj"), model=st.none() | st.just("a b.obj"), scale=size, mass=size,
-                    colliders=st.lists(colliders, max_size=3).map(tuple), color=st.tuples(*[st.integers(0, 255)] * 3),
-                    buoyancy=st.floats(0, 100), fixed=st.booleans(),
-                    center_of_mass=st.none() | st.tuples(coord, coord, coord))
+    st.builds(
+        Collider,
+        st.sampled_from(["capsule", "cylinder"]),
+        st.tuples(size, size),
+        st.tuples(coord, coord, coord),
+        st.sampled_from("xyz"),
+    ),
+)
+objects = st.builds(
+    ObjectType,
+    name=st.text("abc XYZ_1", min_size=1, max_size=10).map(str.strip).filter(bool),
+    source=st.just("o.esObj"),
+    model=st.none() | st.just("a b.obj"),
+    scale=size,
+    mass=size,
+    colliders=st.lists(colliders, max_size=3).map(tuple),
+    color=st.tuples(*[st.integers(0, 255)] * 3),
+    buoyancy=st.floats(0, 100),
+    fixed=st.booleans(),
+    center_of_mass=st.none() | st.tuples(coord, coord, coord),
+)
 
 
 @settings(max_examples=200, deadline=None)

@@ -28,8 +28,13 @@ REFERENCED = sorted(relative for relative, kind in manifest() if kind in ("robi"
 
 
 def fuzz_settings(test):
-    test = settings(max_examples=EXAMPLES, deadline=None, derandomize=SEED is None, database=None,
-                    suppress_health_check=list(HealthCheck))(test)
+    test = settings(
+        max_examples=EXAMPLES,
+        deadline=None,
+        derandomize=SEED is None,
+        database=None,
+        suppress_health_check=list(HealthCheck),
+    )(test)
     return seed(int(SEED))(test) if SEED is not None else test
 
 
@@ -38,13 +43,15 @@ def changed(draw, content: bytes):
     """`content` cut short, with bytes changed, or both."""
     data = bytearray(content)
     if draw(st.booleans()):
-        del data[draw(st.integers(0, len(data))):]
+        del data[draw(st.integers(0, len(data))) :]
     for _ in range(draw(st.integers(0, 6))):
         position = draw(st.integers(0, len(data)))
-        piece = draw(st.binary(min_size=1, max_size=4) | st.sampled_from([b"\n", b"\r\n", b"\xe2\x82", b"-", b"9" * 40,
-                                                                            b"1e999", b"\x00", b"\t"]))
+        piece = draw(
+            st.binary(min_size=1, max_size=4)
+            | st.sampled_from([b"\n", b"\r\n", b"\xe2\x82", b"-", b"9" * 40, b"1e999", b"\x00", b"\t"])
+        )
         if draw(st.booleans()):
-            data[position:position + len(piece)] = piece
+            data[position : position + len(piece)] = piece
         else:
             data[position:position] = piece
     return bytes(data)

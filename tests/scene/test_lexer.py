@@ -62,8 +62,19 @@ def test_decode_rejects_binary():
         decode(b"abc\x00def")
 
 
-@pytest.mark.parametrize("text, value", [("90", 90.0), ("-90", -90.0), ("+900", 900.0), ("22.7", 22.7),
-                                         (".5", 0.5), ("1.", 1.0), ("1e3", 1000.0), ("-0", 0.0)])
+@pytest.mark.parametrize(
+    "text, value",
+    [
+        ("90", 90.0),
+        ("-90", -90.0),
+        ("+900", 900.0),
+        ("22.7", 22.7),
+        (".5", 0.5),
+        ("1.", 1.0),
+        ("1e3", 1000.0),
+        ("-0", 0.0),
+    ],
+)
 def test_numbers(text, value):
     assert number(text) == value
 

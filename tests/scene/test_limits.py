@@ -96,8 +96,9 @@ def test_a_very_long_program_name_is_refused_at_its_line(tmp_path):
     path = scene_with(tmp_path, ["S4 500 500 0", "S4 1500 500 0 " + "a" * 5000 + ".py"])
     error = refusal(path)
     assert (error.location.line, error.location.column) == (3, 1)
-    assert error.message == ("file name '" + "a" * 57 + "...' is 5003 bytes long, more than 4096, the limit "
-                             "for a file name")
+    assert error.message == (
+        "file name '" + "a" * 57 + "...' is 5003 bytes long, more than 4096, the limit for a file name"
+    )
 
 
 def test_a_folder_name_past_the_file_systems_limit_is_refused(tmp_path):
@@ -124,15 +125,19 @@ def test_a_file_with_too_many_lines_is_refused_at_the_first_line_past_it(tmp_pat
     path = write(tmp_path, "many.wld", ["pop"] * (limits.MAX_LINES + 1))
     error = refusal(path)
     assert error.location.line == limits.MAX_LINES + 1
-    assert error.message == (f"the file has {limits.MAX_LINES + 1} lines, more than {limits.MAX_LINES}, the limit "
-                             "for a scene file: not read")
+    assert error.message == (
+        f"the file has {limits.MAX_LINES + 1} lines, more than {limits.MAX_LINES}, the limit for a scene file: not read"
+    )
 
 
 def test_a_world_at_the_wall_limit_loads_and_one_more_wall_is_refused_at_its_line(tmp_path):
     walls = [f"{i % 200 * 50} {i // 200 * 50} {i % 200 * 50 + 20} {i // 200 * 50}" for i in range(limits.MAX_WALLS)]
     assert len(load_scene(write(tmp_path, "full.wld", walls)).world.walls) == limits.MAX_WALLS
     error = refusal(write(tmp_path, "over.wld", ["floor 10000 10000", *walls, "0 0 0 9000", "0 0 9000 0"]))
-    assert (error.location.line, error.message) == (limits.MAX_WALLS + 2, "more than 20000 walls, the limit for a world")
+    assert (error.location.line, error.message) == (
+        limits.MAX_WALLS + 2,
+        "more than 20000 walls, the limit for a world",
+    )
 
 
 def test_a_maze_past_the_wall_limit_is_refused(tmp_path):
@@ -144,8 +149,10 @@ def test_a_maze_past_the_wall_limit_is_refused(tmp_path):
 
 
 def test_a_json_world_past_the_wall_limit_is_refused_before_its_schema_is_checked(tmp_path):
-    walls = [{"x1": i % 300 * 10, "y1": i // 300 * 10, "x2": i % 300 * 10 + 5, "y2": i // 300 * 10}
-             for i in range(limits.MAX_WALLS + 1)]
+    walls = [
+        {"x1": i % 300 * 10, "y1": i // 300 * 10, "x2": i % 300 * 10 + 5, "y2": i // 300 * 10}
+        for i in range(limits.MAX_WALLS + 1)
+    ]
     path = tmp_path / "walls.json"
     path.write_text(json.dumps({"format": "eyesim.world", "version": 1, "walls": walls}))
     start = time.perf_counter()
@@ -163,7 +170,10 @@ def test_robots_past_the_limit_are_refused_at_the_first_one_too_many(tmp_path):
 def test_objects_past_the_limit_are_refused_at_the_first_one_too_many(tmp_path):
     cans = [f"Can {100 + 100 * (i % 50)} {100 + 100 * (i // 50)} 0" for i in range(limits.MAX_OBJECTS + 1)]
     error = refusal(scene_with(tmp_path, cans, world=["floor 6000 6000"]))
-    assert (error.location.line, error.message) == (1 + limits.MAX_OBJECTS + 1, "more than 2000 objects, the limit for a scene")
+    assert (error.location.line, error.message) == (
+        1 + limits.MAX_OBJECTS + 1,
+        "more than 2000 objects, the limit for a scene",
+    )
 
 
 def test_markers_past_the_limit_are_refused(tmp_path):

@@ -9,8 +9,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from eyesim.scene import (DEFAULT_SCENE, Pose, SceneError, load_object_type, load_robot_type, load_scene,
-                          load_world)
+from eyesim.scene import DEFAULT_SCENE, Pose, SceneError, load_object_type, load_robot_type, load_scene, load_world
 from eyesim.scene.diagnostics import Diagnostics
 from eyesim.scene.loader import read_definition
 from scene_testing import CORPUS, corpus_texts, manifest
@@ -102,8 +101,11 @@ def test_programs_resolve_to_absolute_paths(tmp_path):
 
 
 def test_missing_references_fall_back_with_warnings(tmp_path):
-    scene = make(tmp_path, "a.sim", "world nowhere.wld\nrobot bots/Rover.robi\nobject props/Cone.esObj\n"
-                                    "Rover 1 2 3\nCone 400 5 6\n")  # apart: an overlap would warn too
+    scene = make(
+        tmp_path,
+        "a.sim",
+        "world nowhere.wld\nrobot bots/Rover.robi\nobject props/Cone.esObj\nRover 1 2 3\nCone 400 5 6\n",
+    )  # apart: an overlap would warn too
     loaded = load_scene(scene)
     assert loaded.world.walls == () and loaded.robot_types["Rover"].wheels.diameter == 54
     assert loaded.object_types["Cone"].colliders[0].kind == "box"
@@ -158,8 +160,19 @@ def test_objects_take_no_program(tmp_path):
 def test_bare_worlds_mazes_and_json(tmp_path):
     maze = load_scene(CORPUS / "ASAX21__VRRoboticProject/Test Assets/maze1.maz")
     assert maze.robots == () and len(maze.objects) == 4 and set(maze.object_types) == {"Crate", "Soccer"}
-    world = make(tmp_path, "w.json", json.dumps({"format": "eyesim.world", "version": 1, "floor_width": 100,
-                                                 "floor_height": 100, "walls": [{"x1": 0, "y1": 0, "x2": 1, "y2": 0}]}))
+    world = make(
+        tmp_path,
+        "w.json",
+        json.dumps(
+            {
+                "format": "eyesim.world",
+                "version": 1,
+                "floor_width": 100,
+                "floor_height": 100,
+                "walls": [{"x1": 0, "y1": 0, "x2": 1, "y2": 0}],
+            }
+        ),
+    )
     assert len(load_scene(world).world.walls) == 1
 
 
@@ -230,8 +243,10 @@ def test_any_file_content_raises_only_scene_errors(suffix, content):
 def test_scenes_with_odd_references_raise_only_scene_errors(scene_text, reference):
     with tempfile.TemporaryDirectory() as directory:
         path = Path(directory) / "odd.sim"
-        path.write_text(scene_text + "\nworld " + json.dumps(reference) + "\nrobot " + json.dumps(reference) + "\n",
-                        encoding="utf-8")
+        path.write_text(
+            scene_text + "\nworld " + json.dumps(reference) + "\nrobot " + json.dumps(reference) + "\n",
+            encoding="utf-8",
+        )
         try:
             load_scene(path)
         except SceneError:

@@ -27,10 +27,18 @@ def test_documented_example():
     world, diagnostics = world_of(EXAMPLE)
     assert not diagnostics.items
     assert (world.floor_width, world.floor_height) == (1000, 1000)
-    assert sorted(world.walls, key=lambda w: (w.x1, w.y1, w.x2, w.y2)) == sorted([
-        Wall(0, 0, 1000, 0), Wall(250, 500, 750, 500), Wall(0, 1000, 1000, 1000),
-        Wall(0, 0, 0, 1000), Wall(250, 250, 250, 750), Wall(500, 750, 500, 1000), Wall(1000, 0, 1000, 1000),
-    ], key=lambda w: (w.x1, w.y1, w.x2, w.y2))
+    assert sorted(world.walls, key=lambda w: (w.x1, w.y1, w.x2, w.y2)) == sorted(
+        [
+            Wall(0, 0, 1000, 0),
+            Wall(250, 500, 750, 500),
+            Wall(0, 1000, 1000, 1000),
+            Wall(0, 0, 0, 1000),
+            Wall(250, 250, 250, 750),
+            Wall(500, 750, 500, 1000),
+            Wall(1000, 0, 1000, 1000),
+        ],
+        key=lambda w: (w.x1, w.y1, w.x2, w.y2),
+    )
     assert world.start_positions == (StartPosition("s", Pose(125, 375, 90)), StartPosition("r", Pose(625, 375, 0)))
 
 
@@ -54,8 +62,11 @@ def test_balls_crates_posts_and_finish():
     world, diagnostics = world_of(" _______\n|o O . |\n|x X F |\n|_______|\n")
     assert not diagnostics.items
     assert [(o.type_name, o.pose) for o in world.objects] == [
-        ("Soccer", Pose(180, 900, 0)), ("Soccer", Pose(540, 900, 0)),
-        ("Crate", Pose(180, 540, 0)), ("Crate", Pose(540, 540, 0))]
+        ("Soccer", Pose(180, 900, 0)),
+        ("Soccer", Pose(540, 900, 0)),
+        ("Crate", Pose(180, 540, 0)),
+        ("Crate", Pose(540, 540, 0)),
+    ]
     assert world.markers == (Marker(900, 540, (0, 200, 0, 255)),)
     # upper case O and X also put a wall under their cell
     assert Wall(360, 720, 720, 720) in world.walls and Wall(360, 360, 720, 360) in world.walls

@@ -52,6 +52,7 @@ def test_each_keyword_and_field_belongs_to_one_part():
 
 def test_the_components_a_part_names_are_what_the_robot_builder_calls():
     from eyesim.robot.components import FACTORIES  # imports the physics: only here, not when reading
+
     named = [name for part in PARTS for name in part.components]
     assert {"eyesim.robot.components.psd:create", "eyesim.robot.components.gripper:create"} <= set(named)
     called = {f"{factory.__module__}:{factory.__name__}" for factory in FACTORIES}
@@ -71,12 +72,14 @@ def test_the_schema_is_assembled_from_the_parts_fragments():
 
 def test_every_field_of_the_schema_has_a_title():
     """The robot editor labels its form fields with them."""
+
     def walk(node, path):
         if isinstance(node, dict):
             for name, field in node.get("properties", {}).items():
                 assert "title" in field or "$ref" in field, f"{path}/{name}"
             for key, value in node.items():
                 walk(value, f"{path}/{key}")
+
     published = schema("robot")
     walk(published, "")
     assert all("title" in definition for definition in published["$defs"].values())

@@ -71,8 +71,7 @@ def test_eyesim6_sim_variable_and_rooted_paths_search_above(tmp_path):
     assert paths.resolve("%SIM%\\worlds\\Soccer1998.wld", scene) == target
 
 
-def test_a_referencing_file_named_relative_to_the_working_directory_searches_the_same_folders(tmp_path,
-                                                                                              monkeypatch):
+def test_a_referencing_file_named_relative_to_the_working_directory_searches_the_same_folders(tmp_path, monkeypatch):
     target = make(tmp_path, "Test Assets/worlds/Soccer1998.wld")
     scene = make(tmp_path, "Test Assets/examples/drivemodes/Diff.sim")
     monkeypatch.chdir(scene.parent)

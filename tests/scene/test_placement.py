@@ -12,5 +12,6 @@ def test_a_corpus_scene_with_a_labbot_twenty_mm_from_a_wall_gets_the_warning():
     # moved off the wall, the first LabBot's corner reaches into the second (placed at 45 degrees):
     # the second moves the shortest way out, a few mm
     assert robot.location.line == 5 and robot.message == (
-        "robot 'LabBot' at (400, 400) overlaps robot 'LabBot' (line 4): moved to (420, 420), clear of it")
+        "robot 'LabBot' at (400, 400) overlaps robot 'LabBot' (line 4): moved to (420, 420), clear of it"
+    )
     assert [(r.pose.x, r.pose.y) for r in scene.robots] == [(300, 200), (420, 420), (600, 600)]

@@ -6,8 +6,21 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from eyesim.scene.description import (ArmSpec, BuoyancySpec, CameraSpec, Collider, DragSpec, GripperSpec,
-                                      JointSpec, LidarSpec, PsdSpec, RobotType, SteeringSpec, ThrusterSpec, WheelSpec)
+from eyesim.scene.description import (
+    ArmSpec,
+    BuoyancySpec,
+    CameraSpec,
+    Collider,
+    DragSpec,
+    GripperSpec,
+    JointSpec,
+    LidarSpec,
+    PsdSpec,
+    RobotType,
+    SteeringSpec,
+    ThrusterSpec,
+    WheelSpec,
+)
 from eyesim.scene.diagnostics import Diagnostics
 from eyesim.scene.lexer import read_text
 from eyesim.scene.robi import detect_dialect, parse_robi, write_robi
@@ -35,7 +48,10 @@ def test_vr_and_eyesim6_s4_have_the_same_geometry():
     assert geometry(e6) == geometry(vr)
     assert e6.wheels == WheelSpec(54, 3600, 1100, 90)
     assert [(p.id, p.name, p.x, p.y, p.z, p.heading) for p in e6.psds] == [
-        (1, "PSD_FRONT", 60, 20, 30, 0), (2, "PSD_LEFT", 56, 45, 30, 90), (3, "PSD_RIGHT", 56, -45, 30, -90)]
+        (1, "PSD_FRONT", 60, 20, 30, 0),
+        (2, "PSD_LEFT", 56, 45, 30, 90),
+        (3, "PSD_RIGHT", 56, -45, 30, -90),
+    ]
 
 
 def test_vr_s4_body_is_converted_from_model_space():
@@ -90,8 +106,12 @@ def test_eyesim6_negative_ids_and_servo_camera():
 
 
 def test_psd_argument_orders_agree():
-    forms = ["psd PSD_LEFT 2 56 45 30 90", "psd 2 PSD_LEFT 56 45 30 0 90 0", "psd PSD_LEFT 56 45 30 90",
-             "psd PSD_LEFT -205 56 45 30 90"]
+    forms = [
+        "psd PSD_LEFT 2 56 45 30 90",
+        "psd 2 PSD_LEFT 56 45 30 0 90 0",
+        "psd PSD_LEFT 56 45 30 90",
+        "psd PSD_LEFT -205 56 45 30 90",
+    ]
     psds = {parse("dialect eyesim\nwheel 54 3600 1100 90\n" + f)[0].psds for f in forms}
     assert psds == {(PsdSpec(2, "PSD_LEFT", 56, 45, 30, 90),)}
 
@@ -101,18 +121,22 @@ def test_pitch_from_the_eight_argument_form():
     assert robot.psds == (PsdSpec(5, "PSD_DOWN", 80, 0, 50, 0, -30),)
 
 
-@pytest.mark.parametrize("text, dialect", [
-    ("drive DIFFERENTIAL_DRIVE MOTOR_LEFT QUAD_LEFT\nwheel 1 1 1 1", "eyesim6"),
-    ("drive DIFFERENTIAL_DRIVE\nmass 1 0 0 0", "vr"),
-    ("model a.obj 0 0 0 0 90 0", "vr"),
-    ("axis 22.7 10.8", "vr"),
-    ("wheel drive 40 7200 640 44.5", "vr"),
-    ("psd 1 PSD_FRONT 1 2 3 0 0 0", "vr1"),
-    ("fisheye 120", "vr1"),
-    ("dialect eyesim\nmass 1 0 0 0\nfisheye 120", "eyesim"),
-])
+@pytest.mark.parametrize(
+    "text, dialect",
+    [
+        ("drive DIFFERENTIAL_DRIVE MOTOR_LEFT QUAD_LEFT\nwheel 1 1 1 1", "eyesim6"),
+        ("drive DIFFERENTIAL_DRIVE\nmass 1 0 0 0", "vr"),
+        ("model a.obj 0 0 0 0 90 0", "vr"),
+        ("axis 22.7 10.8", "vr"),
+        ("wheel drive 40 7200 640 44.5", "vr"),
+        ("psd 1 PSD_FRONT 1 2 3 0 0 0", "vr1"),
+        ("fisheye 120", "vr1"),
+        ("dialect eyesim\nmass 1 0 0 0\nfisheye 120", "eyesim"),
+    ],
+)
 def test_dialect_detection(text, dialect):
     from eyesim.scene.lexer import split_lines
+
     assert detect_dialect(split_lines(text, "r", Diagnostics())) == dialect
 
 
@@ -182,10 +206,18 @@ def test_arm_keywords():
     robot, diagnostics = parse(ARM)
     assert not diagnostics.items
     assert robot.drive == "arm"
-    assert robot.arm == ArmSpec(0, 0, 80, 0, (
-        JointSpec("BASE", 1, "revolute", 100, 0, 0, 90, -150, 150),
-        JointSpec("SHOULDER", 2, "revolute", 0, 90, 200, 0, -90, 90),
-        JointSpec("SLIDE", 3, "prismatic", 10, 0, 0, 0, 0, 120)), GripperSpec(4, 60, 15))
+    assert robot.arm == ArmSpec(
+        0,
+        0,
+        80,
+        0,
+        (
+            JointSpec("BASE", 1, "revolute", 100, 0, 0, 90, -150, 150),
+            JointSpec("SHOULDER", 2, "revolute", 0, 90, 200, 0, -90, 90),
+            JointSpec("SLIDE", 3, "prismatic", 10, 0, 0, 0, 0, 120),
+        ),
+        GripperSpec(4, 60, 15),
+    )
 
 
 def test_a_drive_base_that_carries_an_arm():
@@ -200,33 +232,39 @@ def test_joints_without_an_arm_line_sit_on_top_of_the_chassis():
     assert (robot.arm.x, robot.arm.y, robot.arm.z) == (0, 0, 70)
 
 
-@pytest.mark.parametrize("line, code, column", [
-    ("drive TANK", "syntax", 7),
-    ("psd PSD_FRONT 1 a 0 0 0", "syntax", 17),
-    ("wheel 54 3600 11.5 90", "syntax", 15),
-    ("wheel 0 3600 1100 90", "bad-value", 7),
-    ("camera 1 2 3 SERVO1(-90) 0 90 90", "syntax", 14),
-    ("joint J 1 rotary 0 0 0 0 0 1", "syntax", 11),
-    ("lidar 360 95", "bad-value", 11),
-    ("collider cone 1 2 3", "syntax", 10),
-    ("size 100 0 50", "bad-value", 10),
-    ("color 300 0 0", "bad-value", 7),
-    ("thruster T 1 0 0 0 0 0 0 -5", "bad-value", 26),
-    ("dialect klingon", "syntax", 9),
-])
+@pytest.mark.parametrize(
+    "line, code, column",
+    [
+        ("drive TANK", "syntax", 7),
+        ("psd PSD_FRONT 1 a 0 0 0", "syntax", 17),
+        ("wheel 54 3600 11.5 90", "syntax", 15),
+        ("wheel 0 3600 1100 90", "bad-value", 7),
+        ("camera 1 2 3 SERVO1(-90) 0 90 90", "syntax", 14),
+        ("joint J 1 rotary 0 0 0 0 0 1", "syntax", 11),
+        ("lidar 360 95", "bad-value", 11),
+        ("collider cone 1 2 3", "syntax", 10),
+        ("size 100 0 50", "bad-value", 10),
+        ("color 300 0 0", "bad-value", 7),
+        ("thruster T 1 0 0 0 0 0 0 -5", "bad-value", 26),
+        ("dialect klingon", "syntax", 9),
+    ],
+)
 def test_errors_point_at_the_offending_text(line, code, column):
     _, diagnostics = parse("dialect eyesim\n" + line)
     errors = [d for d in diagnostics.items if d.kind == "error"]
     assert [(d.code, d.location.line, d.location.column) for d in errors][:1] == [(code, 2, column)]
 
 
-@pytest.mark.parametrize("text, needle", [
-    ("wheel 1 1 1 1\npsd A 1 0 0 0 0\npsd B 1 0 0 0 0", "already used by A"),
-    ("wheel 1 1 1 1\ncamera 0 0 0 SERVO1(-90,90) 0 90 90\njoint J 1 revolute 0 0 0 0 0 1", "servo 1"),
-    ("drive ARM\njoint J 1 revolute 0 0 0 0 10 1", "min <= max"),
-    ("drive SUBMARINE\nthruster A 1 0 0 0 0 0 0 5", "direction"),
-    ("drive SUBMARINE\nthruster A 1 0 0 0 1 0 0 5\nthruster B 1 0 0 0 1 0 0 5", "motor 1"),
-])
+@pytest.mark.parametrize(
+    "text, needle",
+    [
+        ("wheel 1 1 1 1\npsd A 1 0 0 0 0\npsd B 1 0 0 0 0", "already used by A"),
+        ("wheel 1 1 1 1\ncamera 0 0 0 SERVO1(-90,90) 0 90 90\njoint J 1 revolute 0 0 0 0 0 1", "servo 1"),
+        ("drive ARM\njoint J 1 revolute 0 0 0 0 10 1", "min <= max"),
+        ("drive SUBMARINE\nthruster A 1 0 0 0 0 0 0 5", "direction"),
+        ("drive SUBMARINE\nthruster A 1 0 0 0 1 0 0 5\nthruster B 1 0 0 0 1 0 0 5", "motor 1"),
+    ],
+)
 def test_contradictions_are_errors(text, needle):
     _, diagnostics = parse("dialect eyesim\n" + text)
     assert any(d.kind == "error" and needle in d.message for d in diagnostics.items)
@@ -263,40 +301,87 @@ def robots(draw):
     if draw(st.booleans()):
         pan_servo = next(servos) if draw(st.booleans()) else None
         lo = draw(st.floats(-180, 0))
-        camera = CameraSpec(draw(coord), draw(coord), draw(coord),
-                            pan=0.0 if pan_servo else draw(coord), tilt=draw(coord), fov=draw(st.floats(1, 360)),
-                            pan_servo=pan_servo, pan_range=(lo, draw(st.floats(lo, 180))) if pan_servo else (lo, -lo),
-                            fisheye=draw(st.booleans()))
-    psds = tuple(PsdSpec(i + 1, draw(tokens), draw(coord), draw(coord), draw(st.floats(0, 500)), draw(coord),
-                         draw(coord)) for i in range(draw(st.integers(0, 4))))
+        camera = CameraSpec(
+            draw(coord),
+            draw(coord),
+            draw(coord),
+            pan=0.0 if pan_servo else draw(coord),
+            tilt=draw(coord),
+            fov=draw(st.floats(1, 360)),
+            pan_servo=pan_servo,
+            pan_range=(lo, draw(st.floats(lo, 180))) if pan_servo else (lo, -lo),
+            fisheye=draw(st.booleans()),
+        )
+    psds = tuple(
+        PsdSpec(i + 1, draw(tokens), draw(coord), draw(coord), draw(st.floats(0, 500)), draw(coord), draw(coord))
+        for i in range(draw(st.integers(0, 4)))
+    )
     arm = None
     if drive == "arm" or draw(st.booleans()):
-        joints = tuple(JointSpec(draw(tokens), next(servos), draw(st.sampled_from(["revolute", "prismatic"])),
-                                 draw(coord), draw(coord), draw(coord), draw(coord), -10.0, draw(st.floats(-10, 100)))
-                       for _ in range(draw(st.integers(1, 3))))
+        joints = tuple(
+            JointSpec(
+                draw(tokens),
+                next(servos),
+                draw(st.sampled_from(["revolute", "prismatic"])),
+                draw(coord),
+                draw(coord),
+                draw(coord),
+                draw(coord),
+                -10.0,
+                draw(st.floats(-10, 100)),
+            )
+            for _ in range(draw(st.integers(1, 3)))
+        )
         gripper = GripperSpec(next(servos), draw(size), draw(size)) if draw(st.booleans()) else None
         arm = ArmSpec(draw(coord), draw(coord), draw(coord), draw(coord), joints, gripper)
     thrusters = ()
     if drive == "submarine":
-        thrusters = tuple(ThrusterSpec(draw(tokens), i + 1, draw(coord), draw(coord), draw(coord), 1.0,
-                                       draw(coord), draw(coord), draw(size)) for i in range(draw(st.integers(1, 4))))
-    collider = st.one_of(st.builds(Collider, st.just("box"), st.tuples(size, size, size), st.tuples(coord, coord, coord)),
-                         st.builds(Collider, st.just("sphere"), st.tuples(size), st.tuples(coord, coord, coord)),
-                         st.builds(Collider, st.sampled_from(["capsule", "cylinder"]), st.tuples(size, size),
-                                   st.tuples(coord, coord, coord), st.sampled_from("xyz")))
+        thrusters = tuple(
+            ThrusterSpec(
+                draw(tokens), i + 1, draw(coord), draw(coord), draw(coord), 1.0, draw(coord), draw(coord), draw(size)
+            )
+            for i in range(draw(st.integers(1, 4)))
+        )
+    collider = st.one_of(
+        st.builds(Collider, st.just("box"), st.tuples(size, size, size), st.tuples(coord, coord, coord)),
+        st.builds(Collider, st.just("sphere"), st.tuples(size), st.tuples(coord, coord, coord)),
+        st.builds(
+            Collider,
+            st.sampled_from(["capsule", "cylinder"]),
+            st.tuples(size, size),
+            st.tuples(coord, coord, coord),
+            st.sampled_from("xyz"),
+        ),
+    )
     return RobotType(
-        name=draw(names), source="r.robi", drive=drive, mass=mass, length=length, width=width, height=height,
-        color=draw(st.tuples(*[st.integers(0, 255)] * 3)), max_speed=draw(size), max_turn=draw(size),
-        axis_offset=draw(coord), wheels=draw(wheel) if drive not in ("submarine", "arm") else draw(st.none() | wheel),
-        psds=psds, camera=camera, lidar=draw(st.none() | st.builds(LidarSpec, st.integers(1, 2000), st.floats(-89, 89))),
-        model=draw(st.none() | st.just("models/my bot.obj")), colliders=tuple(draw(st.lists(collider, max_size=3))),
+        name=draw(names),
+        source="r.robi",
+        drive=drive,
+        mass=mass,
+        length=length,
+        width=width,
+        height=height,
+        color=draw(st.tuples(*[st.integers(0, 255)] * 3)),
+        max_speed=draw(size),
+        max_turn=draw(size),
+        axis_offset=draw(coord),
+        wheels=draw(wheel) if drive not in ("submarine", "arm") else draw(st.none() | wheel),
+        psds=psds,
+        camera=camera,
+        lidar=draw(st.none() | st.builds(LidarSpec, st.integers(1, 2000), st.floats(-89, 89))),
+        model=draw(st.none() | st.just("models/my bot.obj")),
+        colliders=tuple(draw(st.lists(collider, max_size=3))),
         drive_motors=tuple(draw(st.lists(tokens, max_size=4))),
         center_of_mass=draw(st.none() | st.tuples(coord, coord, coord)),
         axle_height=draw(st.none() | size),
         steering=draw(st.none() | st.builds(SteeringSpec, coord, st.none() | size, st.none() | wheel)),
-        model_offset=draw(st.tuples(coord, coord, coord)), model_rotation=draw(st.tuples(coord, coord, coord)),
-        thrusters=thrusters, buoyancy=draw(st.none() | st.builds(BuoyancySpec, size, coord, coord, coord)),
-        drag=draw(st.none() | st.builds(DragSpec, size, size, size, size)), arm=arm)
+        model_offset=draw(st.tuples(coord, coord, coord)),
+        model_rotation=draw(st.tuples(coord, coord, coord)),
+        thrusters=thrusters,
+        buoyancy=draw(st.none() | st.builds(BuoyancySpec, size, coord, coord, coord)),
+        drag=draw(st.none() | st.builds(DragSpec, size, size, size, size)),
+        arm=arm,
+    )
 
 
 @settings(max_examples=200, deadline=None)

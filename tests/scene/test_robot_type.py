@@ -1,7 +1,15 @@
 """Completing and checking robot types, whichever file they came from."""
 
-from eyesim.scene.description import (ArmSpec, CameraSpec, GripperSpec, JointSpec, Location, PsdSpec, RobotType,
-                                      ThrusterSpec)
+from eyesim.scene.description import (
+    ArmSpec,
+    CameraSpec,
+    GripperSpec,
+    JointSpec,
+    Location,
+    PsdSpec,
+    RobotType,
+    ThrusterSpec,
+)
 from eyesim.scene.diagnostics import Diagnostics
 from eyesim.scene.parts.wheels import DEFAULT_WHEELS
 from eyesim.scene.robot_type import finish_robot_type
@@ -32,11 +40,19 @@ def test_plausible_mass_is_kept():
 
 
 def test_conflicts():
-    arm = ArmSpec(joints=(JointSpec("A", 1, "revolute", 0, 0, 0, 0, 0, 1), JointSpec("B", 1, "revolute", 0, 0, 0, 0, 5, 1)),
-                  gripper=GripperSpec(0, 1, 1))
-    robot = RobotType("R", "r", drive="submarine", arm=arm, camera=CameraSpec(0, 0, 0, pan_servo=2, tilt_servo=2),
-                      psds=(PsdSpec(1, "A", 0, 0, 0, 0), PsdSpec(1, "B", 0, 0, 0, 0)),
-                      thrusters=(ThrusterSpec("T", 1, 0, 0, 0, 0, 0, 0, 1), ThrusterSpec("U", 1, 0, 0, 0, 1, 0, 0, 1)))
+    arm = ArmSpec(
+        joints=(JointSpec("A", 1, "revolute", 0, 0, 0, 0, 0, 1), JointSpec("B", 1, "revolute", 0, 0, 0, 0, 5, 1)),
+        gripper=GripperSpec(0, 1, 1),
+    )
+    robot = RobotType(
+        "R",
+        "r",
+        drive="submarine",
+        arm=arm,
+        camera=CameraSpec(0, 0, 0, pan_servo=2, tilt_servo=2),
+        psds=(PsdSpec(1, "A", 0, 0, 0, 0), PsdSpec(1, "B", 0, 0, 0, 0)),
+        thrusters=(ThrusterSpec("T", 1, 0, 0, 0, 0, 0, 0, 1), ThrusterSpec("U", 1, 0, 0, 0, 1, 0, 0, 1)),
+    )
     _, diagnostics = finish(robot)
     errors = sorted(d.message for d in diagnostics.items if d.kind == "error")
     assert len(errors) == 7

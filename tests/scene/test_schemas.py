@@ -36,5 +36,6 @@ def test_no_additional_properties_anywhere():
         elif isinstance(node, list):
             for value in node:
                 walk(value)
+
     for kind in KINDS:
         walk(schema(kind))

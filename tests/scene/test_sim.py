@@ -16,16 +16,21 @@ def parse(text):
 
 
 def test_vr_scene():
-    doc, diagnostics = parse('world "./noReturn_world.wld"\nsettings VIS trace\nrobot custom/Rover.robi\n'
-                             "object props/cone.esObj\nRover 600 400 90 rover.py\nS4 1500 400 180\nCan 800 300 45\n"
-                             "marker 1800 1800 255 0 0\nmarker 1 2\nmarker 798 451 255 196 44 128\n")
+    doc, diagnostics = parse(
+        'world "./noReturn_world.wld"\nsettings VIS trace\nrobot custom/Rover.robi\n'
+        "object props/cone.esObj\nRover 600 400 90 rover.py\nS4 1500 400 180\nCan 800 300 45\n"
+        "marker 1800 1800 255 0 0\nmarker 1 2\nmarker 798 451 255 196 44 128\n"
+    )
     assert not diagnostics.items
     assert doc.world.path == "./noReturn_world.wld"
     assert doc.settings == Settings(vis=True, trace=True)
     assert [r.path for r in doc.robot_files] == ["custom/Rover.robi"]
     assert [r.path for r in doc.object_files] == ["props/cone.esObj"]
     assert [(p.type_name, p.x, p.y, p.phi, p.program) for p in doc.placements] == [
-        ("Rover", 600, 400, 90, "rover.py"), ("S4", 1500, 400, 180, None), ("Can", 800, 300, 45, None)]
+        ("Rover", 600, 400, 90, "rover.py"),
+        ("S4", 1500, 400, 180, None),
+        ("Can", 800, 300, 45, None),
+    ]
     assert doc.markers == (Marker(1800, 1800, (255, 0, 0, 255)), Marker(1, 2), Marker(798, 451, (255, 196, 44, 128)))
 
 
@@ -38,36 +43,45 @@ def test_maze_start_letters():
     doc, diagnostics = parse("world m.maz\nlabbot s\nS4 S 90 maze.x\nS4 U 65 03-predator.py\nS4 S prog.py\n")
     assert not diagnostics.items
     assert [(p.type_name, p.start, p.phi, p.program) for p in doc.placements] == [
-        ("labbot", "s", None, None), ("S4", "S", 90, "maze.x"), ("S4", "U", 65, "03-predator.py"),
-        ("S4", "S", None, "prog.py")]
+        ("labbot", "s", None, None),
+        ("S4", "S", 90, "maze.x"),
+        ("S4", "U", 65, "03-predator.py"),
+        ("S4", "S", None, "prog.py"),
+    ]
 
 
 def test_eyesim6_statements():
-    doc, diagnostics = parse("maze\t%sim%/worlds/mazes/maze1.maz\nrobi\t%sim%/robots/Eve/Eve.robi  maze.dll\n"
-                             "robi S4Y.robi servo.dll  400 800 0\nobject  800 800 0 0.0 %sim%/worlds/objects/can/can.ms3d\n"
-                             "robi ../robots/S4/S4.robi\nobj \"Path\\To\\customObject.esObj\"\n")
+    doc, diagnostics = parse(
+        "maze\t%sim%/worlds/mazes/maze1.maz\nrobi\t%sim%/robots/Eve/Eve.robi  maze.dll\n"
+        "robi S4Y.robi servo.dll  400 800 0\nobject  800 800 0 0.0 %sim%/worlds/objects/can/can.ms3d\n"
+        'robi ../robots/S4/S4.robi\nobj "Path\\To\\customObject.esObj"\n'
+    )
     assert not diagnostics.items
     assert doc.world.path == "%sim%/worlds/mazes/maze1.maz"
-    assert doc.placements[0] == Placement(robi="%sim%/robots/Eve/Eve.robi", program="maze.dll",
-                                          location=doc.placements[0].location)
+    assert doc.placements[0] == Placement(
+        robi="%sim%/robots/Eve/Eve.robi", program="maze.dll", location=doc.placements[0].location
+    )
     assert (doc.placements[1].x, doc.placements[1].y, doc.placements[1].phi) == (400, 800, 0)
     assert (doc.placements[2].model, doc.placements[2].friction) == ("%sim%/worlds/objects/can/can.ms3d", 0)
     assert [r.path for r in doc.robot_files] == ["../robots/S4/S4.robi"]
     assert [r.path for r in doc.object_files] == ["Path\\To\\customObject.esObj"]
 
 
-@pytest.mark.parametrize("line, column, needle", [
-    ("world a.wld b.wld", 1, "expected one world file"),
-    ("robi a.robi prog.x 1 2", 1, "robi <file.robi> <program>"),
-    ("marker 1 2 3", 1, "marker <x> <y>"),
-    ("marker 1 2 255 0 256", 18, "0..255"),
-    ("marker a 2", 8, "expected x in mm"),
-    ("S4 1 2 3 prog.x extra", 17, "found extra 'extra'"),
-    ("S4 500", 1, "expected <x> <y> <phi>"),
-    ("S4 north", 4, "a position"),
-    ("S4", 1, "unknown keyword 'S4'"),
-    ("object 1 2 3 x can.ms3d", 14, "friction"),
-])
+@pytest.mark.parametrize(
+    "line, column, needle",
+    [
+        ("world a.wld b.wld", 1, "expected one world file"),
+        ("robi a.robi prog.x 1 2", 1, "robi <file.robi> <program>"),
+        ("marker 1 2 3", 1, "marker <x> <y>"),
+        ("marker 1 2 255 0 256", 18, "0..255"),
+        ("marker a 2", 8, "expected x in mm"),
+        ("S4 1 2 3 prog.x extra", 17, "found extra 'extra'"),
+        ("S4 500", 1, "expected <x> <y> <phi>"),
+        ("S4 north", 4, "a position"),
+        ("S4", 1, "unknown keyword 'S4'"),
+        ("object 1 2 3 x can.ms3d", 14, "friction"),
+    ],
+)
 def test_errors(line, column, needle):
     _, diagnostics = parse(line)
     (d,) = [d for d in diagnostics.items if d.kind == "error"]

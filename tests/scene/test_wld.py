@@ -44,8 +44,12 @@ def test_wall_arities():
 
 def test_push_rotates_then_translates_and_frames_nest():
     world, _ = parse("push 1500 1000 90\n0 0 100 0\npush 100 0 90\n0 0 100 0\npop\n0 0 0 50\npop\n0 0 10 0")
-    assert world.walls == (Wall(1500, 1000, 1500, 1100), Wall(1500, 1100, 1400, 1100),
-                           Wall(1500, 1000, 1450, 1000), Wall(0, 0, 10, 0))
+    assert world.walls == (
+        Wall(1500, 1000, 1500, 1100),
+        Wall(1500, 1100, 1400, 1100),
+        Wall(1500, 1000, 1450, 1000),
+        Wall(0, 0, 10, 0),
+    )
 
 
 def test_chained_pushes_draw_an_arc():
@@ -69,8 +73,9 @@ def test_inline_semicolon_comments_with_numbers():
 
 
 def test_malformed_lines_are_skipped_with_warnings():
-    world, diagnostics = parse("ush 500 0 -5\n5000 0 0\n1 2 3 4 5\n0 0 x 1\nwidth -5\nfloor 10\n0 0 1 1 1 1 300 0 0\n"
-                               "1 1 1 1\n0 0 5 0\n")
+    world, diagnostics = parse(
+        "ush 500 0 -5\n5000 0 0\n1 2 3 4 5\n0 0 x 1\nwidth -5\nfloor 10\n0 0 1 1 1 1 300 0 0\n1 1 1 1\n0 0 5 0\n"
+    )
     assert world.walls == (Wall(0, 0, 5, 0),)
     assert [d.location.line for d in diagnostics.items] == [1, 2, 3, 4, 5, 6, 7, 8]
     assert all(d.kind == "warning" for d in diagnostics.items)
@@ -96,8 +101,10 @@ def test_pinned_push_pop_worlds():
 
 
 def test_write_and_read_back():
-    world, _ = parse("width 3000\nheight 2000\nfloor_texture 'my floor.png'\nposition 1 2 3\nball 5 6\n"
-                     "0 0 1 0\n0 0 2 0 20 150\n0 0 3 0 18 100 255 255 0\n")
+    world, _ = parse(
+        "width 3000\nheight 2000\nfloor_texture 'my floor.png'\nposition 1 2 3\nball 5 6\n"
+        "0 0 1 0\n0 0 2 0 20 150\n0 0 3 0 18 100 255 255 0\n"
+    )
     again, diagnostics = parse(write_wld(world))
     assert again == world and not diagnostics.items
 

@@ -25,8 +25,9 @@ def run_scene(tmp_path):
     Programs are copied next to the scene first: they run in their own directory, so files they
     write land in the test's tmp_path."""
 
-    def run(scene: Path, robot_programs: dict[int, Path], *args: str, env: dict | None = None,
-            timeout: float = 120) -> Run:
+    def run(
+        scene: Path, robot_programs: dict[int, Path], *args: str, env: dict | None = None, timeout: float = 120
+    ) -> Run:
         options = []
         for robot, program in robot_programs.items():
             local = tmp_path / program.name

@@ -13,8 +13,12 @@ EXAMPLES = EXAMPLES_DIR
 # The sensor lab (examples/scenes/sensor_lab.wld): wall centre lines (mm) and their thickness.
 ROOM = [((0, 0), (2500, 0)), ((2500, 0), (2500, 2000)), ((2500, 2000), (0, 2000)), ((0, 2000), (0, 0))]
 BLOCK = [((650, 550), (950, 550)), ((950, 550), (950, 850)), ((950, 850), (650, 850)), ((650, 850), (650, 550))]
-PILLAR = [((1840, 1390), (1960, 1390)), ((1960, 1390), (1960, 1510)), ((1960, 1510), (1840, 1510)),
-          ((1840, 1510), (1840, 1390))]
+PILLAR = [
+    ((1840, 1390), (1960, 1390)),
+    ((1960, 1390), (1960, 1510)),
+    ((1960, 1510), (1840, 1510)),
+    ((1840, 1510), (1840, 1390)),
+]
 WALLS = [(s, 10) for s in ROOM] + [(s, 20) for s in BLOCK] + [(s, 10) for s in PILLAR]
 
 
@@ -30,8 +34,13 @@ def to_surface(x: float, y: float) -> float:
 
 def run_example(tmp_path, name: str, *args: str):
     program = tmp_path / name
-    built = subprocess.run(eyesim_command("cc", "-O2", "-Wall", "-Wextra", "-Werror", str(EXAMPLES / "programs" / f"{name}.c"),
-                                          "-o", str(program)), capture_output=True, text=True)
+    built = subprocess.run(
+        eyesim_command(
+            "cc", "-O2", "-Wall", "-Wextra", "-Werror", str(EXAMPLES / "programs" / f"{name}.c"), "-o", str(program)
+        ),
+        capture_output=True,
+        text=True,
+    )
     assert built.returncode == 0, built.stderr
     result = run_headless(str(EXAMPLES / "scenes" / f"{name}.sim"), "--program", f"1={program}", *args, cwd=tmp_path)
     assert result.returncode == 0, result.stdout + result.stderr
@@ -55,8 +64,10 @@ def test_lidar_mapping_draws_the_room(tmp_path):
     grid = np.asarray(Image.open(tmp_path / "map.pgm"))
     size, cell, start = grid.shape[0], 20, (600, 1500)  # lidar_map.c; the start pose of lidar_map.sim
     rows, cols = np.nonzero(grid == 0)
-    points = [(start[0] + (c - size // 2 + 0.5) * cell, start[1] + (size - 1 - r - size // 2 + 0.5) * cell)
-              for r, c in zip(rows, cols)]
+    points = [
+        (start[0] + (c - size // 2 + 0.5) * cell, start[1] + (size - 1 - r - size // 2 + 0.5) * cell)
+        for r, c in zip(rows, cols)
+    ]
     assert len(points) > 300
     assert sum(to_surface(x, y) < 40 for x, y in points) / len(points) > 0.95  # what it saw is there
     occupied = set(zip(rows.tolist(), cols.tolist()))
@@ -66,8 +77,12 @@ def test_lidar_mapping_draws_the_room(tmp_path):
         row = size - 1 - (math.floor((y - start[1]) / cell) + size // 2)
         return any((row + i, col + j) in occupied for i in (-2, -1, 0, 1, 2) for j in (-2, -1, 0, 1, 2))
 
-    faces = [(x, 5) for x in range(100, 2400, 50)] + [(x, 1995) for x in range(100, 2400, 50)] + \
-            [(5, y) for y in range(100, 1900, 50)] + [(2495, y) for y in range(100, 1900, 50)]
+    faces = (
+        [(x, 5) for x in range(100, 2400, 50)]
+        + [(x, 1995) for x in range(100, 2400, 50)]
+        + [(5, y) for y in range(100, 1900, 50)]
+        + [(2495, y) for y in range(100, 1900, 50)]
+    )
     assert sum(mapped(x, y) for x, y in faces) / len(faces) > 0.8  # and it saw most of the room's walls
 
 

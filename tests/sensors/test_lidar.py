@@ -19,8 +19,12 @@ S4_HEIGHT = 90  # mm (eyesim/data/robots/S4.robi): the scanner sits MOUNT_ABOVE_
 def to_wall(x: float, y: float, heading_deg: float) -> float:
     """Distance from (x, y) along a heading to the room's first inner wall face."""
     dx, dy = math.cos(math.radians(heading_deg)), math.sin(math.radians(heading_deg))
-    return min((face - start) / delta for start, delta in ((x, dx), (y, dy)) for face in INNER
-               if abs(delta) > 1e-12 and (face - start) / delta > 0)
+    return min(
+        (face - start) / delta
+        for start, delta in ((x, dx), (y, dy))
+        for face in INNER
+        if abs(delta) > 1e-12 and (face - start) / delta > 0
+    )
 
 
 def beam_heading(phi: float, index: int, points: int, field: float) -> float:
@@ -50,7 +54,8 @@ def test_a_scan_matches_the_room_and_the_index_convention(tmp_path, programs, ru
 
 
 def test_the_legacy_laser_scan_is_counter_clockwise_from_ahead_and_keeps_the_lidar_settings(
-        tmp_path, programs, run_scene):
+    tmp_path, programs, run_scene
+):
     x, y, phi = 650, 800, 20
     scene = write_scene(tmp_path, square_room(ROOM), [f"S4 {x} {y} {phi}"])
     run = run_scene(scene, {1: programs("laser_scan")})

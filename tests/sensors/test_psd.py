@@ -95,9 +95,11 @@ def test_the_noise_settings_are_read_written_and_checked():
     diagnostics = Diagnostics()
     parse_sim("settings PSDNOISE=-1 SEED=x PSDNOISE\n", "c.sim", diagnostics)
     messages = [str(d) for d in diagnostics.items]
-    assert messages == ["c.sim:1:10: error: settings: PSDNOISE expects a standard deviation in mm >= 0, found '-1'",
-                        "c.sim:1:22: error: settings: SEED expects a whole number, found 'x'",
-                        "c.sim:1:29: error: settings: PSDNOISE needs a value: PSDNOISE=<a standard deviation in mm >= 0>"]
+    assert messages == [
+        "c.sim:1:10: error: settings: PSDNOISE expects a standard deviation in mm >= 0, found '-1'",
+        "c.sim:1:22: error: settings: SEED expects a whole number, found 'x'",
+        "c.sim:1:29: error: settings: PSDNOISE needs a value: PSDNOISE=<a standard deviation in mm >= 0>",
+    ]
 
 
 def test_a_reading_is_cast_once_per_state_and_the_noise_drawn_for_every_reading(monkeypatch):

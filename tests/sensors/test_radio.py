@@ -43,7 +43,9 @@ def test_a_waiting_receive_blocks_only_its_caller():
         assert second.call("RADIO_STATUS") == ([1, 2],)
         assert second.call("RADIO_SEND", 1, b"\x00binary\xff") == (0,)
         assert first.reply("RADIO_RECEIVE", waiting) == (2, b"\x00binary\xff")
-        with pytest.raises(RemoteError, match=f"message: {MAX_MESSAGE + 1} bytes is too large \\(at most {MAX_MESSAGE}\\)"):
+        with pytest.raises(
+            RemoteError, match=f"message: {MAX_MESSAGE + 1} bytes is too large \\(at most {MAX_MESSAGE}\\)"
+        ):
             second.call("RADIO_SEND", 1, b"x" * (MAX_MESSAGE + 1))
         assert second.call("RADIO_SEND", 2, b"to myself") == (0,)
         assert second.call("RADIO_CHECK") == (1,) and second.call("RADIO_RECEIVE") == (2, b"to myself")

@@ -30,18 +30,24 @@ def opengl():
     return render_gl.GlRenderer(backend)
 
 
-def coloured_room(tmp_path, robot_type=None, robots=((600, 600, 30), (1200, 900, 100), (700, 1300, 200)),
-                  texture=False):
+def coloured_room(
+    tmp_path, robot_type=None, robots=((600, 600, 30), (1200, 900, 100), (700, 1300, 200)), texture=False
+):
     return Simulation(coloured_scene(tmp_path, robot_type, robots, texture))
 
 
-def coloured_scene(tmp_path, robot_type=None, robots=((600, 600, 30), (1200, 900, 100), (700, 1300, 200)),
-                   texture=False):
+def coloured_scene(
+    tmp_path, robot_type=None, robots=((600, 600, 30), (1200, 900, 100), (700, 1300, 200)), texture=False
+):
     """A 2 m room with a wall of each colour, a low orange wall, three robots and, if asked, a
     checkered floor texture."""
-    walls = (Wall(0, 0, 2000, 0, color=RED), Wall(2000, 0, 2000, 2000, color=GREEN),
-             Wall(2000, 2000, 0, 2000, color=BLUE), Wall(0, 2000, 0, 0, color=YELLOW),
-             Wall(1000, 300, 1400, 300, thickness=40, height=120, color=ORANGE))
+    walls = (
+        Wall(0, 0, 2000, 0, color=RED),
+        Wall(2000, 0, 2000, 2000, color=GREEN),
+        Wall(2000, 2000, 0, 2000, color=BLUE),
+        Wall(0, 2000, 0, 0, color=YELLOW),
+        Wall(1000, 300, 1400, 300, thickness=40, height=120, color=ORANGE),
+    )
     scene = arena(robots=robots)
     world = dataclasses.replace(scene.world, walls=walls)
     if texture:
@@ -61,7 +67,7 @@ def difference(first: np.ndarray, second: np.ndarray, block: int = 1) -> tuple[f
     height, width = first.shape[0] // block, first.shape[1] // block
 
     def blocks(image):
-        return image[:height * block, :width * block].reshape(height, block, width, block, 3).mean(axis=(1, 3))
+        return image[: height * block, : width * block].reshape(height, block, width, block, 3).mean(axis=(1, 3))
 
     diff = np.abs(blocks(first.astype(float)) - blocks(second.astype(float)))
     return diff.mean(), (diff.max(axis=2) > 40).mean()
@@ -112,8 +118,9 @@ def test_a_fisheye_image_is_round_and_both_renderers_agree(tmp_path, opengl):
 
 def test_servos_pan_and_tilt_the_camera(tmp_path):
     s4 = arena().robot_types["S4"]
-    servo_camera = dataclasses.replace(s4.camera, pan_servo=1, tilt_servo=2, pan_range=(-90.0, 90.0),
-                                       tilt_range=(-80.0, 40.0))
+    servo_camera = dataclasses.replace(
+        s4.camera, pan_servo=1, tilt_servo=2, pan_range=(-90.0, 90.0), tilt_range=(-80.0, 40.0)
+    )
     scene = coloured_scene(tmp_path, dataclasses.replace(s4, camera=servo_camera), robots=((1000, 1000, 0),))
     with running_simulation(scene, "deterministic", expect=(1,)) as (sim, port):
         client = ProgramClient(port)
@@ -160,8 +167,16 @@ def test_no_image_is_rendered_unless_a_program_asks(monkeypatch):
 def test_without_opengl_the_ray_caster_takes_over_with_a_notice():
     env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
     env["MUJOCO_GL"] = "glfw"  # GLFW cannot make a context without a display
-    result = subprocess.run([sys.executable, "-c", "from eyesim.physics import renderer_choice; "
-                             "print(renderer_choice.camera_renderer().name)"], capture_output=True, text=True, env=env)
+    result = subprocess.run(
+        [
+            sys.executable,
+            "-c",
+            "from eyesim.physics import renderer_choice; print(renderer_choice.camera_renderer().name)",
+        ],
+        capture_output=True,
+        text=True,
+        env=env,
+    )
     assert result.stdout.strip() == "raycast"
     notices = [line for line in result.stderr.splitlines() if line.startswith("eyesim:")]
     assert notices == ["eyesim: no OpenGL context (tried glfw); cameras use the CPU ray caster"]

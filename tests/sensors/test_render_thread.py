@@ -104,8 +104,9 @@ def test_a_frame_being_drawn_holds_deterministic_time_at_its_reply(gated):
         try:
             camera.call("CAM_INIT", CAM5MP)  # a device call: the clock read below starts a millisecond
             asked_ms = camera.call("OS_GET_COUNT")[0]  # read on a whole ms; local: CAM_GET follows 10 us later
-            due_us = asked_ms * 1000 + (sim.call_cost_us(g.OPS_BY_NAME["OS_GET_COUNT"]) +
-                                        sim.call_cost_us(g.OPS_BY_NAME["CAM_GET"]))
+            due_us = asked_ms * 1000 + (
+                sim.call_cost_us(g.OPS_BY_NAME["OS_GET_COUNT"]) + sim.call_cost_us(g.OPS_BY_NAME["CAM_GET"])
+            )
             due_ms = due_us // 1000
             frame = camera.send("CAM_GET")
             assert gated.waiting.wait(60)  # the render thread has the frame
@@ -156,8 +157,9 @@ def snapshot_run(tmp_path, programs, run_scene, renderer: str, name: str):
     world = square_room() + ["700 1300 1300 1300 10 300 255 0 0", "1400 500 1400 900 10 300 0 0 255"]
     scene = write_scene(tmp_path, world, ["S4 600 600 30", "S4 1000 900 200", "S4 1500 1500 225"])
     program, watcher = programs("camera_drive"), programs("psd_report")
-    run = run_scene(scene, {1: program, 2: program, 3: watcher}, "--clock", "deterministic",
-                    "--record", f"{name}.csv", env=env)
+    run = run_scene(
+        scene, {1: program, 2: program, 3: watcher}, "--clock", "deterministic", "--record", f"{name}.csv", env=env
+    )
     assert run.returncode == 0, run.stdout + run.stderr
     return run, (tmp_path / f"{name}.csv").read_bytes()
 

@@ -33,8 +33,13 @@ def zig_cc(target: str, *args: str, cwd: Path | None = None, language: str = "cc
     (about a minute), later ones use Zig's cache."""
     if not zig_available():
         pytest.fail("the ziglang package is missing: it is in eyesim's [test] extra (pip install '.[test]')")
-    return subprocess.run([sys.executable, "-m", "ziglang", language, "-target", target, *args],
-                          cwd=cwd, capture_output=True, text=True, timeout=900)
+    return subprocess.run(
+        [sys.executable, "-m", "ziglang", language, "-target", target, *args],
+        cwd=cwd,
+        capture_output=True,
+        text=True,
+        timeout=900,
+    )
 
 
 def wine_prefix() -> Path:
@@ -47,8 +52,7 @@ def wine_environment() -> dict[str, str]:
     prefix = wine_prefix()
     prefix.parent.mkdir(parents=True, exist_ok=True)
     # No desktop, no Mono/Gecko installers, no debug chatter.
-    return dict(os.environ, WINEPREFIX=str(prefix), WINEDEBUG="-all", WINEDLLOVERRIDES="mscoree,mshtml=",
-                DISPLAY="")
+    return dict(os.environ, WINEPREFIX=str(prefix), WINEDEBUG="-all", WINEDLLOVERRIDES="mscoree,mshtml=", DISPLAY="")
 
 
 def wine_command() -> str:
@@ -60,5 +64,11 @@ def wine_command() -> str:
 
 def run_under_wine(program: str | Path, *args: str, timeout: float = 300, **kwargs) -> subprocess.CompletedProcess:
     """Runs a Windows program under Wine and returns what it did."""
-    return subprocess.run([wine_command(), str(program), *args], env=kwargs.pop("env", None) or wine_environment(),
-                          capture_output=True, text=True, timeout=timeout, **kwargs)
+    return subprocess.run(
+        [wine_command(), str(program), *args],
+        env=kwargs.pop("env", None) or wine_environment(),
+        capture_output=True,
+        text=True,
+        timeout=timeout,
+        **kwargs,
+    )

@@ -27,12 +27,24 @@ class Drive(Run):
 
     def marks(self, robot: int) -> dict[str, dict]:
         """The true pose at each `mark <name> <ms>` line the robot's program printed."""
-        return {line.split()[1]: self.pose_at(robot, int(line.split()[2]))
-                for line in self.lines(robot) if line.startswith("mark ")}
+        return {
+            line.split()[1]: self.pose_at(robot, int(line.split()[2]))
+            for line in self.lines(robot)
+            if line.startswith("mark ")
+        }
 
 
-def drive_scene(directory: Path, build, placements: list[str], robot_programs: dict[int, str], robots=(),
-                extra=(), size: int = 3000, wall_height: int = 300, timeout: float = 120) -> Drive:
+def drive_scene(
+    directory: Path,
+    build,
+    placements: list[str],
+    robot_programs: dict[int, str],
+    robots=(),
+    extra=(),
+    size: int = 3000,
+    wall_height: int = 300,
+    timeout: float = 120,
+) -> Drive:
     """Runs a headless scene in `directory`: a walled square floor of `size` mm, our example robots
     `robots` (file names in eyesim/data/robots) loaded, `placements` and `extra` .sim lines, and the
     programs (names in tests/robot/programs) on the robots; returns the Drive."""

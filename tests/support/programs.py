@@ -22,15 +22,25 @@ def eyesim_command(*args: str) -> list[str]:
 def build(name: str, out_dir: Path, *flags: str) -> Path:
     """Compile tests/e2e/programs/<name>.c with `eyesim cc`; return the executable."""
     output = out_dir / name
-    result = subprocess.run(eyesim_command("cc", *flags, str(PROGRAMS / f"{name}.c"), "-o", str(output)),
-                            capture_output=True, text=True, cwd=out_dir)
+    result = subprocess.run(
+        eyesim_command("cc", *flags, str(PROGRAMS / f"{name}.c"), "-o", str(output)),
+        capture_output=True,
+        text=True,
+        cwd=out_dir,
+    )
     assert result.returncode == 0, result.stderr
     return output
 
 
 def run_headless(*args: str, cwd: Path, timeout: float = 120, env: dict | None = None) -> subprocess.CompletedProcess:
-    return subprocess.run(eyesim_command("run", "--headless", "--port", "0", *args), capture_output=True,
-                          text=True, cwd=cwd, timeout=timeout, env=env)
+    return subprocess.run(
+        eyesim_command("run", "--headless", "--port", "0", *args),
+        capture_output=True,
+        text=True,
+        cwd=cwd,
+        timeout=timeout,
+        env=env,
+    )
 
 
 def read_trajectory(path: Path) -> dict[int, list[dict]]:
@@ -49,9 +59,13 @@ def program_builder(source_dir: Path, out_dir: Path):
     def build_once(name: str) -> Path:
         if name not in built:
             output = out_dir / name
-            result = subprocess.run(eyesim_command("cc", "-O2", "-Wall", "-Wextra", "-Werror",
-                                                   str(source_dir / f"{name}.c"), "-o", str(output)),
-                                    capture_output=True, text=True)
+            result = subprocess.run(
+                eyesim_command(
+                    "cc", "-O2", "-Wall", "-Wextra", "-Werror", str(source_dir / f"{name}.c"), "-o", str(output)
+                ),
+                capture_output=True,
+                text=True,
+            )
             assert result.returncode == 0, result.stderr
             built[name] = output
         return built[name]
@@ -64,8 +78,13 @@ def simulator_with_viewer(*args: str, cwd: Path, token: bool = False):
     """`eyesim run ARGS` with its viewer on a free port, without its access token unless `token`
     (the tests of the token); yields (process, viewer URL)."""
     no_token = () if token else ("--no-token",)
-    process = subprocess.Popen(eyesim_command("run", "--port", "0", "--viewer-port", "0", *no_token, *args),
-                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=cwd)
+    process = subprocess.Popen(
+        eyesim_command("run", "--port", "0", "--viewer-port", "0", *no_token, *args),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        cwd=cwd,
+    )
     try:
         url = None
         for line in process.stdout:

@@ -24,7 +24,17 @@ def record_tour(directory: Path, robots: int = 1, *extra: str) -> Path:
     scene = directory / "tour.sim"
     scene.write_text(TOUR_SCENE.format(arena=DATA_DIR / "scenes" / "arena.wld"))
     programs = [arg for robot in range(1, robots + 1) for arg in ("--program", f"{robot}={program}")]
-    result = run_headless(str(scene), *programs, "--record", "tour.mcap", "--record", "tour.csv",
-                          "--save-lcd", "lcd", *extra, cwd=directory)
+    result = run_headless(
+        str(scene),
+        *programs,
+        "--record",
+        "tour.mcap",
+        "--record",
+        "tour.csv",
+        "--save-lcd",
+        "lcd",
+        *extra,
+        cwd=directory,
+    )
     assert result.returncode == 0, result.stdout + result.stderr
     return directory / "tour.mcap"

@@ -19,8 +19,9 @@ def pitch_degrees(sim: Simulation, robot) -> float:
     return math.degrees(math.asin(max(-1.0, min(1.0, 2 * (w * y - z * x)))))
 
 
-def under_water_run(robot_type: RobotType, ahead: tuple[int, ...], trim: dict[int, float] | None = None,
-                    height: float = 0.8) -> tuple[list[float], list[float]]:
+def under_water_run(
+    robot_type: RobotType, ahead: tuple[int, ...], trim: dict[int, float] | None = None, height: float = 0.8
+) -> tuple[list[float], list[float]]:
     """Put `height` m above the floor of a 2 m deep pool (20 x 20 m), with the `trim` motors at
     their %: ahead at 60 % on the `ahead` motors for 10 s, 4 s without, astern for 10 s. Returns the
     hull's height (mm) and pitch (degrees) every 0.1 s."""

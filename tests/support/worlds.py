@@ -17,8 +17,10 @@ def example_robot(name: str) -> RobotType:
 def arena_scene(robots=(), objects=(), size: float = 3000, wall_height: float = 300, walls=()) -> Scene:
     """`robots`: (RobotType or built-in name, (x, y, phi)) pairs; `objects`: (built-in object name,
     (x, y, phi)) pairs; a square walled floor of `size` mm plus any extra `walls`."""
-    border = tuple(Wall(*ends, height=wall_height) for ends in
-                   ((0, 0, size, 0), (size, 0, size, size), (size, size, 0, size), (0, size, 0, 0)))
+    border = tuple(
+        Wall(*ends, height=wall_height)
+        for ends in ((0, 0, size, 0), (size, 0, size, size), (size, size, 0, size), (0, size, 0, 0))
+    )
     robot_types, placements = {}, []
     for robot, pose in robots:
         robot_type = robot if isinstance(robot, RobotType) else load_robot_type(robot)
@@ -30,5 +32,11 @@ def arena_scene(robots=(), objects=(), size: float = 3000, wall_height: float = 
         object_types[object_type.name] = object_type
         object_placements.append(ObjectPlacement(object_type.name, Pose(*pose)))
     world = World("test-arena", size, size, border + tuple(walls))
-    return Scene("test-arena", world, robot_types=robot_types, object_types=object_types,
-                 robots=tuple(placements), objects=tuple(object_placements))
+    return Scene(
+        "test-arena",
+        world,
+        robot_types=robot_types,
+        object_types=object_types,
+        robots=tuple(placements),
+        objects=tuple(object_placements),
+    )

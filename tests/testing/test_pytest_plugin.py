@@ -62,8 +62,13 @@ def test_does_not_compile(eyesim_cc, tmp_path):
 
 def test_the_plugin_gives_fixtures_and_explains_failures(tmp_path):
     (tmp_path / "test_student.py").write_text(textwrap.dedent(STUDENT_TESTS))
-    result = subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "test_student.py"],
-                            cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    result = subprocess.run(
+        [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "test_student.py"],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     out = result.stdout
     assert "1 passed" in out and "5 failed" in out, out
     assert "robot 1 ended" in out and "mm from (500, 500) (tolerance 100); it ended at (" in out

@@ -71,8 +71,7 @@ def test_a_python_callable_drives_into_a_wall_and_the_contact_is_counted_and_tim
 
 def test_argv_stdin_environment_keys_files_and_exit_codes(eyesim_sim, eyesim_cc, tmp_path):
     sim = eyesim_sim(arena())
-    sim.program(1, eyesim_cc(PROGRAMS / "io_echo.c"), "7", stdin="forty two\n", cwd=tmp_path,
-                env={"COLOUR": "green"})
+    sim.program(1, eyesim_cc(PROGRAMS / "io_echo.c"), "7", stdin="forty two\n", cwd=tmp_path, env={"COLOUR": "green"})
     sim.key(1, "KEY1", at=1.5)
     end = sim.run(until=10)
     robot = sim.robot(1)

@@ -71,9 +71,7 @@ class ViewerPage:
 
     def state(self, expression: str, *args: object) -> object:
         """Evaluates `eyesimViewer.<expression>` with `args`, e.g. state("robotPose", 1)."""
-        return self.page.evaluate(
-            "([name, args]) => window.eyesimViewer[name](...args)", [expression, list(args)]
-        )
+        return self.page.evaluate("([name, args]) => window.eyesimViewer[name](...args)", [expression, list(args)])
 
 
 def open_viewer(context: BrowserContext, url: str) -> ViewerPage:
@@ -83,8 +81,7 @@ def open_viewer(context: BrowserContext, url: str) -> ViewerPage:
     page.on("pageerror", lambda error: viewer.errors.append(str(error)))
     page.goto(url)
     page.wait_for_function(
-        "() => window.eyesimViewer?.connectionState() === 'open' && "
-        "window.eyesimViewer.scene().floor !== null"
+        "() => window.eyesimViewer?.connectionState() === 'open' && window.eyesimViewer.scene().floor !== null"
     )
     return viewer
 

@@ -18,7 +18,9 @@ from playwright.sync_api import BrowserContext, Playwright, sync_playwright  # n
 @pytest.fixture(scope="session")
 def playwright() -> Iterator[Playwright]:
     if not chromium_available():
-        pytest.fail("the browser tests need Chromium at /usr/bin/chromium (Debian package chromium; make test installs it as root)")
+        pytest.fail(
+            "the browser tests need Chromium at /usr/bin/chromium (Debian package chromium; make test installs it as root)"
+        )
     with sync_playwright() as running:
         yield running
 

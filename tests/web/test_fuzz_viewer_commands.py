@@ -33,31 +33,54 @@ REPLY_TIMEOUT = 10.0
 
 
 def fuzz_settings(test):
-    test = settings(max_examples=EXAMPLES, deadline=None, derandomize=SEED is None, database=None,
-                    suppress_health_check=list(HealthCheck))(test)
+    test = settings(
+        max_examples=EXAMPLES,
+        deadline=None,
+        derandomize=SEED is None,
+        database=None,
+        suppress_health_check=list(HealthCheck),
+    )(test)
     return seed(int(SEED))(test) if SEED is not None else test
 
 
 # Fields of each command (docs/viewer-channel.md, "Browser -> server" and "Timeline").
 COMMANDS = {
-    "key": ("robot", "key"), "pause": (), "resume": (), "speed": ("value",), "reset": (),
-    "touch": ("robot", "x", "y"), "irtv": ("robot", "code"), "serial": ("robot", "interface", "text"),
-    "digital": ("robot", "line", "level"), "analog": ("robot", "channel", "value"),
+    "key": ("robot", "key"),
+    "pause": (),
+    "resume": (),
+    "speed": ("value",),
+    "reset": (),
+    "touch": ("robot", "x", "y"),
+    "irtv": ("robot", "code"),
+    "serial": ("robot", "interface", "text"),
+    "digital": ("robot", "line", "level"),
+    "analog": ("robot", "channel", "value"),
     "place": ("robot", "object", "x", "y", "phi"),
-    "seek": ("time",), "live": (), "signals": (), "series": ("ids",), "paths": (),
+    "seek": ("time",),
+    "live": (),
+    "signals": (),
+    "series": ("ids",),
+    "paths": (),
 }
 TIMELINE = ("seek", "live", "signals", "series", "paths")  # answered by a task: the answer may come later
 
 scalars = st.one_of(
-    st.none(), st.booleans(),
-    st.sampled_from([0, 1, -1, 2, 4, 8, 16, 20, 21, 319, 479, 1023, 1024, 2**31, 2**53 + 1, 10**308, -10**308]),
-    st.integers(), st.integers(-10**400, 10**400),  # beyond floats (text frames below go beyond 4300 digits)
-    st.floats(allow_nan=False, allow_infinity=False), st.sampled_from([1e308, -1e308, 5e-324, 0.01, 1000.0]),
-    st.text(max_size=40), st.sampled_from(["max", "OK", "RED", "robot/1/x", "robot/1/psd.1", "robot/²/x", "\x00"]),
+    st.none(),
+    st.booleans(),
+    st.sampled_from([0, 1, -1, 2, 4, 8, 16, 20, 21, 319, 479, 1023, 1024, 2**31, 2**53 + 1, 10**308, -(10**308)]),
+    st.integers(),
+    st.integers(-(10**400), 10**400),  # beyond floats (text frames below go beyond 4300 digits)
+    st.floats(allow_nan=False, allow_infinity=False),
+    st.sampled_from([1e308, -1e308, 5e-324, 0.01, 1000.0]),
+    st.text(max_size=40),
+    st.sampled_from(["max", "OK", "RED", "robot/1/x", "robot/1/psd.1", "robot/²/x", "\x00"]),
     st.text(max_size=1).map(lambda t: t * 8_000),
 )
-json_values = st.recursive(scalars, lambda inner: st.lists(inner, max_size=5) |
-                           st.dictionaries(st.text(max_size=8), inner, max_size=5), max_leaves=12)
+json_values = st.recursive(
+    scalars,
+    lambda inner: st.lists(inner, max_size=5) | st.dictionaries(st.text(max_size=8), inner, max_size=5),
+    max_leaves=12,
+)
 
 
 @st.composite
@@ -79,11 +102,20 @@ def _fits(frame) -> bool:
 
 
 frames = st.one_of(
-    commands(), commands(), commands(),
+    commands(),
+    commands(),
+    commands(),
     json_values.map(json.dumps),  # any JSON, not only objects
     st.text(max_size=200),  # any text
-    st.sampled_from(['{"type": "speed", "value": NaN}', '{"type": "seek", "time": Infinity}', "[" * 60_000,
-                     '{"type": "seek", "time": 1' + "0" * 4400 + "}", '{"type": "seek", "time": 1e308}']),
+    st.sampled_from(
+        [
+            '{"type": "speed", "value": NaN}',
+            '{"type": "seek", "time": Infinity}',
+            "[" * 60_000,
+            '{"type": "seek", "time": 1' + "0" * 4400 + "}",
+            '{"type": "seek", "time": 1e308}',
+        ]
+    ),
     st.binary(max_size=200),  # a binary frame
 ).filter(_fits)
 
@@ -178,16 +210,19 @@ def test_every_command_gets_no_error_or_one_error_and_the_connection_stays(viewe
         assert browser.exchange(json.dumps(restore), timeline=restore["type"] == "live") == []
 
 
-@pytest.mark.parametrize("frame, error", [
-    ('{"type": [[]]}', "unknown message type [[]]"),  # once a TypeError and a traceback
-    ('{"type": "seek", "time": 1e308}', None),  # once an OverflowError in a task: no answer at all
-    ('{"type": "seek", "time": 1' + "0" * 400 + "}", None),
-    ('{"type": "' + "x" * 30_000 + '"}', "unknown message type 'xxxx"),
-])
+@pytest.mark.parametrize(
+    "frame, error",
+    [
+        ('{"type": [[]]}', "unknown message type [[]]"),  # once a TypeError and a traceback
+        ('{"type": "seek", "time": 1e308}', None),  # once an OverflowError in a task: no answer at all
+        ('{"type": "seek", "time": 1' + "0" * 400 + "}", None),
+        ('{"type": "' + "x" * 30_000 + '"}', "unknown message type 'xxxx"),
+    ],
+)
 def test_what_fuzzing_found(viewer_target, frame, error):
     _, browser, _ = viewer_target
     errors = browser.exchange(frame, timeline="seek" in frame)
-    assert [e["message"][:len(error)] for e in errors] == ([error] if error else [])
+    assert [e["message"][: len(error)] for e in errors] == ([error] if error else [])
     assert all(len(e["message"]) < 100 for e in errors)
 
 

@@ -110,9 +110,23 @@ def test_controls_are_off_while_the_simulator_is_away(browser_context, folder):
         page.wait_for_selector("#edit-scene:not([hidden])")
         page.wait_for_function("() => !document.querySelector('.program-restart').disabled")
         page.locator(".robot-io summary").first.click()
-        controls = ["#pause", "#speed", "#reset", "#tl-back", "#tl-play", "#tl-forward", "#tl-scrub",
-                    "#open-scenes", "#edit-scene", ".soft-key", ".program-restart", ".program-choice",
-                    ".ir-button", ".serial-input", ".analog-channel input"]
+        controls = [
+            "#pause",
+            "#speed",
+            "#reset",
+            "#tl-back",
+            "#tl-play",
+            "#tl-forward",
+            "#tl-scrub",
+            "#open-scenes",
+            "#edit-scene",
+            ".soft-key",
+            ".program-restart",
+            ".program-choice",
+            ".ir-button",
+            ".serial-input",
+            ".analog-channel input",
+        ]
         for selector in controls:
             assert page.locator(selector).first.is_enabled(), selector
         process.terminate()
@@ -138,8 +152,10 @@ def test_reset_view_brings_the_camera_back(browser_context, folder):
         page.mouse.move(corner[0] + 200, corner[1] - 80, steps=8)  # orbit
         page.mouse.up()
         page.mouse.wheel(0, -400)  # and zoom in
-        page.wait_for_function("p => window.eyesimViewer.cameraState().position.some((v, i) => Math.abs(v - p[i]) > 0.05)",
-                               arg=start["position"])
+        page.wait_for_function(
+            "p => window.eyesimViewer.cameraState().position.some((v, i) => Math.abs(v - p[i]) > 0.05)",
+            arg=start["position"],
+        )
         page.select_option("#view-mode", "follow")
         page.click("#reset-view")
         back = viewer.state("cameraState")

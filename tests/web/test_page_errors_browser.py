@@ -63,9 +63,11 @@ def test_the_live_viewer_and_the_robot_editor_have_no_errors(browser_context, tm
         problems = Problems()
         page = watched_page(browser_context, problems)
         page.goto(url)
-        page.wait_for_function("() => window.eyesimViewer?.connectionState() === 'open' && "
-                               "window.eyesimViewer.lcdUpdates(1) > 1 && window.eyesimViewer.cameraImages(1) > 1 && "
-                               "window.eyesimViewer.consoleText(1).includes('hello')")
+        page.wait_for_function(
+            "() => window.eyesimViewer?.connectionState() === 'open' && "
+            "window.eyesimViewer.lcdUpdates(1) > 1 && window.eyesimViewer.cameraImages(1) > 1 && "
+            "window.eyesimViewer.consoleText(1).includes('hello')"
+        )
         page.wait_for_selector("#edit-scene:not([hidden])")
         # What a student clicks first: the settings, the plots, the scene browser, the I/O.
         page.click("#settings-toggle")
@@ -84,30 +86,44 @@ def test_the_live_viewer_and_the_robot_editor_have_no_errors(browser_context, tm
         editor = popup.value
         editor.set_default_timeout(60_000)
         problems.watch(editor)
-        editor.wait_for_function("() => window.eyesimRobotEditor && eyesimRobotEditor.checks() > 0 && "
-                                 "eyesimRobotEditor.idle()")
+        editor.wait_for_function(
+            "() => window.eyesimRobotEditor && eyesimRobotEditor.checks() > 0 && eyesimRobotEditor.idle()"
+        )
         editor.wait_for_function("() => eyesimRobotEditor.preview() !== null")
         problems.assert_none()
 
 
 def test_the_replay_has_no_errors_and_asks_for_nothing_only_a_live_run_has(browser_context, tmp_path):
     tour = record_tour(tmp_path, robots=2)
-    replay = subprocess.Popen(eyesim_command("replay", str(tour), "--viewer-port", "0"), stdout=subprocess.PIPE,
-                              stderr=subprocess.PIPE, text=True)
+    replay = subprocess.Popen(
+        eyesim_command("replay", str(tour), "--viewer-port", "0"),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
     try:
         url = re.search(r"(http://\S+)", replay.stdout.readline()).group(1)
         problems = Problems()
         page = watched_page(browser_context, problems)
         page.goto(url)
-        page.wait_for_function("() => window.eyesimViewer?.timeline().mode === 'replay' && "
-                               "window.eyesimViewer.framesShown() > 0 && window.eyesimViewer.lcdUpdates(1) > 0")
+        page.wait_for_function(
+            "() => window.eyesimViewer?.timeline().mode === 'replay' && "
+            "window.eyesimViewer.framesShown() > 0 && window.eyesimViewer.lcdUpdates(1) > 0"
+        )
         page.locator("#tl-scrub").fill("5000")
         page.wait_for_function("() => window.eyesimViewer.framesShown() > 1")
         page.click("#plots-toggle")
         page.locator("input[data-signal='robot/1/x']").check()
         page.wait_for_function("() => window.eyesimViewer.plotted().length === 1")
-        for hidden in ("#robot-editor-link", "#settings-toggle", "#pause", "#reset", "#open-scenes", "#edit-scene",
-                       ".program-controls"):
+        for hidden in (
+            "#robot-editor-link",
+            "#settings-toggle",
+            "#pause",
+            "#reset",
+            "#open-scenes",
+            "#edit-scene",
+            ".program-controls",
+        ):
             assert page.locator(hidden).first.is_hidden(), hidden
         asked = [u for u in problems.requests if "/scenes/" in u or "/api/" in u or "robot-editor" in u]
         assert asked == []
@@ -119,8 +135,12 @@ def test_the_replay_has_no_errors_and_asks_for_nothing_only_a_live_run_has(brows
 
 def test_the_grading_report_and_the_replay_it_links_have_no_errors(browser_context, tmp_path):
     out = grade_class(tmp_path, ARRIVE_SPEC, {"lost": GETS_LOST})
-    server = subprocess.Popen(eyesim_command("replay", str(out), "--viewer-port", "0"), stdout=subprocess.PIPE,
-                              stderr=subprocess.PIPE, text=True)
+    server = subprocess.Popen(
+        eyesim_command("replay", str(out), "--viewer-port", "0"),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
     try:
         report_url = re.search(r"(http://\S+)", server.stdout.readline()).group(1)
         problems = Problems()
@@ -130,9 +150,11 @@ def test_the_grading_report_and_the_replay_it_links_have_no_errors(browser_conte
         page.wait_for_load_state("load")
         problems.assert_none()
         page.locator("#student-lost a.replay-link").click()
-        page.wait_for_function("() => window.eyesimViewer?.connectionState() === 'open' && "
-                               "window.eyesimViewer.timeline()?.mode === 'replay' && "
-                               "window.eyesimViewer.framesShown() > 0")
+        page.wait_for_function(
+            "() => window.eyesimViewer?.connectionState() === 'open' && "
+            "window.eyesimViewer.timeline()?.mode === 'replay' && "
+            "window.eyesimViewer.framesShown() > 0"
+        )
         problems.assert_none()
     finally:
         server.terminate()

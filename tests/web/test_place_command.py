@@ -19,8 +19,10 @@ from eyesim.scene import load_scene  # noqa: E402
 
 @pytest.fixture(scope="module")
 def viewer_sim():
-    scene = arena_scene(robots=[("S4", (500, 500, 0)), (example_robot("Reacher"), (2500, 2500, 0))],
-                        objects=[("Can", (1500, 500, 0)), ("Crate1", (2500, 500, 0))])
+    scene = arena_scene(
+        robots=[("S4", (500, 500, 0)), (example_robot("Reacher"), (2500, 2500, 0))],
+        objects=[("Can", (1500, 500, 0)), ("Crate1", (2500, 500, 0))],
+    )
     with viewer_simulation(scene) as running:
         yield running
 
@@ -67,8 +69,11 @@ def test_bad_place_commands_get_clear_errors_and_move_nothing(viewer_sim):
         ({"type": "place", "robot": 2, "x": 1, "y": 1, "phi": 0}, "mounted on the floor"),
         ({"type": "place", "object": 2, "x": 1, "y": 1, "phi": 0}, "is fixed"),
     ]
-    messages = run_async(_talk(server.port, [message for message, _ in bad],
-                               lambda ms: sum(m["type"] == "error" for m in ms) == len(bad)))
+    messages = run_async(
+        _talk(
+            server.port, [message for message, _ in bad], lambda ms: sum(m["type"] == "error" for m in ms) == len(bad)
+        )
+    )
     errors = [m["message"] for m in messages if m["type"] == "error"]
     for (_, expected), error in zip(bad, errors):
         assert expected in error and (error.startswith("place: ") or expected.startswith("not valid JSON"))
@@ -102,8 +107,9 @@ def test_placing_a_robot_moves_its_true_pose_not_its_odometry_even_while_paused(
     true_pose, odometry = program.send("SIM_GET_ROBOT", 1), program.send("VW_GET_POSITION")
     assert sim.time == paused_at  # placing while paused took no simulation time
 
-    run_async(_talk(server.port, [{"type": "resume"}], lambda ms: any(m["type"] == "status" and not m["paused"]
-                                                                     for m in ms)))
+    run_async(
+        _talk(server.port, [{"type": "resume"}], lambda ms: any(m["type"] == "status" and not m["paused"] for m in ms))
+    )
     assert program.reply("SIM_GET_ROBOT", true_pose)[1:] == (1200, 800, 0, 90)
     assert program.reply("VW_GET_POSITION", odometry)[:3] == (0, 0, 0)  # odometry did not notice
     program.close()
@@ -111,9 +117,15 @@ def test_placing_a_robot_moves_its_true_pose_not_its_odometry_even_while_paused(
 
 def test_placing_an_object_sets_it_down_upright_at_the_new_place(viewer_sim):
     _, port, server = viewer_sim
-    run_async(_talk(server.port, [{"type": "place", "object": 1, "x": 0.9, "y": 1.7, "phi": -1.0}],
-                    lambda ms: any(m["type"] == "snapshot" and
-                                   abs(_pose_in(m, "objects", 1)["pos"][0] - 0.9) < 1e-3 for m in ms)))
+    run_async(
+        _talk(
+            server.port,
+            [{"type": "place", "object": 1, "x": 0.9, "y": 1.7, "phi": -1.0}],
+            lambda ms: any(
+                m["type"] == "snapshot" and abs(_pose_in(m, "objects", 1)["pos"][0] - 0.9) < 1e-3 for m in ms
+            ),
+        )
+    )
     program = ProgramClient(port)
     program.hello()
     x, y, z, phi = program.call("SIM_GET_OBJECT", 1)[1:]

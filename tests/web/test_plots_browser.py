@@ -49,9 +49,11 @@ def test_legend_readout_steps_click_to_seek_and_exports(browser_context, tmp_pat
         page.click("#plots-toggle")
         for signal in SIGNALS:
             page.locator(f"input[data-signal='{signal}']").check()
-        page.wait_for_function("ids => { const p = window.eyesimViewer.plotted(); return p.length === 2 && "
-                               "p.every((s) => s.points > 0) && ids.every((id) => p.some((s) => s.id === id)); }",
-                               arg=SIGNALS)
+        page.wait_for_function(
+            "ids => { const p = window.eyesimViewer.plotted(); return p.length === 2 && "
+            "p.every((s) => s.points > 0) && ids.every((id) => p.some((s) => s.id === id)); }",
+            arg=SIGNALS,
+        )
         points = {s["id"]: s["points"] for s in viewer.state("plotted")}
         assert points["robot/1/psd.1"] >= 6 and points["robot/1/x"] > 100
 
@@ -103,6 +105,7 @@ def test_legend_readout_steps_click_to_seek_and_exports(browser_context, tmp_pat
         page.mouse.click(spot["x"], spot["y"])
         page.wait_for_function("() => window.eyesimViewer.timeline().mode === 'review'")
         assert viewer.state("timeline")["time"] == pytest.approx(1.5, abs=0.05)
-        page.wait_for_function("() => Math.abs(window.eyesimViewer.robotPose(1).time - "
-                               "window.eyesimViewer.timeline().time) < 0.05")
+        page.wait_for_function(
+            "() => Math.abs(window.eyesimViewer.robotPose(1).time - window.eyesimViewer.timeline().time) < 0.05"
+        )
         assert viewer.errors == []

@@ -38,8 +38,9 @@ int main(void) {
 
 def call(url: str, route: str, body: dict | None = None, headers: dict | None = None) -> tuple[int, dict]:
     data = None if body is None else json.dumps(body).encode()
-    request = urllib.request.Request(url.rstrip("/") + route, data=data, headers=headers or {},
-                                     method="GET" if body is None else "POST")
+    request = urllib.request.Request(
+        url.rstrip("/") + route, data=data, headers=headers or {}, method="GET" if body is None else "POST"
+    )
     try:
         with urllib.request.urlopen(request, timeout=60) as response:
             return response.status, json.load(response)
@@ -64,7 +65,9 @@ def simulator(tmp_path):
     (tmp_path / "crash.c").write_text(CRASH)
     (tmp_path / "src").mkdir()
     (tmp_path / "src" / "broken.c").write_text(BROKEN)
-    (tmp_path / "traceback.py").write_text("from eye import *\nprint('before')\nraise RuntimeError('the program gave up')\n")
+    (tmp_path / "traceback.py").write_text(
+        "from eye import *\nprint('before')\nraise RuntimeError('the program gave up')\n"
+    )
     with simulator_with_viewer(cwd=tmp_path) as (process, url):
         yield url, tmp_path
 
@@ -114,21 +117,29 @@ def test_paths_outside_the_scene_roots_are_refused(simulator):
     outside.mkdir()
     (outside / "prog.py").write_text("print('should not run')\n")
     os.symlink(outside / "prog.py", folder / "link.py")
-    cases = {"../" + f"{folder.name}-outside/prog.py": "'..' is not allowed",
-             str(outside / "prog.py"): "absolute paths are not allowed",
-             "link.py": "leads out of the scene root",
-             "missing.py": "no such file",
-             "wait.c": "is not a program"}
+    cases = {
+        "../" + f"{folder.name}-outside/prog.py": "'..' is not allowed",
+        str(outside / "prog.py"): "absolute paths are not allowed",
+        "link.py": "leads out of the scene root",
+        "missing.py": "no such file",
+        "wait.c": "is not a program",
+    }
     for path, reason in cases.items():
         status, answer = call(url, "/api/programs/start", {"robot": 1, "root": 0, "path": path})
         assert status == 400 and reason in answer["error"], (path, answer)
-    assert call(url, "/api/programs/start", {"robot": 7, "root": 0, "path": "traceback.py"}) == \
-        (400, {"error": "no robot 7"})
+    assert call(url, "/api/programs/start", {"robot": 7, "root": 0, "path": "traceback.py"}) == (
+        400,
+        {"error": "no robot 7"},
+    )
     assert call(url, "/api/programs/start", {"robot": 1, "root": 5, "path": "traceback.py"})[0] == 400
     assert all(f["path"] != "link.py" for f in call(url, "/api/programs")[1]["files"])
     # Another site's page may not use the routes at all.
-    status, answer = call(url, "/api/programs/start", {"robot": 1, "root": 0, "path": "traceback.py"},
-                          headers={"Origin": "http://evil.example"})
+    status, answer = call(
+        url,
+        "/api/programs/start",
+        {"robot": 1, "root": 0, "path": "traceback.py"},
+        headers={"Origin": "http://evil.example"},
+    )
     assert status == 403 and "foreign Origin" in answer["text"]
     assert call(url, "/api/programs")[1]["robots"][0]["state"] == "none"
 
@@ -139,11 +150,19 @@ def test_settings_change_the_running_scene(simulator):
     assert status == 200 and settings["clock"] == "realtime"
     assert (settings["vis"], settings["psd_noise"], settings["seed"]) == (True, 0.0, 0)  # the bundled arena's
     status, settings = call(url, "/api/settings", {"vis": False, "psd_noise": 12.5, "seed": 7})
-    assert status == 200 and (settings["vis"], settings["trace"], settings["psd_noise"], settings["seed"]) == \
-        (False, False, 12.5, 7)
+    assert status == 200 and (settings["vis"], settings["trace"], settings["psd_noise"], settings["seed"]) == (
+        False,
+        False,
+        12.5,
+        7,
+    )
     assert call(url, "/api/settings")[1]["psd_noise"] == 12.5
-    for body, reason in (({"psd_noise": -1}, "psd_noise"), ({"seed": 1.5}, "seed"), ({"vis": "yes"}, "vis"),
-                         ({"gravity": 1}, "unknown field 'gravity'")):
+    for body, reason in (
+        ({"psd_noise": -1}, "psd_noise"),
+        ({"seed": 1.5}, "seed"),
+        ({"vis": "yes"}, "vis"),
+        ({"gravity": 1}, "unknown field 'gravity'"),
+    ):
         status, answer = call(url, "/api/settings", body)
         assert status == 400 and reason in answer["error"], answer
     assert call(url, "/api/settings")[1]["seed"] == 7

@@ -80,7 +80,9 @@ def test_edit_compile_fix_save_and_restart_from_the_page(browser_context, tmp_pa
 
         replace_line(page, 4, "LCDArea(100, 100, 380, 200, GREN, 1);")
         replace_line(page, 3, 'LCDPrintf("version 2\\n");')
-        assert page.evaluate(f"() => {EDITOR}")["dirty"] and "•" in editor.locator(".program-editor-title").text_content()
+        assert (
+            page.evaluate(f"() => {EDITOR}")["dirty"] and "•" in editor.locator(".program-editor-title").text_content()
+        )
         editor.locator(".program-editor-compile").click()
         page.wait_for_function(f"() => {EDITOR}.message.includes('did not compile')", timeout=60_000)
         marked = page.evaluate(f"() => {EDITOR}")["marked"]
@@ -131,11 +133,19 @@ def test_a_refused_file_and_a_robot_without_a_program_say_why(browser_context, t
         screenshot(page, "program-editor-python")
         # At 1024x700 the editor takes the 3D view's place, its controls inside it, the LCD beside it.
         page.set_viewport_size({"width": 1024, "height": 700})
-        page.wait_for_function("() => document.querySelector('.program-editor').getBoundingClientRect().right <= "
-                               "document.querySelector('.robots').getBoundingClientRect().left")
+        page.wait_for_function(
+            "() => document.querySelector('.program-editor').getBoundingClientRect().right <= "
+            "document.querySelector('.robots').getBoundingClientRect().left"
+        )
         box = editor.bounding_box()
-        for control in ("program-editor-file", "program-editor-save", "program-editor-compile",
-                        "program-editor-restart", "program-editor-close", "cm-content"):
+        for control in (
+            "program-editor-file",
+            "program-editor-save",
+            "program-editor-compile",
+            "program-editor-restart",
+            "program-editor-close",
+            "cm-content",
+        ):
             inner = editor.locator(f".{control}").bounding_box()
             assert box["x"] <= inner["x"] and inner["x"] + inner["width"] <= box["x"] + box["width"] + 0.5, control
             assert box["y"] <= inner["y"] < box["y"] + box["height"], control

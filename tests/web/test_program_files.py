@@ -40,8 +40,17 @@ def test_the_listing_holds_robot_programs_and_sources_and_skips_the_rest(tmp_pat
         (tmp_path / "tests" / name).write_text(ROBOT_PY)
     (tmp_path / "tests" / "programs").mkdir()
     (tmp_path / "tests" / "programs" / "square.c").write_text(ROBOT_C)
-    for folder in (".hidden", "build", "dist", "__pycache__", "node_modules", "venv", "target",
-                   "thing.egg-info", "CMakeFiles"):
+    for folder in (
+        ".hidden",
+        "build",
+        "dist",
+        "__pycache__",
+        "node_modules",
+        "venv",
+        "target",
+        "thing.egg-info",
+        "CMakeFiles",
+    ):
         (tmp_path / folder).mkdir()
         (tmp_path / folder / "robot.py").write_text(ROBOT_PY)
     (tmp_path / "pkg").mkdir()  # a Python package: a library
@@ -56,8 +65,14 @@ def test_the_listing_holds_robot_programs_and_sources_and_skips_the_rest(tmp_pat
     (tmp_path / "a" / "b" / "c" / "d" / "e" / "deeper.py").write_text(ROBOT_PY)  # five: not
     listed = program_files.list_files([Root("run folder", tmp_path)])
     assert [(f["path"], f["kind"]) for f in listed] == [
-        ("demo.py", "python"), ("drive", "executable"), ("run_me.py", "python"), ("a/b/c/d/deep.py", "python"),
-        ("src/arm.cpp", "c++"), ("src/wall.c", "c"), ("tests/programs/square.c", "c")]
+        ("demo.py", "python"),
+        ("drive", "executable"),
+        ("run_me.py", "python"),
+        ("a/b/c/d/deep.py", "python"),
+        ("src/arm.cpp", "c++"),
+        ("src/wall.c", "c"),
+        ("tests/programs/square.c", "c"),
+    ]
     assert all(f["root"] == 0 for f in listed)
 
 
@@ -77,16 +92,18 @@ def test_resolve_names_a_file_inside_its_root_or_says_why_not(tmp_path):
     roots = [Root("run folder", root)]
     assert program_files.resolve(roots, 0, "sub/drive") == program.resolve()
     assert program_files.resolve(roots, 0, "inner-link") == program.resolve()
-    for root_number, path, reason in [(0, "../outside", "'..' is not allowed"),
-                                      (0, "sub/../../outside", "'..' is not allowed"),
-                                      (0, str(tmp_path / "outside"), "absolute paths are not allowed"),
-                                      (0, "link", "leads out of the scene root"),
-                                      (0, "sub", "no such file"),
-                                      (0, "", "expected a file path"),
-                                      (0, "a\0b", "has a NUL character"),
-                                      (0, 5, "expected a file path"),
-                                      (1, "sub/drive", "no scene root 1"),
-                                      (True, "sub/drive", "no scene root True")]:
+    for root_number, path, reason in [
+        (0, "../outside", "'..' is not allowed"),
+        (0, "sub/../../outside", "'..' is not allowed"),
+        (0, str(tmp_path / "outside"), "absolute paths are not allowed"),
+        (0, "link", "leads out of the scene root"),
+        (0, "sub", "no such file"),
+        (0, "", "expected a file path"),
+        (0, "a\0b", "has a NUL character"),
+        (0, 5, "expected a file path"),
+        (1, "sub/drive", "no scene root 1"),
+        (True, "sub/drive", "no scene root True"),
+    ]:
         with pytest.raises(FileAccessError, match=reason):
             program_files.resolve(roots, root_number, path)
 
@@ -96,8 +113,10 @@ def test_the_roots_are_the_run_folder_and_the_scenes_folder(tmp_path):
     scene.parent.mkdir()
     scene.write_text("")
     roots = program_files.scene_roots(tmp_path, str(scene))
-    assert [(r.name, r.path) for r in roots] == [("run folder", tmp_path.resolve()),
-                                                 ("scene folder", scene.parent.resolve())]
+    assert [(r.name, r.path) for r in roots] == [
+        ("run folder", tmp_path.resolve()),
+        ("scene folder", scene.parent.resolve()),
+    ]
     assert len(program_files.scene_roots(scene.parent, str(scene))) == 1  # the same folder once
     assert len(program_files.scene_roots(tmp_path, "test-arena")) == 1  # a scene made in memory
     assert program_files.locate(roots, scene.parent / "lab.sim") == {"root": 0, "path": "scenes/lab.sim"}

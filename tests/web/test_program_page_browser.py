@@ -37,7 +37,9 @@ int main(void) { volatile int *p = 0; *p = 1; return 0; }
 def moved_since(page, start: list[float]) -> None:
     page.wait_for_function(
         "s => { const p = window.eyesimViewer.robotPose(1); return p && Math.hypot(p.pos[0] - s[0], p.pos[1] - s[1]) > 0.05; }",
-        arg=start, timeout=20_000)
+        arg=start,
+        timeout=20_000,
+    )
 
 
 def choose_and_click(panel, path: str, button: str) -> None:
@@ -51,7 +53,9 @@ def folder(tmp_path):
     (tmp_path / "drive.c").write_text(DRIVE)
     (tmp_path / "broken.c").write_text(BROKEN)
     (tmp_path / "crash.c").write_text(CRASH)
-    (tmp_path / "give_up.py").write_text("from eye import *\nprint('thinking')\nraise RuntimeError('the program gave up')\n")
+    (tmp_path / "give_up.py").write_text(
+        "from eye import *\nprint('thinking')\nraise RuntimeError('the program gave up')\n"
+    )
     return tmp_path
 
 
@@ -83,7 +87,9 @@ def test_compile_start_stop_and_restart_from_the_page(browser_context, folder):
         camera = viewer.state("cameraState")["position"]
         page.wait_for_function(
             "c => { const p = window.eyesimViewer.cameraState().position; return Math.hypot(p[0] - c[0], p[2] - c[2]) > 0.05; }",
-            arg=camera, timeout=20_000)
+            arg=camera,
+            timeout=20_000,
+        )
         assert abs(viewer.state("cameraState")["position"][1] - camera[1]) < 0.01  # at the same height above the floor
 
         panel.locator(".program-stop").click()
@@ -113,8 +119,10 @@ def test_a_crash_and_a_traceback_show_why_the_program_ended(browser_context, fol
         screenshot(page, "crashed")
 
         choose_and_click(panel, "give_up.py", "start")
-        page.wait_for_function("() => window.eyesimViewer.programState(1)?.name === 'give_up.py' && "
-                               "window.eyesimViewer.programState(1)?.event === 'exited'")
+        page.wait_for_function(
+            "() => window.eyesimViewer.programState(1)?.name === 'give_up.py' && "
+            "window.eyesimViewer.programState(1)?.event === 'exited'"
+        )
         console = viewer.state("consoleText", 1)
         assert "Traceback (most recent call last)" in console and "RuntimeError: the program gave up" in console
         assert panel.locator(".program-state").text_content() == "give_up.py exited with code 1"
@@ -193,9 +201,11 @@ def test_click_a_robot_among_twenty_and_follow_it_or_look_down(browser_context, 
 
         page.locator("#view-mode").select_option("follow")
         page.wait_for_function("() => window.eyesimViewer.cameraState().following === 4")
-        page.wait_for_function("() => { const c = window.eyesimViewer.cameraState(); "
-                               "const p = window.eyesimViewer.displayedRobotPose(4).pos; "
-                               "return Math.hypot(c.position[0] - p[0], c.position[2] + p[1]) < 1.1; }")
+        page.wait_for_function(
+            "() => { const c = window.eyesimViewer.cameraState(); "
+            "const p = window.eyesimViewer.displayedRobotPose(4).pos; "
+            "return Math.hypot(c.position[0] - p[0], c.position[2] + p[1]) < 1.1; }"
+        )
         camera = viewer.state("cameraState")
         pose = viewer.state("displayedRobotPose", 4)["pos"]
         # Behind the robot and above it, at the follow distance.

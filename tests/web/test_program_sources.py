@@ -23,7 +23,7 @@ int main(void) {
   for (;;) OSWait(100);
 }
 """
-BROKEN = HELLO.replace('LCDPrintf("hello 1\\n");', 'int x = ;')
+BROKEN = HELLO.replace('LCDPrintf("hello 1\\n");', "int x = ;")
 SLOPPY = HELLO.replace('LCDPrintf("hello 1\\n");', 'int n; LCDPrintf("%d\\n"); if (n) return 1;')
 PYTHON_BROKEN = "from eye import *\n\nLCDPrintf('fine')\nif True\n    pass\n"
 
@@ -60,16 +60,18 @@ def test_the_robots_source_opens_saves_and_keeps_its_mode(simulator):
     assert (source["root"], source["path"], source["kind"], source["text"]) == (0, "robots/hello.c", "c", HELLO)
 
     changed = HELLO.replace("hello 1", "hello 2")
-    status, saved = answered(url, "/api/sources/save", {"root": 0, "path": "robots/hello.c", "text": changed,
-                                                         "version": source["version"]})
+    status, saved = answered(
+        url, "/api/sources/save", {"root": 0, "path": "robots/hello.c", "text": changed, "version": source["version"]}
+    )
     assert status == 200 and saved["version"] != source["version"], saved
     assert (folder / "robots" / "hello.c").read_text() == changed
     assert (folder / "robots" / "hello.c").stat().st_mode & 0o777 == 0o640
     assert answered(url, "/api/sources/read", {"root": 0, "path": "robots/hello.c"})[1]["text"] == changed
 
     # Saved from a text opened before that save: refused, the file keeps the newer text.
-    status, answer = answered(url, "/api/sources/save", {"root": 0, "path": "robots/hello.c", "text": HELLO,
-                                                          "version": source["version"]})
+    status, answer = answered(
+        url, "/api/sources/save", {"root": 0, "path": "robots/hello.c", "text": HELLO, "version": source["version"]}
+    )
     assert status == 409 and "changed on disk since it was opened" in answer["error"]
     assert (folder / "robots" / "hello.c").read_text() == changed
 
@@ -113,14 +115,19 @@ def test_run_starts_the_saved_source_and_restart_rebuilds_it(simulator):
 
 def test_paths_out_of_the_roots_are_refused_for_reading_and_writing(simulator):
     url, folder, outside = simulator
-    cases = {"../outside/secret.c": (403, "'..' is not allowed"),
-             str(outside / "secret.c"): (403, "absolute paths are not allowed"),
-             "link.c": (403, "leads out of"),
-             "notes.txt": (403, "is not a program source"),
-             "missing.c": (404, "no such file")}
+    cases = {
+        "../outside/secret.c": (403, "'..' is not allowed"),
+        str(outside / "secret.c"): (403, "absolute paths are not allowed"),
+        "link.c": (403, "leads out of"),
+        "notes.txt": (403, "is not a program source"),
+        "missing.c": (404, "no such file"),
+    }
     for path, (code, reason) in cases.items():
-        for route, body in (("/api/sources/read", {}), ("/api/sources/save", {"text": "int main;"}),
-                            ("/api/sources/check", {})):
+        for route, body in (
+            ("/api/sources/read", {}),
+            ("/api/sources/save", {"text": "int main;"}),
+            ("/api/sources/check", {}),
+        ):
             status, answer = answered(url, route, {"root": 0, "path": path, **body})
             assert status == code and reason in answer["error"], (route, path, answer)
     assert (outside / "secret.c").read_text() == "int main(void) { return 0; }\n"
@@ -132,8 +139,9 @@ def test_paths_out_of_the_roots_are_refused_for_reading_and_writing(simulator):
     assert status == 403, answer
     # Another site's page may neither read nor write.
     for route, body in (("/api/sources/read", {}), ("/api/sources/save", {"text": "x"})):
-        status, answer = call(url, route, {"root": 0, "path": "robots/hello.c", **body},
-                              headers={"Origin": "http://evil.example"})
+        status, answer = call(
+            url, route, {"root": 0, "path": "robots/hello.c", **body}, headers={"Origin": "http://evil.example"}
+        )
         assert status == 403 and "foreign Origin" in answer["text"]
     assert (folder / "robots" / "hello.c").read_text() == HELLO
 

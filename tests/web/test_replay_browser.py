@@ -34,8 +34,12 @@ def tour(tmp_path_factory):
 
 @pytest.fixture
 def replay(tour):
-    process = subprocess.Popen(eyesim_command("replay", str(tour), "--viewer-port", "0"), stdout=subprocess.PIPE,
-                               stderr=subprocess.PIPE, text=True)
+    process = subprocess.Popen(
+        eyesim_command("replay", str(tour), "--viewer-port", "0"),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
     try:
         match = re.search(r"(http://\S+)", process.stdout.readline())
         assert match, process.stderr.read()
@@ -49,16 +53,21 @@ def scrub_to(page, seconds: float, exact: bool = True) -> None:
     """Drags the timeline's slider to `seconds` (as near as its steps allow) and waits for its frame,
     whose snapshot is at that very time (`exact`, a recording) or the last one before it (live history)."""
     frames = page.evaluate("() => window.eyesimViewer.framesShown()")
-    page.evaluate("""t => {
+    page.evaluate(
+        """t => {
         const slider = document.querySelector('#tl-scrub');
         const { start, end } = window.eyesimViewer.timeline();
         slider.value = String(Math.round((t - start) / (end - start) * Number(slider.max)));
         slider.dispatchEvent(new Event('input'));
-    }""", seconds)
-    page.wait_for_function("""([t, frames, exact]) => Math.abs(window.eyesimViewer.timeline().time - t) < 0.001 &&
+    }""",
+        seconds,
+    )
+    page.wait_for_function(
+        """([t, frames, exact]) => Math.abs(window.eyesimViewer.timeline().time - t) < 0.001 &&
         window.eyesimViewer.framesShown() > frames &&
         (!exact || Math.abs(window.eyesimViewer.robotPose(1).time - window.eyesimViewer.timeline().time) < 1e-6)""",
-                           arg=[seconds, frames, exact])
+        arg=[seconds, frames, exact],
+    )
 
 
 def psd_beams(page) -> list[dict]:
@@ -243,9 +252,11 @@ def test_a_live_run_can_be_scrubbed_back_and_then_follows_the_present_again(brow
         page.check("input[data-signal='robot/1/odometry.x']")
         page.wait_for_function("() => (window.eyesimViewer.plotted()[0]?.points ?? 0) > 30")
         page.click("#tl-live")
-        page.wait_for_function("() => window.eyesimViewer.timeline().mode === 'live' && "
-                               "window.eyesimViewer.consoleText(1).endsWith('done\\n') && "
-                               "window.eyesimViewer.robotPose(1).time > 2")
+        page.wait_for_function(
+            "() => window.eyesimViewer.timeline().mode === 'live' && "
+            "window.eyesimViewer.consoleText(1).endsWith('done\\n') && "
+            "window.eyesimViewer.robotPose(1).time > 2"
+        )
         assert viewer.errors == []
         page.close()
 
@@ -269,7 +280,9 @@ def test_another_recording_can_be_opened_from_the_page(browser_context, replay, 
     assert viewer.state("timeline")["end"] > 2  # still the tour
     page.set_input_files("#tl-file", str(tmp_path / "arena.mcap"))
     page.wait_for_function("() => window.eyesimViewer.uploadStatus() === 'showing arena.mcap'")
-    page.wait_for_function("() => window.eyesimViewer.robotIds().length === 1 && window.eyesimViewer.timeline().end === 0.5")
+    page.wait_for_function(
+        "() => window.eyesimViewer.robotIds().length === 1 && window.eyesimViewer.timeline().end === 0.5"
+    )
     assert page.locator("#tl-title").inner_text() == "replay of arena.mcap"
     assert viewer.errors == []
     page.close()

@@ -125,8 +125,9 @@ def test_a_new_differential_robot_with_three_psds_and_a_camera_is_built_saved_an
 
     # A click on the right PSD's beam selects that PSD and its part of the form.
     beam = next(b for b in preview["psds"] if b["name"] == "PSD_RIGHT")
-    on_beam = page.evaluate("p => eyesimRobotEditor.screenOf(p)",
-                            [v + d * 0.2 for v, d in zip(beam["origin"], beam["direction"])])
+    on_beam = page.evaluate(
+        "p => eyesimRobotEditor.screenOf(p)", [v + d * 0.2 for v, d in zip(beam["origin"], beam["direction"])]
+    )
     page.mouse.click(on_beam["x"], on_beam["y"])
     assert page.locator("#selection").inner_text() == "Selected /psds/2"
     assert "selected" in page.locator('fieldset[data-pointer="/psds/2"]').get_attribute("class")
@@ -139,8 +140,9 @@ def test_a_new_differential_robot_with_three_psds_and_a_camera_is_built_saved_an
     target = page.evaluate("p => eyesimRobotEditor.screenOf(p)", [centre[0] + 0.09, centre[1] + 0.04, 0.04])
     before = checks(page)
     for step in range(1, 6):
-        page.mouse.move(start["x"] + (target["x"] - start["x"]) * step / 5,
-                        start["y"] + (target["y"] - start["y"]) * step / 5)
+        page.mouse.move(
+            start["x"] + (target["x"] - start["x"]) * step / 5, start["y"] + (target["y"] - start["y"]) * step / 5
+        )
     page.mouse.up()
     settle(page, before)
     moved = robot(page)["psds"][0]
@@ -157,7 +159,8 @@ def test_a_new_differential_robot_with_three_psds_and_a_camera_is_built_saved_an
     start_pose = page.evaluate("eyesimRobotEditor.drive().snapshot.robots[0].pos")
     page.keyboard.down("ArrowUp")
     page.wait_for_function(
-        "x => eyesimRobotEditor.drive().snapshot.robots[0].pos[0] > x + 0.1", arg=start_pose[0], timeout=30_000)
+        "x => eyesimRobotEditor.drive().snapshot.robots[0].pos[0] > x + 0.1", arg=start_pose[0], timeout=30_000
+    )
     page.keyboard.up("ArrowUp")
     assert page.locator(".psd-readings .reading").count() == 3
     page.wait_for_function("() => eyesimRobotEditor.drive().readings.camera !== undefined")
@@ -183,10 +186,10 @@ def test_a_new_differential_robot_with_three_psds_and_a_camera_is_built_saved_an
     assert saved.read_text() == text
 
     # In a scene, facing walls at known distances, a C program reads the three PSDs.
-    (root / "psd.sim").write_text("# walls at 400 mm ahead, 300 mm left, 500 mm right\n"
-                                  "world room.wld\nrobi Tri.robi\nTri 1000 600 0\n")
-    (root / "room.wld").write_text("floor 2000 2000\n"
-                                   "1400 0 1400 2000\n0 900 2000 900\n0 100 2000 100\n")
+    (root / "psd.sim").write_text(
+        "# walls at 400 mm ahead, 300 mm left, 500 mm right\nworld room.wld\nrobi Tri.robi\nTri 1000 600 0\n"
+    )
+    (root / "room.wld").write_text("floor 2000 2000\n1400 0 1400 2000\n0 900 2000 900\n0 100 2000 100\n")
     with eyesim.Simulation(root / "psd.sim") as sim:
         sim.c_program(1, READ_PSDS)
         sim.run(until=5)
@@ -231,7 +234,10 @@ def test_the_arm_on_a_base_moves_its_joints_with_sliders_in_the_test_drive(edito
     shoulder.fill("230")
     page.wait_for_function(
         """before => eyesimRobotEditor.drive().snapshot.bodies.some((body, i) =>
-               Math.abs(body.pos[2] - before[i].pos[2]) > 0.02)""", arg=before, timeout=30_000)
+               Math.abs(body.pos[2] - before[i].pos[2]) > 0.02)""",
+        arg=before,
+        timeout=30_000,
+    )
     shot(page, "arm-sliders")
     page.locator("#end-try").click()
 
@@ -254,11 +260,20 @@ def test_a_part_the_schema_gains_appears_in_the_editor_without_editor_code(edito
     from eyesim.scene import json_format
 
     published = json_format.schema("robot")
-    extended = {**published, "properties": {**published["properties"], "sonar": {"$ref": "#/$defs/sonar"}},
-                "$defs": {**published["$defs"], "sonar": {
-                    "type": "object", "description": "an ultrasonic range finder", "required": ["range"],
-                    "additionalProperties": False,
-                    "properties": {"range": {"type": "number", "exclusiveMinimum": 0, "description": "mm"}}}}}
+    extended = {
+        **published,
+        "properties": {**published["properties"], "sonar": {"$ref": "#/$defs/sonar"}},
+        "$defs": {
+            **published["$defs"],
+            "sonar": {
+                "type": "object",
+                "description": "an ultrasonic range finder",
+                "required": ["range"],
+                "additionalProperties": False,
+                "properties": {"range": {"type": "number", "exclusiveMinimum": 0, "description": "mm"}},
+            },
+        },
+    }
     monkeypatch.setattr(json_format, "schema", lambda kind: extended if kind == "robot" else published)
     page, server, _ = editor
     open_editor(page, server, "builtin:S4")

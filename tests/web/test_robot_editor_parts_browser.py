@@ -30,8 +30,9 @@ def room(tmp_path):
 
 def open_robot(page, base: str, source: str) -> None:
     page.goto(f"{base}robot-editor.html?open={source}")
-    page.wait_for_function("() => window.eyesimRobotEditor && eyesimRobotEditor.checks() > 0 && "
-                           "eyesimRobotEditor.idle()")
+    page.wait_for_function(
+        "() => window.eyesimRobotEditor && eyesimRobotEditor.checks() > 0 && eyesimRobotEditor.idle()"
+    )
 
 
 def settled(page, before: int) -> None:
@@ -65,18 +66,42 @@ def test_parts_by_drive_psd_presets_file_name_and_add_to_scene(browser_context, 
         # A differential robot: wheels, its axle, an arm (a mobile manipulator, as the Picker);
         # no thrusters, buoyancy or steering.
         open_robot(page, base, "builtin:S4")
-        assert offered(page) == {"wheels": True, "steering": False, "axis_offset": True, "thrusters": False,
-                                 "buoyancy": False, "drag": False, "start_depth": False, "arm": True}
+        assert offered(page) == {
+            "wheels": True,
+            "steering": False,
+            "axis_offset": True,
+            "thrusters": False,
+            "buoyancy": False,
+            "drag": False,
+            "start_depth": False,
+            "arm": True,
+        }
         save_screenshot(page, "robot-editor-parts-1-differential")
         # Another drive offers other parts; the S4's wheels stay shown while it has them (to be removed).
         choose_drive(page, "submarine")
-        assert offered(page) == {"wheels": True, "steering": False, "axis_offset": False, "thrusters": True,
-                                 "buoyancy": True, "drag": True, "start_depth": True, "arm": False}
+        assert offered(page) == {
+            "wheels": True,
+            "steering": False,
+            "axis_offset": False,
+            "thrusters": True,
+            "buoyancy": True,
+            "drag": True,
+            "start_depth": True,
+            "arm": False,
+        }
         choose_drive(page, "ackermann")
         assert offered(page)["steering"] and not offered(page)["thrusters"]
         choose_drive(page, "arm")
-        assert offered(page) == {"wheels": True, "steering": False, "axis_offset": False, "thrusters": False,
-                                 "buoyancy": False, "drag": False, "start_depth": False, "arm": True}
+        assert offered(page) == {
+            "wheels": True,
+            "steering": False,
+            "axis_offset": False,
+            "thrusters": False,
+            "buoyancy": False,
+            "drag": False,
+            "start_depth": False,
+            "arm": True,
+        }
         open_robot(page, base, "new:submarine")
         assert page.locator('[data-add="thrusters"]').count() == 1
         assert offered(page)["wheels"] is False and offered(page)["arm"] is False
@@ -84,8 +109,12 @@ def test_parts_by_drive_psd_presets_file_name_and_add_to_scene(browser_context, 
 
         # PSD presets: on the S4's chassis box (x -100..80, y -75..75 mm), facing out.
         open_robot(page, base, "builtin:S4")
-        for index, preset, (x, y, heading) in ((0, "back", (-100, 0, 180)), (1, "left", (-10, 75, 90)),
-                                               (2, "right", (-10, -75, -90)), (3, "front", (80, 0, 0))):
+        for index, preset, (x, y, heading) in (
+            (0, "back", (-100, 0, 180)),
+            (1, "left", (-10, 75, 90)),
+            (2, "right", (-10, -75, -90)),
+            (3, "front", (80, 0, 0)),
+        ):
             before = checks(page)
             page.click(f'fieldset[data-pointer="/psds/{index}"] button[data-preset="{preset}"]')
             settled(page, before)
@@ -133,8 +162,10 @@ def test_parts_by_drive_psd_presets_file_name_and_add_to_scene(browser_context, 
         save_screenshot(viewer.page, "robot-editor-parts-4-added-to-scene")
         assert viewer.errors == []
         # The scene as it runs now, saved, names the new robot file and loads without overlaps.
-        saved = viewer.page.evaluate("() => fetch('/scenes/save', {method: 'POST', body: JSON.stringify("
-                                     "{root: 0, path: 'with_scout.sim', format: 'sim'})}).then(r => r.json())")
+        saved = viewer.page.evaluate(
+            "() => fetch('/scenes/save', {method: 'POST', body: JSON.stringify("
+            "{root: 0, path: 'with_scout.sim', format: 'sim'})}).then(r => r.json())"
+        )
         assert saved["saved"], saved
         again = load_scene(room / "with_scout.sim")
         assert [r.type_name for r in again.robots] == ["S4", "Scout"] and again.warnings == ()

@@ -74,9 +74,13 @@ def test_paths_are_confined_to_the_scene_folder(tmp_path):
     outside.mkdir()
     (tmp_path / "inside" / "link").symlink_to(outside)
     robot = open_robot(tmp_path, "builtin:S4")[0]
-    for bad, message in (("../x.robi", "'..' is not allowed"), ("/tmp/x.robi", "absolute paths are not allowed"),
-                         ("inside/link/x.robi", "leads out of the scene folder"),
-                         ("x.txt", "ending in .robi or .json"), ("nowhere/x.robi", "does not exist")):
+    for bad, message in (
+        ("../x.robi", "'..' is not allowed"),
+        ("/tmp/x.robi", "absolute paths are not allowed"),
+        ("inside/link/x.robi", "leads out of the scene folder"),
+        ("x.txt", "ending in .robi or .json"),
+        ("nowhere/x.robi", "does not exist"),
+    ):
         with pytest.raises(EditorError, match=message):
             save_robot(tmp_path, robot, bad, overwrite=True)
     assert not list(outside.iterdir())

@@ -18,8 +18,9 @@ def server(tmp_path):
 async def _call(base: str, method: str, path: str, body=None, headers=None, raw: bytes | None = None):
     async with aiohttp.ClientSession() as session:
         kwargs = {"data": raw} if raw is not None else {"json": body} if body is not None else {}
-        async with session.request(method, base + "/robot-editor/api" + path, headers=headers or {},
-                                   **kwargs) as response:
+        async with session.request(
+            method, base + "/robot-editor/api" + path, headers=headers or {}, **kwargs
+        ) as response:
             kind = response.headers.get("Content-Type", "")
             return response.status, (await response.json()) if "json" in kind else await response.text()
 
@@ -31,9 +32,18 @@ def call(server, method, path, body=None, headers=None, raw=None):
 
 def test_every_route_is_behind_the_access_policy(server):
     foreign = {"Origin": "http://evil.example"}
-    for method, path in (("GET", "/schema"), ("GET", "/sources"), ("POST", "/open"), ("POST", "/check"),
-                         ("POST", "/save"), ("POST", "/drive/start"), ("POST", "/drive/command"),
-                         ("GET", "/drive/state"), ("POST", "/drive/stop"), ("GET", "/mesh/preview")):
+    for method, path in (
+        ("GET", "/schema"),
+        ("GET", "/sources"),
+        ("POST", "/open"),
+        ("POST", "/check"),
+        ("POST", "/save"),
+        ("POST", "/drive/start"),
+        ("POST", "/drive/command"),
+        ("GET", "/drive/state"),
+        ("POST", "/drive/stop"),
+        ("GET", "/mesh/preview"),
+    ):
         status, text = call(server, method, path, {}, foreign)
         assert status == 403 and "foreign Origin" in text, (method, path)
     status, text = call(server, "GET", "/schema", headers={"Host": "attacker.example"})
@@ -63,8 +73,14 @@ def test_bad_requests_get_specific_errors_and_the_simulation_goes_on(server):
         ("POST", "/open", {"source": "builtin:S4", "extra": 1}, None, 400, "unknown field 'extra'"),
         ("POST", "/check", {"robot": "S4"}, None, 400, "robot must be an object, not 'S4'"),
         ("POST", "/save", {"robot": {}}, None, 400, "field 'path' is missing"),
-        ("POST", "/save", {"robot": {"format": "eyesim.robot", "version": 1}, "path": "x.robi"}, None, 400,
-         "missing required property 'name'"),
+        (
+            "POST",
+            "/save",
+            {"robot": {"format": "eyesim.robot", "version": 1}, "path": "x.robi"},
+            None,
+            400,
+            "missing required property 'name'",
+        ),
         ("POST", "/drive/command", {"type": "vw", "v": 100, "w": 0}, None, 409, "no test drive is running"),
         ("GET", "/drive/state", None, None, 409, "no test drive is running"),
     ]
@@ -76,11 +92,13 @@ def test_bad_requests_get_specific_errors_and_the_simulation_goes_on(server):
     assert status == 200
     status, _ = call(server, "POST", "/drive/start", {"robot": opened["robot"], "builtin": "S4"})
     assert status == 200
-    for body, message in (({"type": "vw", "v": "fast", "w": 0}, "vw: v must be a number, not 'fast'"),
-                          ({"type": "servo", "servo": 1, "position": 300}, "servo: position must be a number from 0 to 255"),
-                          ({"type": "motor", "motor": 9, "speed": 50}, "no motor 9 (motors: [1, 2])"),
-                          ({"type": "servo", "servo": 1, "position": 10}, "no servo 1 (servos: none)"),
-                          ({"type": "fly"}, "type must be one of 'vw', 'motor', 'servo', 'reset', not 'fly'")):
+    for body, message in (
+        ({"type": "vw", "v": "fast", "w": 0}, "vw: v must be a number, not 'fast'"),
+        ({"type": "servo", "servo": 1, "position": 300}, "servo: position must be a number from 0 to 255"),
+        ({"type": "motor", "motor": 9, "speed": 50}, "no motor 9 (motors: [1, 2])"),
+        ({"type": "servo", "servo": 1, "position": 10}, "no servo 1 (servos: none)"),
+        ({"type": "fly"}, "type must be one of 'vw', 'motor', 'servo', 'reset', not 'fly'"),
+    ):
         got, answer = call(server, "POST", "/drive/command", body)
         assert got == 400 and message in answer["error"], (body, answer)
     status, state = call(server, "GET", "/drive/state")
@@ -106,7 +124,8 @@ def test_a_robot_saved_elsewhere_still_finds_its_model(server, tmp_path):
     (root / "robots" / "meshes").mkdir(parents=True)
     (root / "copies").mkdir()
     (root / "robots" / "meshes" / "cube.obj").write_text(
-        "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 2 3 4\n")
+        "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 2 3 4\n"
+    )
     (root / "robots" / "Box.robi").write_text("drive DIFFERENTIAL_DRIVE\nname Box\nmodel meshes/cube.obj\n")
     status, opened = call(server, "POST", "/open", {"source": "file:robots/Box.robi"})
     assert status == 200 and opened["robot"]["model"] == "meshes/cube.obj"

@@ -56,8 +56,9 @@ class Checked:
     def __call__(self, route: str, body=None, status: int = 200, path: str | None = None, raw: bytes | None = None):
         method, pattern = route.split(" ")
         data = raw if raw is not None else None if method == "GET" else json.dumps(body).encode()
-        request = urllib.request.Request(self.url + (path or pattern), data=data, method=method,
-                                         headers={"Content-Type": "application/json"})
+        request = urllib.request.Request(
+            self.url + (path or pattern), data=data, method=method, headers={"Content-Type": "application/json"}
+        )
         try:
             with urllib.request.urlopen(request, timeout=120) as response:
                 got, answer = response.status, json.load(response)
@@ -119,16 +120,18 @@ def test_every_route_answers_what_the_schema_says(simulator):
     assert "S4" in catalog["robots"] and {"root": 0, "path": "wait"} in catalog["programs"]
     assert call("GET /scenes/state")["items"]["robots"][0]["type"] == "Box"
     assert call("POST /scenes/edit", {"editing": True})["editing"]
-    for edit in ({"op": "add-robot", "type": "S4", "x": 300, "y": 1500, "phi": 45},
-                 {"op": "add-object", "type": "Can", "x": 600, "y": 1500},
-                 {"op": "add-marker", "x": 700, "y": 300, "color": [0, 0, 255]},
-                 {"op": "add-wall", "x1": 100, "y1": 100, "x2": 100, "y2": 900},
-                 {"op": "move", "kind": "robot", "index": 0, "x": 400, "y": 400, "phi": 90},
-                 {"op": "move", "kind": "wall", "index": 0, "x1": 150, "y1": 100, "x2": 150, "y2": 900},
-                 {"op": "duplicate", "kind": "object", "index": 0},
-                 {"op": "delete", "kind": "marker", "index": 0},
-                 {"op": "set-floor", "width": 3000, "height": 2500},
-                 {"op": "set-program", "index": 1, "program": {"root": 0, "path": "wait"}}):
+    for edit in (
+        {"op": "add-robot", "type": "S4", "x": 300, "y": 1500, "phi": 45},
+        {"op": "add-object", "type": "Can", "x": 600, "y": 1500},
+        {"op": "add-marker", "x": 700, "y": 300, "color": [0, 0, 255]},
+        {"op": "add-wall", "x1": 100, "y1": 100, "x2": 100, "y2": 900},
+        {"op": "move", "kind": "robot", "index": 0, "x": 400, "y": 400, "phi": 90},
+        {"op": "move", "kind": "wall", "index": 0, "x1": 150, "y1": 100, "x2": 150, "y2": 900},
+        {"op": "duplicate", "kind": "object", "index": 0},
+        {"op": "delete", "kind": "marker", "index": 0},
+        {"op": "set-floor", "width": 3000, "height": 2500},
+        {"op": "set-program", "index": 1, "program": {"root": 0, "path": "wait"}},
+    ):
         state = call("POST /scenes/edit", edit)
     assert state["items"]["floor"] == {"width": 3000, "height": 2500}
     call("POST /scenes/edit", {"op": "move", "kind": "robot", "index": 9, "x": 1, "y": 1}, status=422)
@@ -150,8 +153,11 @@ BAD_BODIES = [
     ("POST /scenes/open", {"root": 0}, "field 'path' is missing"),
     ("POST /scenes/open", {"root": "0", "path": "a.sim"}, "root must be a whole number, not '0'"),
     ("POST /scenes/new", {"width": 5}, "width must be a number from 100 to 100000, not 5"),
-    ("POST /scenes/edit", {"op": "move", "kind": "robot", "index": 0, "x": "left", "y": 0},
-     "move: x must be a number, not 'left'"),
+    (
+        "POST /scenes/edit",
+        {"op": "move", "kind": "robot", "index": 0, "x": "left", "y": 0},
+        "move: x must be a number, not 'left'",
+    ),
     ("POST /scenes/edit", {"op": "teleport"}, "op must be one of 'add-robot', "),
     ("POST /scenes/edit", {"editing": 1}, "editing must be true or false, not 1"),
     ("POST /scenes/undo", {"steps": 2}, "unknown field 'steps'"),
@@ -170,11 +176,17 @@ BAD_BODIES = [
     ("POST /api/settings", {"gravity": 1}, "unknown field 'gravity' (fields: vis, trace, psd_noise, seed)"),
     ("POST /robot-editor/api/open", {"source": 1}, "source must be text, not 1"),
     ("POST /robot-editor/api/check", {}, "field 'robot' is missing"),
-    ("POST /robot-editor/api/save", {"robot": {}, "path": "x.robi", "overwrite": "yes"},
-     "overwrite must be true or false, not 'yes'"),
+    (
+        "POST /robot-editor/api/save",
+        {"robot": {}, "path": "x.robi", "overwrite": "yes"},
+        "overwrite must be true or false, not 'yes'",
+    ),
     ("POST /robot-editor/api/drive/start", {"robot": []}, "robot must be an object, not []"),
-    ("POST /robot-editor/api/drive/command", {"type": "motor", "motor": 0, "speed": 10},
-     "motor: motor must be a whole number from 1 to 64, not 0"),
+    (
+        "POST /robot-editor/api/drive/command",
+        {"type": "motor", "motor": 0, "speed": 10},
+        "motor: motor must be a whole number from 1 to 64, not 0",
+    ),
     ("POST /robot-editor/api/drive/stop", {"now": True}, "unknown field 'now'"),
 ]
 
@@ -187,8 +199,11 @@ def test_malformed_bodies_get_400_naming_the_field(simulator):
         assert sentence in call(route, body, status=400)["error"], (route, body)
     posts = {route for route in ROUTES if route.startswith("POST")}
     assert posts == {route for route, _, _ in BAD_BODIES}, "every POST route has a malformed body here"
-    for raw, sentence in ((b"{not json", "not valid JSON"), (b'{"root": NaN, "path": "a"}', "NaN is not a JSON number"),
-                          (b"[" * 5000, "not valid JSON")):
+    for raw, sentence in (
+        (b"{not json", "not valid JSON"),
+        (b'{"root": NaN, "path": "a"}', "NaN is not a JSON number"),
+        (b"[" * 5000, "not valid JSON"),
+    ):
         assert sentence in call("POST /scenes/open", raw=raw, status=400)["error"]
     assert "larger than" in call("POST /api/settings", raw=b" " * 70_000, status=413)["error"]
     assert call("GET /scenes/state") == before  # nothing changed
@@ -203,8 +218,11 @@ def test_every_json_route_the_server_serves_is_in_the_schema(tmp_path):
         viewer.workspace = SceneWorkspace(sim, launcher, SceneRoots([("work", tmp_path, True)]))
         viewer.start()
         try:
-            served = {f"{route.method} {route.resource.canonical}" for route in viewer._runner.app.router.routes()
-                      if route.method in ("GET", "POST")}
+            served = {
+                f"{route.method} {route.resource.canonical}"
+                for route in viewer._runner.app.router.routes()
+                if route.method in ("GET", "POST")
+            }
         finally:
             viewer.stop()
             io.stop()

@@ -50,10 +50,13 @@ def search_one(page, text: str, expected: str) -> None:
     """Type `text` into the scene browser's search and wait until its one result is `expected`
     (the list is fetched again after a short pause: the previous search's result stays meanwhile)."""
     page.fill("#scene-search", text)
-    page.wait_for_function("""expected => {
+    page.wait_for_function(
+        """expected => {
         const buttons = document.querySelectorAll('#scene-files button');
         return buttons.length === 1 && buttons[0].textContent.includes(expected);
-    }""", arg=expected)
+    }""",
+        arg=expected,
+    )
 
 
 def editor_state(page) -> dict:
@@ -87,7 +90,9 @@ def test_open_build_edit_undo_save_and_reopen(browser_context, simulator, worksp
     # A broken file: its error with file:line, and the arena keeps running.
     search_one(page, "broken", "broken.sim")
     page.click("#scene-files button")
-    page.wait_for_function("() => document.querySelector('#scene-browser-message').textContent.includes('broken.sim:3')")
+    page.wait_for_function(
+        "() => document.querySelector('#scene-browser-message').textContent.includes('broken.sim:3')"
+    )
     assert "Teapot" in page.inner_text("#scene-browser-message")
     shot(page, "1b-broken-file")
     assert viewer.state("robotIds") == [1] and viewer.state("scene")["markers"] == 0
@@ -140,12 +145,16 @@ def test_open_build_edit_undo_save_and_reopen(browser_context, simulator, worksp
     page.click("#editor-apply")
     wait_for_edits(page, edits + 4)
     # the new scene is drawn (robot 1 where the fields put it) before robot 2 is grabbed
-    page.wait_for_function("() => Math.abs((window.eyesimViewer.displayedRobotPose(1)?.pos[0] ?? 0) - 0.8) < 0.01 "
-                           "&& window.eyesimViewer.robotScreenPosition(2) !== null")
+    page.wait_for_function(
+        "() => Math.abs((window.eyesimViewer.displayedRobotPose(1)?.pos[0] ?? 0) - 0.8) < 0.01 "
+        "&& window.eyesimViewer.robotScreenPosition(2) !== null"
+    )
     # grabbed on its top, off the cross of its PSD beams (a press near a beam picks the beam)
     robot = editor_state(page)["items"]["robots"][1]
-    grab = page.evaluate("([x, y]) => window.eyesimViewer.worldScreenPosition(x, y, 0.15)",
-                         [(robot["x"] + 60) / 1000, (robot["y"] - 55) / 1000])
+    grab = page.evaluate(
+        "([x, y]) => window.eyesimViewer.worldScreenPosition(x, y, 0.15)",
+        [(robot["x"] + 60) / 1000, (robot["y"] - 55) / 1000],
+    )
     target = screen_of(page, 3000, 1500)
     page.mouse.move(grab["x"], grab["y"])
     page.mouse.down()
@@ -210,19 +219,23 @@ def test_open_build_edit_undo_save_and_reopen(browser_context, simulator, worksp
     check = subprocess.run(eyesim_command("check", "arena2.sim"), capture_output=True, text=True, cwd=workspace)
     assert check.returncode == 0, check.stdout + check.stderr
     saved = load_scene(workspace / "arena2.sim")
-    assert [(r.type_name, r.pose.x, r.pose.y, r.pose.phi) for r in saved.robots] == \
-        [(r["type"], r["x"], r["y"], r["phi"]) for r in state["items"]["robots"]]
+    assert [(r.type_name, r.pose.x, r.pose.y, r.pose.phi) for r in saved.robots] == [
+        (r["type"], r["x"], r["y"], r["phi"]) for r in state["items"]["robots"]
+    ]
     assert Path(saved.robots[1].program) == (workspace / "lcd_and_key").resolve()
-    assert [(o.type_name, o.pose.x, o.pose.y) for o in saved.objects] == \
-        [(o["type"], o["x"], o["y"]) for o in state["items"]["objects"]]
-    assert [(w.x1, w.y1, w.x2, w.y2) for w in saved.world.walls] == \
-        [(w["x1"], w["y1"], w["x2"], w["y2"]) for w in state["items"]["walls"]]
+    assert [(o.type_name, o.pose.x, o.pose.y) for o in saved.objects] == [
+        (o["type"], o["x"], o["y"]) for o in state["items"]["objects"]
+    ]
+    assert [(w.x1, w.y1, w.x2, w.y2) for w in saved.world.walls] == [
+        (w["x1"], w["y1"], w["x2"], w["y2"]) for w in state["items"]["walls"]
+    ]
     assert len(saved.markers) == 2 and saved.settings.vis and saved.settings.trace
     run = run_headless("arena2.sim", "--until", "0.01", "--program", "2=/bin/true", cwd=workspace)
     assert run.returncode == 0, run.stderr
     lines = re.findall(r"robot (\d) (\w+): x=(\d+) mm y=(\d+) mm", run.stdout)
-    assert [(name, int(x), int(y)) for _, name, x, y in lines] == \
-        [(r["type"], round(r["x"]), round(r["y"])) for r in state["items"]["robots"]]
+    assert [(name, int(x), int(y)) for _, name, x, y in lines] == [
+        (r["type"], round(r["x"]), round(r["y"])) for r in state["items"]["robots"]
+    ]
 
 
 def test_scene_routes_refuse_paths_out_of_the_roots_and_overwriting(browser_context, simulator, workspace):
@@ -242,9 +255,12 @@ def test_scene_routes_refuse_paths_out_of_the_roots_and_overwriting(browser_cont
     status, body = page.evaluate(post, ["/scenes/edit", {"op": "add-robot", "type": "R2D2", "x": 1, "y": 1}])
     assert status == 422 and "unknown robot type" in body["error"]
     # another site's page in the same browser cannot use the routes (the viewer's Origin check)
-    request = urllib.request.Request(url.rstrip("/") + "/scenes/open", method="POST",
-                                     data=json.dumps({"root": 0, "path": "broken.sim"}).encode(),
-                                     headers={"Origin": "http://evil.example", "Content-Type": "application/json"})
+    request = urllib.request.Request(
+        url.rstrip("/") + "/scenes/open",
+        method="POST",
+        data=json.dumps({"root": 0, "path": "broken.sim"}).encode(),
+        headers={"Origin": "http://evil.example", "Content-Type": "application/json"},
+    )
     with pytest.raises(urllib.error.HTTPError) as refused:
         urllib.request.urlopen(request, timeout=10)
     assert refused.value.code == 403 and "foreign Origin" in refused.value.read().decode()
@@ -258,7 +274,9 @@ def test_a_new_arena_built_in_the_page_is_saved_and_reopened_the_same(browser_co
     page.wait_for_selector("#scene-browser[open]")
     page.click("#scene-new")
     page.wait_for_selector("#editor:not([hidden])")
-    page.wait_for_function("() => window.eyesimViewer.robotIds().length === 0 && window.eyesimViewer.scene().walls === 0")
+    page.wait_for_function(
+        "() => window.eyesimViewer.robotIds().length === 0 && window.eyesimViewer.scene().walls === 0"
+    )
     page.wait_for_function("() => document.querySelectorAll('#editor-program option').length > 1")
     edits = page.evaluate("() => window.eyesimEditor.editCount")
     for n, button in enumerate(["#editor-add-robot", "#editor-add-robot", "#editor-add-object"], start=1):
@@ -277,8 +295,10 @@ def test_a_new_arena_built_in_the_page_is_saved_and_reopened_the_same(browser_co
         page.select_option("#editor-program", label="current folder / lcd_and_key")
         wait_for_edits(page, edits + 6 + index)
     # the settings panel's choices are the scene's: kept by edits and written when saving
-    page.evaluate("() => fetch('/api/settings', {method: 'POST', headers: {'Content-Type': 'application/json'}, "
-                  "body: JSON.stringify({trace: true, psd_noise: 3})})")
+    page.evaluate(
+        "() => fetch('/api/settings', {method: 'POST', headers: {'Content-Type': 'application/json'}, "
+        "body: JSON.stringify({trace: true, psd_noise: 3})})"
+    )
     built = editor_state(page)["items"]
     assert len(built["robots"]) == 2 and len(built["objects"]) == 1 and len(built["walls"]) == 2
     assert all(r["program"] for r in built["robots"])
@@ -299,7 +319,10 @@ def test_a_new_arena_built_in_the_page_is_saved_and_reopened_the_same(browser_co
     page.wait_for_selector("#scene-browser", state="hidden", timeout=60_000)  # programs stop, the world is built
     reopened = editor_state(page)["items"]
     assert reopened["robots"] == built["robots"] and reopened["objects"] == built["objects"]
-    assert reopened["walls"] == built["walls"] and reopened["floor"] == built["floor"] == {"width": 2000, "height": 2000}
+    assert reopened["walls"] == built["walls"] and reopened["floor"] == built["floor"] == {
+        "width": 2000,
+        "height": 2000,
+    }
     settings = load_scene(workspace / "built.json").settings
     assert settings.trace and settings.psd_noise == 3
     check = subprocess.run(eyesim_command("check", "built.json"), capture_output=True, text=True, cwd=workspace)
@@ -316,8 +339,12 @@ def test_more_scene_roots_with_the_scenes_option(workspace, tmp_path_factory):
     roots = {root["name"]: root for root in listing["roots"]}
     assert roots[str(extra)]["writable"] and not roots["examples"]["writable"]
     assert listing["files"] == [{"root": roots[str(extra)]["index"], "path": "week1.sim"}]
-    missing = subprocess.run(eyesim_command("run", "--scenes", str(extra / "nowhere"), "--port", "0",
-                                            "--viewer-port", "0"), capture_output=True, text=True, cwd=workspace)
+    missing = subprocess.run(
+        eyesim_command("run", "--scenes", str(extra / "nowhere"), "--port", "0", "--viewer-port", "0"),
+        capture_output=True,
+        text=True,
+        cwd=workspace,
+    )
     assert missing.returncode == 2 and "--scenes" in missing.stderr and "no such folder" in missing.stderr
 
 

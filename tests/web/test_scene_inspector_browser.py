@@ -54,8 +54,10 @@ def drag_robot(page, index: int, to: tuple[float, float], modifier: str | None =
     robot as the editor has it after the drop."""
     count = edits(page)
     robot = state(page)["items"]["robots"][index]
-    page.wait_for_function("([id, x]) => Math.abs((window.eyesimViewer.displayedRobotPose(id)?.pos[0] ?? -1) - x)"
-                           " < 0.002", arg=[index + 1, robot["x"] / 1000])
+    page.wait_for_function(
+        "([id, x]) => Math.abs((window.eyesimViewer.displayedRobotPose(id)?.pos[0] ?? -1) - x) < 0.002",
+        arg=[index + 1, robot["x"] / 1000],
+    )
     start = screen_of(page, robot["x"] + GRAB[0], robot["y"] + GRAB[1])
     end = screen_of(page, to[0] + GRAB[0], to[1] + GRAB[1])
     if modifier:
@@ -92,8 +94,11 @@ def test_inspector_snapping_moved_clear_clean_save_and_one_recording(browser_con
         page.click("#editor-items li[data-kind=wall][data-index='0']")
         assert page.is_visible("#editor-thickness") and page.is_visible("#editor-color")
         assert not page.is_visible("#editor-phi")
-        assert (page.input_value("#editor-thickness"), page.input_value("#editor-height"),
-                page.input_value("#editor-color")) == ("10", "300", "#c8c8c8")
+        assert (
+            page.input_value("#editor-thickness"),
+            page.input_value("#editor-height"),
+            page.input_value("#editor-color"),
+        ) == ("10", "300", "#c8c8c8")
         assert page.inner_text("#editor-length") == "length 2000"
         page.fill("#editor-x2", "1600")
         page.fill("#editor-thickness", "40")
@@ -102,8 +107,9 @@ def test_inspector_snapping_moved_clear_clean_save_and_one_recording(browser_con
         count = edits(page)
         page.click("#editor-apply")
         wait_for_edits(page, count + 1)
-        assert state(page)["items"]["walls"] == [{"x1": 0, "y1": 1000, "x2": 1600, "y2": 1000, "thickness": 40,
-                                                 "height": 120, "color": [16, 200, 32]}]
+        assert state(page)["items"]["walls"] == [
+            {"x1": 0, "y1": 1000, "x2": 1600, "y2": 1000, "thickness": 40, "height": 120, "color": [16, 200, 32]}
+        ]
         assert page.inner_text("#editor-length") == "length 1600"
         # a robot: its pose in numbers; its size and colour are its type's: the floor it takes is shown
         page.click("#editor-items li[data-kind=robot][data-index='1']")
@@ -140,9 +146,11 @@ def test_inspector_snapping_moved_clear_clean_save_and_one_recording(browser_con
         assert abs(robot["x"] - 1500) > 100 or abs(robot["y"] - 500) > 80
         message = page.inner_text("#editor-message")
         assert "Robot 1 (S4) overlapped robot 'S4': moved to" in message, message
-        page.wait_for_function("([x, y]) => { const p = window.eyesimViewer.displayedRobotPose(1)?.pos;"
-                               " return p && Math.abs(p[0] - x) < 0.002 && Math.abs(p[1] - y) < 0.002; }",
-                               arg=[robot["x"] / 1000, robot["y"] / 1000])
+        page.wait_for_function(
+            "([x, y]) => { const p = window.eyesimViewer.displayedRobotPose(1)?.pos;"
+            " return p && Math.abs(p[0] - x) < 0.002 && Math.abs(p[1] - y) < 0.002; }",
+            arg=[robot["x"] / 1000, robot["y"] / 1000],
+        )
         save_screenshot(page, "scene-inspector-2-moved-clear")
         # Into the wall: robot 2 comes out on the side it was dropped on.
         robot = drag_robot(page, 1, (1000, 990))
@@ -177,8 +185,9 @@ def test_inspector_snapping_moved_clear_clean_save_and_one_recording(browser_con
         page.wait_for_function("() => document.querySelector('#scene-name').textContent === 'saved.sim'")
         saved = load_scene(room / "saved.sim")
         assert [d.code for d in saved.warnings] == []
-        assert [(r.pose.x, r.pose.y, r.pose.phi) for r in saved.robots] == \
-            [(r["x"], r["y"], r["phi"]) for r in edited["robots"]]
+        assert [(r.pose.x, r.pose.y, r.pose.phi) for r in saved.robots] == [
+            (r["x"], r["y"], r["phi"]) for r in edited["robots"]
+        ]
         wall = saved.world.walls[0]
         assert (wall.x2, wall.thickness, wall.height, wall.color) == (1600, 40, 120, (16, 200, 32))
         save_screenshot(page, "scene-inspector-3-saved")
@@ -223,10 +232,13 @@ def test_a_drop_with_no_free_place_near_it_is_refused_and_the_object_goes_back(b
         page.mouse.up()
         wait_for_edits(page, count + 1)
         message = page.inner_text("#editor-message")
-        assert "object 'Can' at (970, 900) overlaps robot 'S4' and there is no free place within 5 of its sizes" \
-            in message, message
+        assert (
+            "object 'Can' at (970, 900) overlaps robot 'S4' and there is no free place within 5 of its sizes" in message
+        ), message
         assert state(page)["items"]["objects"][0]["x"] == 1700
-        page.wait_for_function("() => { const p = window.eyesimViewer.objectPose(1)?.pos;"
-                               " return p && Math.abs(p[0] - 1.7) < 0.002 && Math.abs(p[1] - 1.7) < 0.002; }")
+        page.wait_for_function(
+            "() => { const p = window.eyesimViewer.objectPose(1)?.pos;"
+            " return p && Math.abs(p[0] - 1.7) < 0.002 && Math.abs(p[1] - 1.7) < 0.002; }"
+        )
         save_screenshot(page, "scene-inspector-4-refused")
         assert viewer.errors == []

@@ -78,8 +78,9 @@ def test_a_wall_drawn_across_a_robot_leaves_it_where_the_loader_put_it_and_the_s
 
 def test_no_free_place_is_refused_with_the_reason(room):
     # S4s (180 x 150 mm) 10 mm apart, far further than the search for a free place goes
-    (room / "crowd.sim").write_text("".join(f"S4 {x} {y} 0\n" for x in range(380, 2700, 190)
-                                            for y in range(540, 2600, 160)))
+    (room / "crowd.sim").write_text(
+        "".join(f"S4 {x} {y} 0\n" for x in range(380, 2700, 190) for y in range(540, 2600, 160))
+    )
     draft = Draft.of_scene(load_scene(room / "crowd.sim"))
     with pytest.raises(EditError, match=r"Robot 1 \(S4\) at \(1525, 1530\) overlaps robot 'S4'.*no free place"):
         edited(draft, {"op": "move", "kind": "robot", "index": 0, "x": 1525, "y": 1530, "phi": 0})
@@ -88,12 +89,23 @@ def test_no_free_place_is_refused_with_the_reason(room):
 def test_the_inspector_sets_a_walls_size_and_colour_and_a_markers_colour(room):
     draft = Draft.of_scene(load_scene(room / "room.sim"))
     draft = apply(draft, {"op": "add-marker", "x": 200, "y": 1500, "color": [255, 0, 0, 128]}, None)
-    draft = apply(draft, {"op": "set-properties", "kind": "wall", "index": 0, "x2": 1800, "thickness": 40,
-                          "height": 120, "color": [10, 200, 30]}, None)
-    draft = apply(draft, {"op": "set-properties", "kind": "marker", "index": 0, "x": 250, "color": [0, 0, 255]},
-                  None)
-    assert draft.items()["walls"] == [{"x1": 0, "y1": 1000, "x2": 1800, "y2": 1000, "thickness": 40, "height": 120,
-                                       "color": [10, 200, 30]}]
+    draft = apply(
+        draft,
+        {
+            "op": "set-properties",
+            "kind": "wall",
+            "index": 0,
+            "x2": 1800,
+            "thickness": 40,
+            "height": 120,
+            "color": [10, 200, 30],
+        },
+        None,
+    )
+    draft = apply(draft, {"op": "set-properties", "kind": "marker", "index": 0, "x": 250, "color": [0, 0, 255]}, None)
+    assert draft.items()["walls"] == [
+        {"x1": 0, "y1": 1000, "x2": 1800, "y2": 1000, "thickness": 40, "height": 120, "color": [10, 200, 30]}
+    ]
     assert draft.items()["markers"] == [{"x": 250, "y": 1500, "color": [0, 0, 255, 128]}]
     for path, text in saved_files(draft, room / "styled.sim", as_json=False).items():
         path.write_text(text)
@@ -101,20 +113,26 @@ def test_the_inspector_sets_a_walls_size_and_colour_and_a_markers_colour(room):
     assert (wall.x2, wall.thickness, wall.height, wall.color) == (1800, 40, 120, (10, 200, 30))
 
 
-@pytest.mark.parametrize("op, message", [
-    ({"op": "set-properties", "kind": "wall", "index": 3, "height": 10}, "no wall number 3"),
-    ({"op": "set-properties", "kind": "wall", "index": 0, "x": 10}, "a wall has x1, y1, x2, y2"),
-    ({"op": "set-properties", "kind": "wall", "index": 0, "x1": 2000}, "no length"),
-])
+@pytest.mark.parametrize(
+    "op, message",
+    [
+        ({"op": "set-properties", "kind": "wall", "index": 3, "height": 10}, "no wall number 3"),
+        ({"op": "set-properties", "kind": "wall", "index": 0, "x": 10}, "a wall has x1, y1, x2, y2"),
+        ({"op": "set-properties", "kind": "wall", "index": 0, "x1": 2000}, "no length"),
+    ],
+)
 def test_inspector_edits_that_cannot_be_made_say_why(room, op, message):
     with pytest.raises(EditError, match=message):
         apply(Draft.of_scene(load_scene(room / "room.sim")), op, None)
 
 
-@pytest.mark.parametrize("op, message", [
-    ({"op": "set-properties", "kind": "robot", "index": 0}, "kind must be one of 'wall', 'marker'"),
-    ({"op": "set-properties", "kind": "wall", "index": 0, "height": 0}, "height must be a number from 1 to 10000"),
-    ({"op": "set-properties", "kind": "wall", "index": 0, "color": [1, 2, 300]}, "color[2] must be"),
-])
+@pytest.mark.parametrize(
+    "op, message",
+    [
+        ({"op": "set-properties", "kind": "robot", "index": 0}, "kind must be one of 'wall', 'marker'"),
+        ({"op": "set-properties", "kind": "wall", "index": 0, "height": 0}, "height must be a number from 1 to 10000"),
+        ({"op": "set-properties", "kind": "wall", "index": 0, "color": [1, 2, 300]}, "color[2] must be"),
+    ],
+)
 def test_malformed_inspector_edits_are_refused_by_the_schema(op, message):
     assert message in route_request_problem("POST /scenes/edit", op)

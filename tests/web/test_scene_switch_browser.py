@@ -79,8 +79,9 @@ def floor_colour(page) -> tuple[float, float, float]:
 
 def floor_is(page, blue: bool) -> None:
     """Once the floor image has loaded, the floor looks blue (the road) or red (the grass)."""
-    page.wait_for_function("() => window.eyesimViewer.webglActive() && window.eyesimViewer.floorTexture().loaded",
-                           timeout=SLOW)
+    page.wait_for_function(
+        "() => window.eyesimViewer.webglActive() && window.eyesimViewer.floorTexture().loaded", timeout=SLOW
+    )
     r, _, b = floor_colour(page)
     assert (b > r + 40) if blue else (r > b + 40), (blue, (r, b))
 
@@ -89,10 +90,13 @@ def open_scene(page, name: str) -> None:
     page.click("#open-scenes")
     page.wait_for_selector("#scene-browser[open]")
     page.fill("#scene-search", name)
-    page.wait_for_function("""name => {
+    page.wait_for_function(
+        """name => {
         const buttons = document.querySelectorAll('#scene-files button');
         return buttons.length === 1 && buttons[0].textContent.endsWith(name);
-    }""", arg=name)
+    }""",
+        arg=name,
+    )
     page.click("#scene-files button")
     page.wait_for_selector("#scene-browser", state="hidden", timeout=60_000)
 
@@ -106,12 +110,16 @@ def test_another_scene_shows_its_own_floor_and_starts_the_panels_afresh(browser_
         floor_is(page, blue=False)
         assert page.inner_text("#scene-name") == "lab.sim"
         # The tribot runs, talks and takes pictures.
-        page.wait_for_function("() => window.eyesimViewer.consoleText(1).includes('tribot says hello') && "
-                               "window.eyesimViewer.cameraImages(1) > 0", timeout=SLOW)
+        page.wait_for_function(
+            "() => window.eyesimViewer.consoleText(1).includes('tribot says hello') && "
+            "window.eyesimViewer.cameraImages(1) > 0",
+            timeout=SLOW,
+        )
         panel = robot_panel(page, 1)
         page.wait_for_function("() => window.eyesimViewer.robotLabels()[1] === '1 · tribot.py'", timeout=SLOW)
-        page.wait_for_function("() => document.querySelector('.program-choice').value.endsWith('tribot.py')",
-                               timeout=SLOW)
+        page.wait_for_function(
+            "() => document.querySelector('.program-choice').value.endsWith('tribot.py')", timeout=SLOW
+        )
         save_screenshot(page, "scene-switch-1-lab")
 
         open_scene(page, "street.sim")
@@ -121,8 +129,7 @@ def test_another_scene_shows_its_own_floor_and_starts_the_panels_afresh(browser_
         assert "tribot" not in viewer.state("consoleText", 1)
         assert viewer.state("cameraImages", 1) == 0 and panel.locator(".camera-view").is_hidden()
         assert panel.locator(".program-state").text_content() == "running car.py"
-        page.wait_for_function("() => document.querySelector('.program-choice').value.endsWith('car.py')",
-                               timeout=SLOW)
+        page.wait_for_function("() => document.querySelector('.program-choice').value.endsWith('car.py')", timeout=SLOW)
         page.wait_for_function("() => window.eyesimViewer.robotLabels()[1] === '1 · car.py'", timeout=SLOW)
         assert "Car" in panel.locator(".robot-type").text_content()
         floor_is(page, blue=True)
@@ -130,8 +137,10 @@ def test_another_scene_shows_its_own_floor_and_starts_the_panels_afresh(browser_
 
         # A reload shows the road too (the browser's cache has the lab's image under another URL).
         page.reload()
-        page.wait_for_function("() => window.eyesimViewer?.connectionState() === 'open' && "
-                               "window.eyesimViewer.scene().floor !== null", timeout=SLOW)
+        page.wait_for_function(
+            "() => window.eyesimViewer?.connectionState() === 'open' && window.eyesimViewer.scene().floor !== null",
+            timeout=SLOW,
+        )
         page.select_option("#view-mode", "top")
         floor_is(page, blue=True)
         assert viewer.errors == []
@@ -147,19 +156,22 @@ def test_editing_a_recorded_run_keeps_one_recording_that_replays_the_edits(brows
         page.wait_for_function("() => window.eyesimViewer.status()?.time > 0.3", timeout=SLOW)
         page.click("#edit-scene")
         page.wait_for_selector("#editor:not([hidden])", timeout=SLOW)
-        page.wait_for_function("() => document.querySelectorAll('#editor-robot-type option').length > 1",
-                               timeout=SLOW)
+        page.wait_for_function("() => document.querySelectorAll('#editor-robot-type option').length > 1", timeout=SLOW)
         for count, x in ((2, "800"), (3, "1200")):  # two robots added, each moved: four edits
             page.select_option("#editor-robot-type", "S4")
             page.click("#editor-add-robot")
-            page.wait_for_function("n => window.eyesimEditor.current.items.robots.length === n", arg=count,
-                                   timeout=SLOW)
+            page.wait_for_function(
+                "n => window.eyesimEditor.current.items.robots.length === n", arg=count, timeout=SLOW
+            )
             page.click(f"#editor-items li[data-kind=robot][data-index='{count - 1}']")
             page.fill("#editor-x", x)
             page.fill("#editor-y", "1500")
             page.click("#editor-apply")
-            page.wait_for_function("([n, x]) => window.eyesimEditor.current.items.robots[n - 1].x === Number(x)",
-                                   arg=[count, x], timeout=SLOW)
+            page.wait_for_function(
+                "([n, x]) => window.eyesimEditor.current.items.robots[n - 1].x === Number(x)",
+                arg=[count, x],
+                timeout=SLOW,
+            )
         page.click("#edit-scene")  # done: the run goes on
         page.wait_for_selector("#editor", state="hidden", timeout=SLOW)
         edited_at = page.evaluate("() => window.eyesimViewer.status().time")
@@ -176,8 +188,13 @@ def test_editing_a_recorded_run_keeps_one_recording_that_replays_the_edits(brows
         start_us = recording.start_us
 
     # The replay: one robot before the edits, three after them.
-    replay = subprocess.Popen(eyesim_command("replay", "run.mcap", "--viewer-port", "0"),
-                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=scenes)
+    replay = subprocess.Popen(
+        eyesim_command("replay", "run.mcap", "--viewer-port", "0"),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        cwd=scenes,
+    )
     try:
         url = re.search(r"(http://\S+)", replay.stdout.readline()).group(1)
         viewer = open_viewer(browser_context, url)
@@ -185,8 +202,10 @@ def test_editing_a_recorded_run_keeps_one_recording_that_replays_the_edits(brows
         page.set_default_timeout(SLOW)
         assert viewer.state("robotIds") == [1] and viewer.state("timeline")["start"] == start_us / 1e6
         page.locator("#tl-scrub").fill("10000")  # the end
-        page.wait_for_function("() => window.eyesimViewer.robotIds().length === 3 && "
-                               "window.eyesimViewer.robotPose(3) !== null", timeout=SLOW)
+        page.wait_for_function(
+            "() => window.eyesimViewer.robotIds().length === 3 && window.eyesimViewer.robotPose(3) !== null",
+            timeout=SLOW,
+        )
         assert round(viewer.state("robotPose", 3)["pos"][0], 2) == 1.2
         save_screenshot(page, "scene-switch-3-replay-after-edits")
         page.locator("#tl-scrub").fill("0")

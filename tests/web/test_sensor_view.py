@@ -19,12 +19,17 @@ EXAMPLES = EXAMPLES_DIR
 @pytest.fixture
 def simulator(tmp_path):
     for name in ("lidar_map", "colour_track"):
-        built = subprocess.run(eyesim_command("cc", str(EXAMPLES / "programs" / f"{name}.c"), "-o", str(tmp_path / name)),
-                               capture_output=True, text=True)
+        built = subprocess.run(
+            eyesim_command("cc", str(EXAMPLES / "programs" / f"{name}.c"), "-o", str(tmp_path / name)),
+            capture_output=True,
+            text=True,
+        )
         assert built.returncode == 0, built.stderr
     scene = tmp_path / "lab.sim"
-    scene.write_text(f'world "{EXAMPLES / "scenes" / "sensor_lab.wld"}"\nsettings VIS TRACE\n'
-                     "LabBot 600 1500 0 lidar_map\nS4 700 350 90 colour_track\n")
+    scene.write_text(
+        f'world "{EXAMPLES / "scenes" / "sensor_lab.wld"}"\nsettings VIS TRACE\n'
+        "LabBot 600 1500 0 lidar_map\nS4 700 350 90 colour_track\n"
+    )
     with simulator_with_viewer(str(scene), cwd=tmp_path) as (_, url):
         yield url
 

@@ -41,11 +41,14 @@ def console(message, robot=1):
 
 def test_frames_going_forward_carry_what_changed_and_going_back_start_afresh(tour):
     with Recording(tour) as recording:
+
         def printed(start: float, end: float, robot: int = 1) -> str:
             """Robot 1's console text the recording holds from `start` (exclusive) to `end` (s). Taken
             from the recording: a program's output is stamped when the simulator reads its pipe,
             which on a loaded machine can be a few steps after the printf."""
-            events = [e for e in recording.events_until(round(end * 1e6)) if e["type"] == "console" and e["robot"] == robot]
+            events = [
+                e for e in recording.events_until(round(end * 1e6)) if e["type"] == "console" and e["robot"] == robot
+            ]
             before = {id(e) for e in recording.events_until(round(start * 1e6))} if start >= 0 else set()
             return "".join(e["text"] for e in events if id(e) not in before)
 
@@ -77,14 +80,23 @@ def test_signals_series_and_paths(tour):
         signals = json.loads(run_async(answer(source, cursor, {"type": "signals"})))["signals"]
         ids = {s["id"] for s in signals}
         assert {"robot/1/x", "robot/1/phi", "robot/1/v", "robot/1/encoder.2", "robot/2/psd.1", "robot/2/battery"} <= ids
-        series = json.loads(run_async(answer(source, cursor, {"type": "series", "ids": ["robot/1/x", "robot/1/psd.1"]})))
+        series = json.loads(
+            run_async(answer(source, cursor, {"type": "series", "ids": ["robot/1/x", "robot/1/psd.1"]}))
+        )
         x, psd = series["series"]
-        assert len(x["times"]) == len(recording.pose_times) and x["values"][0] == recording.snapshot_at(0)["robots"][0]["pos"][0]
+        assert (
+            len(x["times"]) == len(recording.pose_times)
+            and x["values"][0] == recording.snapshot_at(0)["robots"][0]["pos"][0]
+        )
         assert psd["times"] == [r[0] / 1e6 for r in recording.psd[1]] and len(psd["values"]) == 4
         paths = json.loads(run_async(answer(source, cursor, {"type": "paths"})))["robots"]
         assert [p["id"] for p in paths] == [1, 2, 3] and len(paths[0]["points"]) == 2 * len(paths[0]["times"]) > 40
-        for bad, text in [({"type": "seek", "time": "soon"}, "not a number"), ({"type": "series", "ids": ["robot/9/x"]}, "no signal"),
-                          ({"type": "series", "ids": "robot/1/x"}, "must be a list"), ({"type": "jump"}, "unknown message")]:
+        for bad, text in [
+            ({"type": "seek", "time": "soon"}, "not a number"),
+            ({"type": "series", "ids": ["robot/9/x"]}, "no signal"),
+            ({"type": "series", "ids": "robot/1/x"}, "must be a list"),
+            ({"type": "jump"}, "unknown message"),
+        ]:
             with pytest.raises(ValueError, match=text):
                 run_async(answer(source, cursor, bad))
 
@@ -93,10 +105,20 @@ def test_the_live_history_keeps_a_bounded_recent_past():
     history = LiveHistory([1], seconds=10)
     for step in range(0, 1000):  # 25 s at 40 snapshots per second
         time = step / 40
-        history.add_snapshot({"type": "snapshot", "time": time, "robots": [{"id": 1, "pos": [time, 0, 0], "quat": [1, 0, 0, 0]}],
-                              "objects": [], "bodies": []}, [{"robot": 1, "odometry": None, "speed": None, "encoders": {}, "battery": 8.0}])
+        history.add_snapshot(
+            {
+                "type": "snapshot",
+                "time": time,
+                "robots": [{"id": 1, "pos": [time, 0, 0], "quat": [1, 0, 0, 0]}],
+                "objects": [],
+                "bodies": [],
+            },
+            [{"robot": 1, "odometry": None, "speed": None, "encoders": {}, "battery": 8.0}],
+        )
         if step % 100 == 0:
-            history.add_event(round(time * 1e6), {"type": "console", "robot": 1, "stream": "stdout", "text": f"{step}\n"})
+            history.add_event(
+                round(time * 1e6), {"type": "console", "robot": 1, "stream": "stdout", "text": f"{step}\n"}
+            )
             history.add_image(1, "lcd", round(time * 1e6), json.dumps({"type": "lcd", "robot": 1, "png": str(step)}))
     # at least the last 10 s, trimmed every 64 snapshots
     assert 13.3 <= history.start_us / 1e6 <= 15.0 and history.end_us == 24_975_000
@@ -108,9 +130,12 @@ def test_the_live_history_keeps_a_bounded_recent_past():
 
 
 def test_replay_server_answers_the_viewer_and_refuses_changes(tour):
-    process = subprocess.Popen(eyesim_command("replay", str(tour), "--viewer-port", "0", "--no-token"),
-                               stdout=subprocess.PIPE,
-                               stderr=subprocess.PIPE, text=True)
+    process = subprocess.Popen(
+        eyesim_command("replay", str(tour), "--viewer-port", "0", "--no-token"),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
     try:
         url = re.search(r"(http://\S+)", process.stdout.readline()).group(1)
         messages = run_async(_talk(url, [{"type": "pause"}, "not json", {"type": "seek", "time": 1.0}]))
@@ -118,8 +143,11 @@ def test_replay_server_answers_the_viewer_and_refuses_changes(tour):
         process.terminate()
         process.wait(timeout=10)
     assert [m["type"] for m in messages[:3]] == ["scene", "timeline", "frame"]
-    assert messages[1] == {"type": "timeline", "mode": "replay", "name": "tour.mcap", "start": 0.0,
-                           "end": messages[1]["end"]} and messages[1]["end"] > 2
+    assert (
+        messages[1]
+        == {"type": "timeline", "mode": "replay", "name": "tour.mcap", "start": 0.0, "end": messages[1]["end"]}
+        and messages[1]["end"] > 2
+    )
     assert messages[3]["type"] == "error" and "can be watched, not changed" in messages[3]["message"]
     assert messages[4]["type"] == "error" and "not valid JSON" in messages[4]["message"]
     assert messages[5]["type"] == "frame" and messages[5]["time"] == 1.0

@@ -141,8 +141,12 @@ def test_the_floor_texture_route_serves_only_an_image(tmp_path):
     scenes.mkdir()
     os.symlink(secret, scenes / "text.png")
     os.symlink(outside / "other.png", scenes / "linked.png")
-    expected = {image: (200, "image/bmp"), secret: (404, None), scenes / "text.png": (404, None),
-                scenes / "linked.png": (404, None)}
+    expected = {
+        image: (200, "image/bmp"),
+        secret: (404, None),
+        scenes / "text.png": (404, None),
+        scenes / "linked.png": (404, None),
+    }
     for texture, (status, content_type) in expected.items():
         with viewer_simulation(_texture_scene(tmp_path, texture)) as (_, _, server):
             got_status, got_type, body = run_async(_get(f"http://127.0.0.1:{server.port}/scene/floor-texture"))
@@ -162,11 +166,17 @@ def test_mesh_route_with_odd_ids_is_a_plain_404(viewer_sim):
 
 def test_malformed_commands_get_an_error_and_the_socket_stays_open(viewer_sim):
     sim, port, server = viewer_sim
-    bad_texts = ['{"type": "speed", "value": Infinity}', '{"type": "speed", "value": NaN}',
-                 '{"type": "speed", "value": 1e-300}', '{"type": "place", "robot": 1, "x": ' + "9" * 400 +
-                 ', "y": 1, "phi": 0}', '{"type": "key", "robot": 1, "key": [1]}',
-                 '{"type": "key", "robot": true, "key": 1}', '[' * 20000 + ']' * 20000,
-                 '{"type": "key", "robot": ' + "1" * 5000 + ', "key": 1}', '"just a string"']
+    bad_texts = [
+        '{"type": "speed", "value": Infinity}',
+        '{"type": "speed", "value": NaN}',
+        '{"type": "speed", "value": 1e-300}',
+        '{"type": "place", "robot": 1, "x": ' + "9" * 400 + ', "y": 1, "phi": 0}',
+        '{"type": "key", "robot": 1, "key": [1]}',
+        '{"type": "key", "robot": true, "key": 1}',
+        "[" * 20000 + "]" * 20000,
+        '{"type": "key", "robot": ' + "1" * 5000 + ', "key": 1}',
+        '"just a string"',
+    ]
 
     async def talk():
         async with aiohttp.ClientSession() as session:

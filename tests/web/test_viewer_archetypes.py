@@ -25,15 +25,22 @@ def simulator(tmp_path):
     source = ROOT / "tests" / "robot" / "programs" / "arm_pick.c"
     built = subprocess.run(eyesim_command("cc", str(source), "-o", str(program)), capture_output=True, text=True)
     assert built.returncode == 0, built.stderr
-    (tmp_path / "pool.wld").write_text("floor 4000 4000\n" + "".join(
-        f"{a} {b} {c} {d} 10 1200\n" for a, b, c, d in ((0, 0, 4000, 0), (4000, 0, 4000, 4000),
-                                                         (4000, 4000, 0, 4000), (0, 4000, 0, 0))))
-    (tmp_path / "all.sim").write_text("world pool.wld\n" + "".join(
-        f"robi {ROBOTS / name}.robi\n" for name in ("Reacher", "Car", "Mecanum", "Minnow", "Picker")) +
-        "Reacher 1500 1500 0\nCan 1500 1800 0\nCar 500 500 0\nMecanum 3000 600 0\nMinnow 3000 3000 0\n"
-        "Picker 700 3000 0\n")
-    with simulator_with_viewer(str(tmp_path / "all.sim"), "--speed", "4", "--program", f"1={program}",
-                               cwd=tmp_path) as (_, url):
+    (tmp_path / "pool.wld").write_text(
+        "floor 4000 4000\n"
+        + "".join(
+            f"{a} {b} {c} {d} 10 1200\n"
+            for a, b, c, d in ((0, 0, 4000, 0), (4000, 0, 4000, 4000), (4000, 4000, 0, 4000), (0, 4000, 0, 0))
+        )
+    )
+    (tmp_path / "all.sim").write_text(
+        "world pool.wld\n"
+        + "".join(f"robi {ROBOTS / name}.robi\n" for name in ("Reacher", "Car", "Mecanum", "Minnow", "Picker"))
+        + "Reacher 1500 1500 0\nCan 1500 1800 0\nCar 500 500 0\nMecanum 3000 600 0\nMinnow 3000 3000 0\n"
+        "Picker 700 3000 0\n"
+    )
+    with simulator_with_viewer(
+        str(tmp_path / "all.sim"), "--speed", "4", "--program", f"1={program}", cwd=tmp_path
+    ) as (_, url):
         yield url
 
 
@@ -47,6 +54,7 @@ def test_the_viewer_draws_every_archetype_and_follows_the_carried_can(browser_co
     viewer.page.wait_for_function("() => window.eyesimViewer.objectPose(1)?.pos[2] > 0.15", timeout=60_000)
     viewer.page.wait_for_function(
         "() => { const p = window.eyesimViewer.objectPose(1).pos; return Math.hypot(p[0] - 1.5, p[1] - 1.8) > 0.2; }",
-        timeout=60_000)
+        timeout=60_000,
+    )
     assert viewer.state("objectPose", 1)["pos"][2] > 0.15  # still held
     assert viewer.errors == []

@@ -172,9 +172,7 @@ def test_console_and_program_state(viewer, fake_server):
     fake_server.send(console("Traceback: oops\n", stream="stderr"))
     exited = {"type": "program", "robot": ROBOT_ID, "event": "exited", "name": "demo.py", "exit_code": 3}
     fake_server.send(exited)
-    page.wait_for_function(
-        f"() => window.eyesimViewer.programState({ROBOT_ID})?.event === 'exited'"
-    )
+    page.wait_for_function(f"() => window.eyesimViewer.programState({ROBOT_ID})?.event === 'exited'")
     assert state.text_content() == "demo.py exited with code 3"
     assert viewer.state("consoleText", ROBOT_ID) == expected + "Traceback: oops\n"
     assert robot_panel(page, ROBOT_ID).locator(".console .stderr").text_content() == "Traceback: oops\n"

@@ -14,28 +14,38 @@ from eyesim.protocol.channel_schema import command_problem, command_validators
 from eyesim.protocol.channel_schema import SCHEMA
 
 
-@pytest.mark.parametrize("command, problem", [
-    ({"type": "warp"}, "unknown message type 'warp'"),
-    ([1, 2], "expected a JSON object with a 'type'"),
-    ({"type": 7}, "unknown message type 7"),
-    ({"type": "key", "robot": 1, "key": 3}, "key: key must be one of 1, 2, 4, 8, not 3"),
-    ({"type": "key", "robot": "1", "key": 1}, "key: robot must be a whole number, not '1'"),
-    ({"type": "key", "robot": True, "key": 1}, "key: robot must be a whole number, not True"),
-    ({"type": "key", "robot": 10**30, "key": 1}, "key: robot must be a whole number from 1 to 1e+06, not "
-                                                 "1000000000000000000000000000000"),
-    ({"type": "touch", "robot": 1, "x": 480, "y": 0}, "touch: x must be a whole number from 0 to 479, not 480"),
-    ({"type": "touch", "robot": 1, "x": 1}, "touch: field 'y' is missing"),
-    ({"type": "touch", "robot": 1}, "touch: fields 'x' and 'y' are missing"),
-    ({"type": "speed", "value": 1e-300}, "speed: value must be a number from 0.01 to 1000 or 'max', not 1e-300"),
-    ({"type": "speed", "value": 1e308}, "speed: value must be a number from 0.01 to 1000 or 'max', not 1e+308"),
-    ({"type": "pause", "why": 1}, "pause: unknown field 'why' (fields: type)"),
-    ({"type": "digital", "robot": 1, "line": 17, "level": 1}, "digital: line must be a whole number from 1 to 16, not 17"),
-    ({"type": "serial", "robot": 1, "interface": 1, "text": "\u20ac"},
-     "serial: text must be bytes as characters U+0000..U+00FF"),
-    ({"type": "series", "ids": ["a"] * 33}, "series: ids must have at most 32 items"),
-    ({"type": "place", "x": 1, "y": 1, "phi": 0}, "give either 'robot' or 'object' (an id), not both"),
-    ({"type": "seek", "time": "soon"}, "seek: time must be a number, not 'soon'"),
-])
+@pytest.mark.parametrize(
+    "command, problem",
+    [
+        ({"type": "warp"}, "unknown message type 'warp'"),
+        ([1, 2], "expected a JSON object with a 'type'"),
+        ({"type": 7}, "unknown message type 7"),
+        ({"type": "key", "robot": 1, "key": 3}, "key: key must be one of 1, 2, 4, 8, not 3"),
+        ({"type": "key", "robot": "1", "key": 1}, "key: robot must be a whole number, not '1'"),
+        ({"type": "key", "robot": True, "key": 1}, "key: robot must be a whole number, not True"),
+        (
+            {"type": "key", "robot": 10**30, "key": 1},
+            "key: robot must be a whole number from 1 to 1e+06, not 1000000000000000000000000000000",
+        ),
+        ({"type": "touch", "robot": 1, "x": 480, "y": 0}, "touch: x must be a whole number from 0 to 479, not 480"),
+        ({"type": "touch", "robot": 1, "x": 1}, "touch: field 'y' is missing"),
+        ({"type": "touch", "robot": 1}, "touch: fields 'x' and 'y' are missing"),
+        ({"type": "speed", "value": 1e-300}, "speed: value must be a number from 0.01 to 1000 or 'max', not 1e-300"),
+        ({"type": "speed", "value": 1e308}, "speed: value must be a number from 0.01 to 1000 or 'max', not 1e+308"),
+        ({"type": "pause", "why": 1}, "pause: unknown field 'why' (fields: type)"),
+        (
+            {"type": "digital", "robot": 1, "line": 17, "level": 1},
+            "digital: line must be a whole number from 1 to 16, not 17",
+        ),
+        (
+            {"type": "serial", "robot": 1, "interface": 1, "text": "\u20ac"},
+            "serial: text must be bytes as characters U+0000..U+00FF",
+        ),
+        ({"type": "series", "ids": ["a"] * 33}, "series: ids must have at most 32 items"),
+        ({"type": "place", "x": 1, "y": 1, "phi": 0}, "give either 'robot' or 'object' (an id), not both"),
+        ({"type": "seek", "time": "soon"}, "seek: time must be a number, not 'soon'"),
+    ],
+)
 def test_a_wrong_command_gets_one_sentence_naming_the_field(command, problem):
     assert command_problem(command) in (problem, f"place: {problem}")
 
@@ -51,8 +61,13 @@ def _smallest(schema: dict):
     if "oneOf" in schema:
         return _smallest(schema["oneOf"][0])
     kind = schema["type"]
-    return {"integer": schema.get("minimum", 1), "number": max(schema.get("minimum", 0.5), 0.5), "string": "1",
-            "array": [], "boolean": False}[kind]
+    return {
+        "integer": schema.get("minimum", 1),
+        "number": max(schema.get("minimum", 0.5), 0.5),
+        "string": "1",
+        "array": [],
+        "boolean": False,
+    }[kind]
 
 
 def test_every_command_of_the_schema_is_carried_out():
@@ -80,7 +95,9 @@ def test_every_command_of_the_schema_is_carried_out():
                         if message["type"] == "error":
                             errors.append(message["message"])
                     await ws.send_str(json.dumps({"type": "sentinel"}))
-                    while "sentinel" not in (message := json.loads((await ws.receive(timeout=10)).data)).get("message", ""):
+                    while "sentinel" not in (message := json.loads((await ws.receive(timeout=10)).data)).get(
+                        "message", ""
+                    ):
                         if message["type"] == "error":
                             errors.append(message["message"])
                     return errors

@@ -29,7 +29,8 @@ def test_the_page_shows_the_robot_driving_and_its_lcd_and_key1_reaches_the_progr
     page.wait_for_function("() => window.eyesimViewer.robotPose(1) !== null")
     start = viewer.state("robotPose", 1)["pos"]
     page.wait_for_function(
-        "x0 => { const p = window.eyesimViewer.robotPose(1); return p && p.pos[0] > x0 + 0.05; }", arg=start[0])
+        "x0 => { const p = window.eyesimViewer.robotPose(1); return p && p.pos[0] > x0 + 0.05; }", arg=start[0]
+    )
 
     wait_for_lcd(page, 1)
     page.wait_for_function("() => window.eyesimViewer.menuLabels(1)[0] === 'GO'")

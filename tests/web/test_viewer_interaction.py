@@ -18,8 +18,9 @@ pytestmark = pytest.mark.browser
 def simulator(tmp_path_factory):
     folder = tmp_path_factory.mktemp("interaction")
     program = build("report_pose", folder)
-    (folder / "room.wld").write_text("floor 2000 2000\nwobble 3\n"
-                                     "0 0 2000 0\n2000 0 2000 2000\n2000 2000 0 2000\n0 2000 0 0\n")
+    (folder / "room.wld").write_text(
+        "floor 2000 2000\nwobble 3\n0 0 2000 0\n2000 0 2000 2000\n2000 2000 0 2000\n0 2000 0 0\n"
+    )
     (folder / "room.sim").write_text("world room.wld\nS4 500 500 0\nCan 1500 1500 0\n")
     with simulator_with_viewer(str(folder / "room.sim"), "--program", f"1={program}", cwd=folder) as (_, url):
         yield url
@@ -46,7 +47,9 @@ def _drag(viewer, start: dict, end: dict, shift: bool = False) -> None:
 def test_dragging_moves_the_true_pose_while_paused_and_odometry_does_not_notice(browser_context, simulator):
     viewer = open_viewer(browser_context, simulator)
     page = viewer.page
-    page.wait_for_function("() => window.eyesimViewer.robotPose(1) !== null && window.eyesimViewer.objectPose(1) !== null")
+    page.wait_for_function(
+        "() => window.eyesimViewer.robotPose(1) !== null && window.eyesimViewer.objectPose(1) !== null"
+    )
     page.click("#pause")
     page.wait_for_function("() => window.eyesimViewer.status()?.paused === true")
     paused_at = viewer.state("status")["time"]
@@ -68,7 +71,9 @@ def test_dragging_moves_the_true_pose_while_paused_and_odometry_does_not_notice(
     assert math.hypot(pose["pos"][0] - 1.2, pose["pos"][1] - 0.9) < 0.01
 
     can = viewer.state("objectPose", 1)["pos"]
-    _drag(viewer, viewer.state("worldScreenPosition", can[0], can[1], 0), viewer.state("worldScreenPosition", 0.6, 1.5, 0))
+    _drag(
+        viewer, viewer.state("worldScreenPosition", can[0], can[1], 0), viewer.state("worldScreenPosition", 0.6, 1.5, 0)
+    )
     page.wait_for_function("""() => { const p = window.eyesimViewer.objectPose(1).pos;
                                       return Math.hypot(p[0] - 0.6, p[1] - 1.5) < 0.01; }""")
     status = viewer.state("status")
@@ -81,8 +86,10 @@ def test_dragging_moves_the_true_pose_while_paused_and_odometry_does_not_notice(
     assert viewer.state("dragging") is None
     mouse.move(corner["x"] + 140, corner["y"] - 40, steps=5)
     mouse.up()
-    page.wait_for_function("c => { const p = window.eyesimViewer.worldScreenPosition(0, 0, 0); return Math.abs(p.x - c.x) > 5; }",
-                           arg=corner)
+    page.wait_for_function(
+        "c => { const p = window.eyesimViewer.worldScreenPosition(0, 0, 0); return Math.abs(p.x - c.x) > 5; }",
+        arg=corner,
+    )
 
     page.click("#pause")  # resume: the program reads the poses after KEY1
     soft_key(page, 1, 1).click()

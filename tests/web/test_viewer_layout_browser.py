@@ -102,8 +102,10 @@ def check_layout(page, size: tuple[int, int]) -> dict:
     # No control sticks out of its panel (sideways: panels scroll up and down), none out of the window.
     for container in layout["containers"]:
         for control in container["controls"]:
-            assert control["x"] >= container["x"] - 0.5 and \
-                control["x"] + control["w"] <= container["x"] + container["w"] + 0.5, (container["what"], control)
+            assert (
+                control["x"] >= container["x"] - 0.5
+                and control["x"] + control["w"] <= container["x"] + container["w"] + 0.5
+            ), (container["what"], control)
             assert control["x"] + control["w"] <= width + 0.5, (container["what"], control)
     # No part of the page overlaps another; no open robot panel overlaps another.
     parts = layout["parts"]
@@ -111,10 +113,10 @@ def check_layout(page, size: tuple[int, int]) -> dict:
     for i, first in enumerate(names):
         assert 0 <= parts[first]["x"] and parts[first]["x"] + parts[first]["w"] <= width + 0.5, first
         assert parts[first]["y"] + parts[first]["h"] <= height + 0.5, first
-        for second in names[i + 1:]:
+        for second in names[i + 1 :]:
             assert overlap(parts[first], parts[second]) < 1, (first, second)
     for i, first in enumerate(layout["panels"]):
-        for second in layout["panels"][i + 1:]:
+        for second in layout["panels"][i + 1 :]:
             assert overlap(first, second) < 1
     # The 3D view keeps a useful size.
     assert parts["world"]["w"] >= 440 and parts["world"]["h"] >= 300, parts["world"]
@@ -141,7 +143,8 @@ def scene_folder(tmp_path):
     (tmp_path / "drive.py").write_text(DRIVE)
     (tmp_path / "three robots in the lab.sim").write_text(
         f"world {Path(__file__).resolve().parents[2] / 'src/eyesim/data/scenes/arena.wld'}\n"
-        "S4 400 400 0 camera.py\nS4 1200 600 90 drive.py\nLabBot 600 1400 0 drive.py\n")
+        "S4 400 400 0 camera.py\nS4 1200 600 90 drive.py\nLabBot 600 1400 0 drive.py\n"
+    )
     return tmp_path
 
 
@@ -152,10 +155,13 @@ def test_the_layout_fits_from_1024x700_to_1920x1080(browser_context, scene_folde
         page.set_default_timeout(SLOW)
         for width, height in SIZES:
             page.set_viewport_size({"width": width, "height": height})
-            page.wait_for_function("() => window.eyesimViewer.cameraImages(1) > 0 && "
-                                   "window.eyesimViewer.lcdUpdates(2) > 0 && window.eyesimViewer.lcdUpdates(3) > 0")
-            page.wait_for_function("w => window.innerWidth === w && document.querySelector('#scene-name').textContent",
-                                   arg=width)
+            page.wait_for_function(
+                "() => window.eyesimViewer.cameraImages(1) > 0 && "
+                "window.eyesimViewer.lcdUpdates(2) > 0 && window.eyesimViewer.lcdUpdates(3) > 0"
+            )
+            page.wait_for_function(
+                "w => window.innerWidth === w && document.querySelector('#scene-name').textContent", arg=width
+            )
             layout = check_layout(page, (width, height))
             columns = viewer.state("panelColumns")
             if width >= 1920:  # a wide screen: robots side by side, each LCD at 1:1

@@ -25,8 +25,13 @@ def viewer_sim():
 
 
 def test_the_limits_are_the_documented_ones():
-    assert (MAX_COMMAND_BYTES, PANEL_CHARACTERS, CONSOLE_BACKLOG, MAX_CHUNKS, STREAM_BACKLOG) == \
-        (64 * 1024, 50_000, 500, 2000, 500)
+    assert (MAX_COMMAND_BYTES, PANEL_CHARACTERS, CONSOLE_BACKLOG, MAX_CHUNKS, STREAM_BACKLOG) == (
+        64 * 1024,
+        50_000,
+        500,
+        2000,
+        500,
+    )
 
 
 async def _errors_until_sentinel(ws) -> list[str]:
@@ -65,9 +70,11 @@ def test_a_command_up_to_the_size_limit_is_answered_and_one_over_it_closes_the_c
                 return errors, message.type, ws.close_code
 
     errors, last, close_code = run_async(talk())
-    assert errors == ["serial: text must have at most 50000 characters",
-                      "pause: unknown field 'x' (fields: type)",
-                      "binary messages are not understood: send JSON text"]
+    assert errors == [
+        "serial: text must have at most 50000 characters",
+        "pause: unknown field 'x' (fields: type)",
+        "binary messages are not understood: send JSON text",
+    ]
     assert last in (aiohttp.WSMsgType.CLOSE, aiohttp.WSMsgType.CLOSED, aiohttp.WSMsgType.CLOSING)
     assert close_code == 1009  # message too big
     assert program.call("SER_RECEIVE", 1, 100_000)[0] == b"a" * 50_000  # the longest text arrived whole
@@ -144,6 +151,7 @@ async def _tabs_receiving(port: int, tabs: int, seconds: float) -> list[dict]:
 def test_tabs_opened_one_after_another_each_get_every_lcd_once():
     """A new tab gets the robots' LCD images the others keep current; it does not make the
     simulator send every robot's image to every tab again (200 tabs once took half a minute)."""
+
     class Published:
         wants_lcd = False
         images = 0

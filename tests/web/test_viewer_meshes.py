@@ -33,16 +33,24 @@ def fetch(url: str):
 def placed_box(mesh: dict, pose: dict) -> tuple[np.ndarray, np.ndarray]:
     """The bounding box (world, m) of a mesh message's body-frame vertices at a snapshot pose."""
     w, x, y, z = pose["quat"]
-    rotation = np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-                         [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-                         [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+    rotation = np.array(
+        [
+            [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+        ]
+    )
     points = np.concatenate([np.reshape(p["vertices"], (-1, 3)) for p in mesh["parts"]]) @ rotation.T + pose["pos"]
     return points.min(axis=0), points.max(axis=0)
 
 
 def test_the_viewer_draws_the_models_where_the_bodies_are(browser_context, tmp_path):
-    scene = write_scene(tmp_path, ["floor 2000 2000"], ["S4blue 500 1000 30", "StopSign 1000 1000 0"],
-                        extra=[f'obj "{STOP_SIGN}"', f'robi "{S4BLUE}"'])
+    scene = write_scene(
+        tmp_path,
+        ["floor 2000 2000"],
+        ["S4blue 500 1000 30", "StopSign 1000 1000 0"],
+        extra=[f'obj "{STOP_SIGN}"', f'robi "{S4BLUE}"'],
+    )
     with simulator_with_viewer(str(scene), cwd=tmp_path) as (_, url):
         base = url.rstrip("/")
         viewer = open_viewer(browser_context, url)

@@ -22,8 +22,25 @@ from eyesim.scene import builtins, load_scene
 from eyesim.paths import EXAMPLES_DIR
 
 EXAMPLES = EXAMPLES_DIR
-EVERY_KIND = {"scene", "snapshot", "status", "timeline", "lcd", "camera", "menu", "console", "program", "audio",
-              "serial", "io", "frame", "signals", "series", "paths", "error"}
+EVERY_KIND = {
+    "scene",
+    "snapshot",
+    "status",
+    "timeline",
+    "lcd",
+    "camera",
+    "menu",
+    "console",
+    "program",
+    "audio",
+    "serial",
+    "io",
+    "frame",
+    "signals",
+    "series",
+    "paths",
+    "error",
+}
 
 
 @pytest.fixture
@@ -31,10 +48,12 @@ def busy_scene(tmp_path):
     mecanum = tmp_path / "Mecanum.robi"  # with a line the loader warns about (the scene's `warnings`)
     mecanum.write_text((builtins.ROBOTS_DIR / "Mecanum.robi").read_text() + "\nfrobnicate 1 2\n")
     scene = tmp_path / "busy.sim"
-    scene.write_text(f"world {EXAMPLES / 'scenes' / 'land.wld'}\nsettings VIS TRACE\n"
-                     f"robi {builtins.ROBOTS_DIR / 'Reacher.robi'}\nrobi {mecanum}\n"
-                     "S4 500 500 0\nS4 1500 500 90\nReacher 1500 1500 0\nMecanum 2400 1900 0\n"
-                     "Can 1000 1000 0\nCrate 900 2600 0\n")
+    scene.write_text(
+        f"world {EXAMPLES / 'scenes' / 'land.wld'}\nsettings VIS TRACE\n"
+        f"robi {builtins.ROBOTS_DIR / 'Reacher.robi'}\nrobi {mecanum}\n"
+        "S4 500 500 0\nS4 1500 500 90\nReacher 1500 1500 0\nMecanum 2400 1900 0\n"
+        "Can 1000 1000 0\nCrate 900 2600 0\n"
+    )
     return load_scene(str(scene))
 
 
@@ -51,8 +70,12 @@ def busy_programs(port: int) -> list[ProgramClient]:
         program.call("LIDAR_GET")
         program.call("PSD_GET", 1)
         program.call("AU_BEEP")
-        for call in (("SER_INIT", 1, 115200, 0), ("SER_SEND", 1, b"hello\n\xff"),
-                     ("DIGITAL_SETUP", 1, ord("o")), ("DIGITAL_WRITE", 1, 1)):
+        for call in (
+            ("SER_INIT", 1, 115200, 0),
+            ("SER_SEND", 1, b"hello\n\xff"),
+            ("DIGITAL_SETUP", 1, ord("o")),
+            ("DIGITAL_WRITE", 1, 1),
+        ):
             try:
                 program.call(*call)
             except RemoteError as error:  # the message still has to be right; the call is not the point
@@ -76,8 +99,10 @@ async def watch(port: int, program_port: int, sim) -> list[dict]:
 
     def kinds() -> set[str]:
         return {message["type"] for message in received}
+
     async with aiohttp.ClientSession() as session:
         async with session.ws_connect(f"ws://127.0.0.1:{port}/ws", max_msg_size=0) as ws:
+
             async def listen():
                 async for message in ws:
                     assert message.type == aiohttp.WSMsgType.TEXT, message
@@ -90,15 +115,23 @@ async def watch(port: int, program_port: int, sim) -> list[dict]:
             sim.call(lambda s: s.events.console(1, "stdout", "robot 1 says hello\n"))
             sim.call(lambda s: s.events.console(2, "stderr", "x" * 60_000))  # cut to the panel's 50,000
             sim.call(lambda s: s.events.program(2, "exited", "beta", 3))
-            for command in ({"type": "seek", "time": 0.1}, {"type": "seek", "time": 1e9}, {"type": "signals"}, {"type": "paths"},
-                            {"type": "live"}, {"type": "key", "robot": 1, "key": 3}):
+            for command in (
+                {"type": "seek", "time": 0.1},
+                {"type": "seek", "time": 1e9},
+                {"type": "signals"},
+                {"type": "paths"},
+                {"type": "live"},
+                {"type": "key", "robot": 1, "key": 3},
+            ):
                 await ws.send_str(json.dumps(command))
             await until(lambda: EVERY_KIND - {"series"} <= kinds(), "what programs and commands cause")
             signals = next(m for m in received if m["type"] == "signals")["signals"]
             await ws.send_str(json.dumps({"type": "series", "ids": [s["id"] for s in signals[:3]]}))
             await ws.send_str(json.dumps({"type": "reset"}))
-            await until(lambda: "series" in kinds() and sum(m["type"] == "scene" for m in received) == 2,
-                        "the series and the scene after the reset")
+            await until(
+                lambda: "series" in kinds() and sum(m["type"] == "scene" for m in received) == 2,
+                "the series and the scene after the reset",
+            )
             listener.cancel()
             for program in programs:
                 program.close()

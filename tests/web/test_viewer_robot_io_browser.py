@@ -54,21 +54,33 @@ def test_the_remote_the_serial_terminal_and_the_io_controls_send_commands(viewer
     panel.locator(".serial-interface").select_option("2")
     panel.locator(".serial-input").fill("hi")
     panel.locator(".serial-input").press("Enter")
-    assert fake_server.wait_for_command(of_type("serial")) == {"type": "serial", "robot": ROBOT_ID,
-                                                               "interface": 2, "text": "hi\n"}
+    assert fake_server.wait_for_command(of_type("serial")) == {
+        "type": "serial",
+        "robot": ROBOT_ID,
+        "interface": 2,
+        "text": "hi\n",
+    }
 
     lines = [{"direction": "i", "level": 0, "driven": None} for _ in range(16)]
     lines[15] = {"direction": "o", "level": 1, "driven": None}
     fake_server.send({"type": "io", "robot": ROBOT_ID, "digital": lines, "analog": [0] * 7 + [512]})
     page.wait_for_function("r => window.eyesimViewer.ioState(r)?.analog[7] === 512", arg=ROBOT_ID)
     panel.locator(".digital-line").nth(2).click()  # an undriven input: drive it to 1
-    assert fake_server.wait_for_command(of_type("digital")) == {"type": "digital", "robot": ROBOT_ID,
-                                                                "line": 3, "level": 1}
+    assert fake_server.wait_for_command(of_type("digital")) == {
+        "type": "digital",
+        "robot": ROBOT_ID,
+        "line": 3,
+        "level": 1,
+    }
     panel.locator(".digital-line").nth(15).click()  # an output: the program's, no command
     panel.locator(".analog-channel input").nth(3).fill("700")
     panel.locator(".analog-channel input").nth(3).press("Enter")
-    assert fake_server.wait_for_command(of_type("analog")) == {"type": "analog", "robot": ROBOT_ID,
-                                                               "channel": 4, "value": 700}
+    assert fake_server.wait_for_command(of_type("analog")) == {
+        "type": "analog",
+        "robot": ROBOT_ID,
+        "channel": 4,
+        "value": 700,
+    }
     assert len(commands(fake_server, "digital")) == 1
     assert panel.locator(".digital-line").nth(15).get_attribute("data-level") == "1"
 
@@ -84,7 +96,13 @@ def test_serial_output_battery_and_sounds_show_up(viewer, fake_server):
     panel = robot_panel(page, ROBOT_ID)
     panel.locator("details.robot-io summary").click()
     assert panel.locator(".serial-output").text_content() == "hello \xff\n"
-    fake_server.send({"type": "snapshot", "time": 0.0, "objects": [],
-                      "robots": [{"id": ROBOT_ID, "pos": [1, 1, 0], "quat": [1, 0, 0, 0], "battery": 8.123}]})
+    fake_server.send(
+        {
+            "type": "snapshot",
+            "time": 0.0,
+            "objects": [],
+            "robots": [{"id": ROBOT_ID, "pos": [1, 1, 0], "quat": [1, 0, 0, 0], "battery": 8.123}],
+        }
+    )
     page.wait_for_function("() => document.querySelector('.robot-io .battery').textContent === 'battery 8.12 V'")
     assert viewer.errors == []

@@ -48,8 +48,12 @@ def test_a_browser_gets_the_scene_then_snapshots_and_the_lcd(viewer_sim):
     program.hello()
     program.call("LCD_PRINTF", "hello viewer")
     program.call("LCD_MENU", "A", "B", "C", "D")
-    messages = run_async(_collect(f"ws://127.0.0.1:{server.port}/ws",
-                                    lambda ms: {"snapshot", "lcd", "menu", "status"} <= {m["type"] for m in ms}))
+    messages = run_async(
+        _collect(
+            f"ws://127.0.0.1:{server.port}/ws",
+            lambda ms: {"snapshot", "lcd", "menu", "status"} <= {m["type"] for m in ms},
+        )
+    )
     assert messages[0]["type"] == "scene"
     assert len(messages[0]["walls"]) == 4 and messages[0]["robots"][0]["name"] == "S4"
     menu = next(m for m in messages if m["type"] == "menu")
@@ -62,10 +66,17 @@ def test_a_browser_gets_the_scene_then_snapshots_and_the_lcd(viewer_sim):
 
 def test_bad_browser_commands_get_an_error_and_change_nothing(viewer_sim):
     sim, port, server = viewer_sim
-    bad = [{"type": "key", "robot": 1, "key": 3}, {"type": "key", "robot": 7, "key": 1},
-           {"type": "speed", "value": -1}, {"type": "warp"}]
-    messages = run_async(_collect(f"ws://127.0.0.1:{server.port}/ws",
-                                    lambda ms: sum(m["type"] == "error" for m in ms) == len(bad), send=bad))
+    bad = [
+        {"type": "key", "robot": 1, "key": 3},
+        {"type": "key", "robot": 7, "key": 1},
+        {"type": "speed", "value": -1},
+        {"type": "warp"},
+    ]
+    messages = run_async(
+        _collect(
+            f"ws://127.0.0.1:{server.port}/ws", lambda ms: sum(m["type"] == "error" for m in ms) == len(bad), send=bad
+        )
+    )
     errors = [m["message"] for m in messages if m["type"] == "error"]
     assert any("key must be one of 1, 2, 4, 8" in e for e in errors) and any("no robot 7" in e for e in errors)
     program = ProgramClient(port)
@@ -77,8 +88,11 @@ def test_a_browser_that_never_reads_slows_down_nobody(viewer_sim):
     sim, port, server = viewer_sim
     stuck = socket.create_connection(("127.0.0.1", server.port))
     stuck.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
-    stuck.sendall(f"GET /ws HTTP/1.1\r\nHost: 127.0.0.1:{server.port}\r\n".encode() + b"Upgrade: websocket\r\nConnection: Upgrade\r\n"
-                  b"Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n\r\n")
+    stuck.sendall(
+        f"GET /ws HTTP/1.1\r\nHost: 127.0.0.1:{server.port}\r\n".encode()
+        + b"Upgrade: websocket\r\nConnection: Upgrade\r\n"
+        b"Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n\r\n"
+    )
     program = ProgramClient(port)
     program.hello()
     start_time = sim.time

@@ -44,9 +44,13 @@ def x_display():
         pytest.fail("Xvfb is missing: install Debian's xvfb (make test-windows does so as root)", pytrace=False)
     read_end, write_end = os.pipe()
     # -displayfd: Xvfb picks a free display number and writes it there once it accepts clients.
-    server = subprocess.Popen([xvfb, "-displayfd", str(write_end), "-screen", "0", "1280x1024x24", "-nolisten", "tcp"],
-                              pass_fds=(write_end,), stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                              stderr=subprocess.PIPE)
+    server = subprocess.Popen(
+        [xvfb, "-displayfd", str(write_end), "-screen", "0", "1280x1024x24", "-nolisten", "tcp"],
+        pass_fds=(write_end,),
+        stdin=subprocess.DEVNULL,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+    )
     os.close(write_end)
     with os.fdopen(read_end) as announced:
         number = announced.readline().strip()

@@ -14,8 +14,9 @@ SPEC = HERE / "grading" / "drive.toml"
 
 def test_grading_scores_a_correct_and_a_crashing_submission(windows, tmp_path):
     shutil.copytree(HERE / "grading" / "submissions", tmp_path / "submissions")
-    result = windows.run("grade", windows.path(SPEC), "submissions", "--out", "report", "--workers", "2",
-                         cwd=tmp_path, timeout=400)
+    result = windows.run(
+        "grade", windows.path(SPEC), "submissions", "--out", "report", "--workers", "2", cwd=tmp_path, timeout=400
+    )
     assert result.returncode == 0, result.stdout + result.stderr
     report = json.loads((tmp_path / "report" / "report.json").read_text())
     students = {student["name"]: student for student in report["students"]}

@@ -50,8 +50,21 @@ def check_run(result, tmp_path) -> list[dict[str, float]]:
 
 def test_a_python_program_drives_and_draws(windows, tmp_path):
     shutil.copy(PROGRAMS / "drive.py", tmp_path)
-    result = windows.run("run", "--headless", "--until", "10", "--port", "0", "--program", "1=drive.py",
-                         "--record", "path.csv", "--save-lcd", "lcd", cwd=tmp_path)
+    result = windows.run(
+        "run",
+        "--headless",
+        "--until",
+        "10",
+        "--port",
+        "0",
+        "--program",
+        "1=drive.py",
+        "--record",
+        "path.csv",
+        "--save-lcd",
+        "lcd",
+        cwd=tmp_path,
+    )
     path = check_run(result, tmp_path)
     assert "program drive.py: exit code 0" in result.stdout, result.stdout
 
@@ -74,8 +87,21 @@ def test_a_python_program_drives_and_draws(windows, tmp_path):
 def test_a_c_program_drives_and_draws(windows, tmp_path):
     # The DLL is not copied beside the program: the simulator puts the package's lib folder on PATH.
     program = windows.compile_c(PROGRAMS / "drive.c", tmp_path / "drive.exe", "-O2", "-Wall", "-Werror")
-    result = windows.run("run", "--headless", "--until", "10", "--port", "0", "--program", "1=drive.exe",
-                         "--record", "path.csv", "--save-lcd", "lcd", cwd=tmp_path)
+    result = windows.run(
+        "run",
+        "--headless",
+        "--until",
+        "10",
+        "--port",
+        "0",
+        "--program",
+        "1=drive.exe",
+        "--record",
+        "path.csv",
+        "--save-lcd",
+        "lcd",
+        cwd=tmp_path,
+    )
     path = check_run(result, tmp_path)
     assert f"program {program.name}: exit code 0" in result.stdout, result.stdout
 
@@ -99,10 +125,19 @@ def test_the_c_program_runs_by_hand_with_the_dll_beside_it(windows, tmp_path):
     .exe, and without a simulator it fails as the C library says it should, without a crash."""
     program = windows.compile_c(PROGRAMS / "drive.c", tmp_path / "drive.exe", "-O2")
     shutil.copy(windows.robios_lib / "eyesim.dll", tmp_path)
-    environment = windows.env.environment(EYESIM_HOST="127.0.0.1", EYESIM_PORT=str(free_port()),
-                                          EYESIM_CONNECT_TIMEOUT="1")
-    result = subprocess.run([wine_executable(), str(program)], cwd=tmp_path, env=environment,
-                            stdin=subprocess.DEVNULL, capture_output=True, text=True, errors="replace", timeout=120)
+    environment = windows.env.environment(
+        EYESIM_HOST="127.0.0.1", EYESIM_PORT=str(free_port()), EYESIM_CONNECT_TIMEOUT="1"
+    )
+    result = subprocess.run(
+        [wine_executable(), str(program)],
+        cwd=tmp_path,
+        env=environment,
+        stdin=subprocess.DEVNULL,
+        capture_output=True,
+        text=True,
+        errors="replace",
+        timeout=120,
+    )
     assert result.returncode == 3, result  # the library's "no simulator answered"
     assert f"no simulator answered at 127.0.0.1:{environment['EYESIM_PORT']}" in result.stderr, result.stderr
 
@@ -112,8 +147,20 @@ def test_non_ascii_output(windows, tmp_path):
     output may be in the ANSI code page (cp1252) or UTF-8, both are accepted; replacement characters
     or a traceback are not."""
     shutil.copy(PROGRAMS / "greeting.py", tmp_path)
-    result = windows.run("run", "--headless", "--until", "5", "--port", "0", "--program", "1=greeting.py",
-                         "--save-lcd", "lcd", cwd=tmp_path, text=False)
+    result = windows.run(
+        "run",
+        "--headless",
+        "--until",
+        "5",
+        "--port",
+        "0",
+        "--program",
+        "1=greeting.py",
+        "--save-lcd",
+        "lcd",
+        cwd=tmp_path,
+        text=False,
+    )
     output = result.stdout + result.stderr
     shown = [output.decode(encoding, errors="replace") for encoding in ("utf-8", "cp1252")]
     assert result.returncode == 0, shown[0]
@@ -136,8 +183,9 @@ def test_a_program_stopped_at_until_leaves_no_process_behind(windows, tmp_path, 
     windows.compile_c(PROGRAMS / "forever.c", tmp_path / "forever.exe", with_eyesim=False)
     token = windows.path(tmp_path)  # Z:\tmp\pytest-of-...\<test>: in both programs' command lines
     with no_process_left(token):
-        process = windows.start("run", "--headless", "--until", "3", "--port", "0", "--program",
-                                f"1={program.name}", cwd=tmp_path)
+        process = windows.start(
+            "run", "--headless", "--until", "3", "--port", "0", "--program", f"1={program.name}", cwd=tmp_path
+        )
         output = OutputReader(process)
         try:
             output.wait_for(r"child \d+ running", timeout=90)

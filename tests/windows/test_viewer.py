@@ -21,8 +21,9 @@ def test_the_viewer_shows_the_robot_and_its_lcd(windows, tmp_path, artifact):
         pytest.fail("the viewer test needs Chromium at /usr/bin/chromium (make test installs it as root)")
     program = windows.compile_c(PROGRAMS / "viewer_lcd.c", tmp_path / "viewer_lcd.exe", "-Wall", "-Werror")
     with no_process_left(windows.path(tmp_path)):
-        process = windows.start("run", "--port", "0", "--viewer-port", "0", "--program", f"1={program.name}",
-                                cwd=tmp_path)
+        process = windows.start(
+            "run", "--port", "0", "--viewer-port", "0", "--program", f"1={program.name}", cwd=tmp_path
+        )
         output = OutputReader(process)
         try:
             url = output.wait_for(r"viewer: (http://\S+)", timeout=120).group(1)
@@ -36,7 +37,8 @@ def test_the_viewer_shows_the_robot_and_its_lcd(windows, tmp_path, artifact):
                 start = viewer.state("robotPose", 1)["pos"]
                 page.wait_for_function(
                     "x0 => { const p = window.eyesimViewer.robotPose(1); return p && p.pos[0] > x0 + 0.05; }",
-                    arg=start[0])
+                    arg=start[0],
+                )
 
                 page.wait_for_function("() => (window.eyesimViewer?.lcdUpdates(1) ?? 0) >= 1")
                 page.wait_for_function("() => window.eyesimViewer.menuLabels(1)[0] === 'GO'")

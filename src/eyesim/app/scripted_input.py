@@ -17,22 +17,57 @@ AT = r"@([0-9]+(?:\.[0-9]*)?)"
 
 
 def add_arguments(parser) -> None:
-    parser.add_argument("--key", action="append", default=[], metavar="ROBOT:KEY@SECONDS",
-                        help="press a soft key at a simulation time, e.g. 1:KEY1@2.5; repeatable")
-    parser.add_argument("--touch", action="append", default=[], metavar="ROBOT:X,Y@SECONDS",
-                        help="touch the LCD at pixel X,Y at a simulation time, e.g. 1:100,50@2; repeatable")
-    parser.add_argument("--irtv", action="append", default=[], metavar="ROBOT:BUTTON@SECONDS",
-                        help="press an IR remote button (0-9, RED, GREEN, YELLOW, BLUE, LEFT, RIGHT, UP, DOWN, "
-                             "OK, POWER) at a simulation time, e.g. 1:OK@1.5; repeatable")
-    parser.add_argument("--serial", action="append", default=[], metavar="ROBOT:INTERFACE:TEXT@SECONDS",
-                        help="bytes arriving on a serial interface at a simulation time; TEXT may use \\n, \\r, "
-                             "\\xNN; e.g. '1:0:hello\\n@2'; repeatable")
-    parser.add_argument("--serial-loopback", action="append", default=[], metavar="ROBOT:INTERFACE",
-                        help="plug a loopback into a serial interface: what the robot sends comes back")
-    parser.add_argument("--digital", action="append", default=[], metavar="ROBOT:LINE=LEVEL@SECONDS",
-                        help="drive digital input line 1..16 to 0 or 1 (- lets go) at a simulation time; repeatable")
-    parser.add_argument("--analog", action="append", default=[], metavar="ROBOT:CHANNEL=VALUE@SECONDS",
-                        help="set analog channel 1..8 to 0..1023 at a simulation time; repeatable")
+    parser.add_argument(
+        "--key",
+        action="append",
+        default=[],
+        metavar="ROBOT:KEY@SECONDS",
+        help="press a soft key at a simulation time, e.g. 1:KEY1@2.5; repeatable",
+    )
+    parser.add_argument(
+        "--touch",
+        action="append",
+        default=[],
+        metavar="ROBOT:X,Y@SECONDS",
+        help="touch the LCD at pixel X,Y at a simulation time, e.g. 1:100,50@2; repeatable",
+    )
+    parser.add_argument(
+        "--irtv",
+        action="append",
+        default=[],
+        metavar="ROBOT:BUTTON@SECONDS",
+        help="press an IR remote button (0-9, RED, GREEN, YELLOW, BLUE, LEFT, RIGHT, UP, DOWN, "
+        "OK, POWER) at a simulation time, e.g. 1:OK@1.5; repeatable",
+    )
+    parser.add_argument(
+        "--serial",
+        action="append",
+        default=[],
+        metavar="ROBOT:INTERFACE:TEXT@SECONDS",
+        help="bytes arriving on a serial interface at a simulation time; TEXT may use \\n, \\r, "
+        "\\xNN; e.g. '1:0:hello\\n@2'; repeatable",
+    )
+    parser.add_argument(
+        "--serial-loopback",
+        action="append",
+        default=[],
+        metavar="ROBOT:INTERFACE",
+        help="plug a loopback into a serial interface: what the robot sends comes back",
+    )
+    parser.add_argument(
+        "--digital",
+        action="append",
+        default=[],
+        metavar="ROBOT:LINE=LEVEL@SECONDS",
+        help="drive digital input line 1..16 to 0 or 1 (- lets go) at a simulation time; repeatable",
+    )
+    parser.add_argument(
+        "--analog",
+        action="append",
+        default=[],
+        metavar="ROBOT:CHANNEL=VALUE@SECONDS",
+        help="set analog channel 1..8 to 0..1023 at a simulation time; repeatable",
+    )
 
 
 def _serial_text(text: str) -> str:
@@ -46,17 +81,24 @@ def _serial_text(text: str) -> str:
 # Option -> (pattern of its text, an example, the input command from the pattern's groups but the
 # robot and the time: the first and the last group).
 OPTIONS = {
-    "key": (r"(\w+):(KEY[1-4])" + AT, "1:KEY1@2.5",
-            lambda g: {"type": "key", "key": KEY_NAMES[g[0].upper()]}),
-    "touch": (r"(\w+):(\d+),(\d+)" + AT, "1:100,50@2.5",
-              lambda g: {"type": "touch", "x": int(g[0]), "y": int(g[1])}),
+    "key": (r"(\w+):(KEY[1-4])" + AT, "1:KEY1@2.5", lambda g: {"type": "key", "key": KEY_NAMES[g[0].upper()]}),
+    "touch": (r"(\w+):(\d+),(\d+)" + AT, "1:100,50@2.5", lambda g: {"type": "touch", "x": int(g[0]), "y": int(g[1])}),
     "irtv": (r"(\w+):([^@]+)" + AT, "1:OK@1.5", lambda g: {"type": "irtv", "code": g[0]}),
-    "serial": (r"(\w+):(\d+):(.*)" + AT, "1:0:hello\\n@2",
-               lambda g: {"type": "serial", "interface": int(g[0]), "text": _serial_text(g[1])}),
-    "digital": (r"(\w+):(\d+)=([01-])" + AT, "1:3=1@0.5",
-                lambda g: {"type": "digital", "line": int(g[0]), "level": None if g[1] == "-" else int(g[1])}),
-    "analog": (r"(\w+):(\d+)=(\d+)" + AT, "1:2=700@0.5",
-               lambda g: {"type": "analog", "channel": int(g[0]), "value": int(g[1])}),
+    "serial": (
+        r"(\w+):(\d+):(.*)" + AT,
+        "1:0:hello\\n@2",
+        lambda g: {"type": "serial", "interface": int(g[0]), "text": _serial_text(g[1])},
+    ),
+    "digital": (
+        r"(\w+):(\d+)=([01-])" + AT,
+        "1:3=1@0.5",
+        lambda g: {"type": "digital", "line": int(g[0]), "level": None if g[1] == "-" else int(g[1])},
+    ),
+    "analog": (
+        r"(\w+):(\d+)=(\d+)" + AT,
+        "1:2=700@0.5",
+        lambda g: {"type": "analog", "channel": int(g[0]), "value": int(g[1])},
+    ),
 }
 
 

@@ -49,8 +49,13 @@ def calling(op: OpSpec):
     if len(op.reply) > 2 or len(op.reply) == 2 and not result_first:
         raise RuntimeError(f"{op.name} calls {op.calls}: a call's reply is a result, a value, or both")
     # The reply's shape, chosen once: the method's value, after a 0 for a "result" field.
-    shape = (lambda value: (0, value)) if len(op.reply) == 2 else (lambda value: (0,)) if result_first \
+    shape = (
+        (lambda value: (0, value))
+        if len(op.reply) == 2
+        else (lambda value: (0,))
+        if result_first
         else (lambda value: (value,))
+    )
 
     def handler(sim, robot, request):
         component = component_of(robot, cls)

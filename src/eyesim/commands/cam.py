@@ -13,8 +13,10 @@ from eyesim.robot.components.camera import Camera
 
 # The camera's RoBIOS resolutions (QQVGA..CAM5MP; CUSTOM is the LCD's) -> (width, height)
 CAMERA_RESOLUTIONS = {name: value for name, value in constants.GROUPS["resolutions"].items() if value != CUSTOM}
-RESOLUTIONS = {value: (getattr(constants, f"{name}_X"), getattr(constants, f"{name}_Y"))
-               for name, value in CAMERA_RESOLUTIONS.items()}
+RESOLUTIONS = {
+    value: (getattr(constants, f"{name}_X"), getattr(constants, f"{name}_Y"))
+    for name, value in CAMERA_RESOLUTIONS.items()
+}
 NAMES = ", ".join(f"{name} {value}" for name, value in CAMERA_RESOLUTIONS.items())
 
 

@@ -20,9 +20,10 @@ def _numbers(table: dict) -> str:
 def _motor(robot, number: int):
     motor = robot.motors.get(number)
     if motor is None:
-        raise CommandError(f"robot {robot.id} ({robot.name}) has no motor {number} "
-                           f"(its motors: {_numbers(robot.motors)})", generated.ERR_NOT_SUPPORTED
-                           if not robot.motors else generated.ERR_BAD_ARGUMENT)
+        raise CommandError(
+            f"robot {robot.id} ({robot.name}) has no motor {number} (its motors: {_numbers(robot.motors)})",
+            generated.ERR_NOT_SUPPORTED if not robot.motors else generated.ERR_BAD_ARGUMENT,
+        )
     # Driving a motor directly takes it over from the V-omega controller.
     for vw in robot.components_of(VwController):
         if motor in vw.drive.motors.values():
@@ -33,9 +34,10 @@ def _motor(robot, number: int):
 def _encoder(robot, number: int):
     encoder = robot.encoders.get(number)
     if encoder is None:
-        raise CommandError(f"robot {robot.id} ({robot.name}) has no encoder {number} "
-                           f"(its encoders: {_numbers(robot.encoders)})", generated.ERR_NOT_SUPPORTED
-                           if not robot.encoders else generated.ERR_BAD_ARGUMENT)
+        raise CommandError(
+            f"robot {robot.id} ({robot.name}) has no encoder {number} (its encoders: {_numbers(robot.encoders)})",
+            generated.ERR_NOT_SUPPORTED if not robot.encoders else generated.ERR_BAD_ARGUMENT,
+        )
     return encoder
 
 

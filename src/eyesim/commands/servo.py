@@ -12,8 +12,10 @@ def _servo(robot, number: int):
     servo = robot.servos.get(number)
     if servo is None:
         numbers = ", ".join(str(n) for n in sorted(robot.servos)) or "none"
-        raise CommandError(f"robot {robot.id} ({robot.name}) has no servo {number} (its servos: {numbers})",
-                           generated.ERR_BAD_ARGUMENT if robot.servos else generated.ERR_NOT_SUPPORTED)
+        raise CommandError(
+            f"robot {robot.id} ({robot.name}) has no servo {number} (its servos: {numbers})",
+            generated.ERR_BAD_ARGUMENT if robot.servos else generated.ERR_NOT_SUPPORTED,
+        )
     return servo
 
 

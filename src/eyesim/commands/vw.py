@@ -60,7 +60,9 @@ def vw_drive(sim, robot, request):
     dx, dy, speed = request.args
     vw = _vw(robot)
     if dx < abs(dy) or dx <= 0:  # dx == |dy| is a quarter circle
-        raise CommandError(f"the point ({dx}, {dy}) cannot be reached on an arc: dx must be at least |dy| (and above 0)")
+        raise CommandError(
+            f"the point ({dx}, {dy}) cannot be reached on an arc: dx must be at least |dy| (and above 0)"
+        )
     with checked_arguments():
         vw.drive_to(mm(dx), mm(dy), mm(speed))
     return (0,)

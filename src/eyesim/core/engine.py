@@ -94,8 +94,9 @@ class Simulation:
         self._after_step = [c.after_step for c in components if type(c).after_step is not Component.after_step]
         self._tick = [c.tick for c in components if type(c).tick is not Component.tick]
         self._tick_steps = max(1, round(TICK_US / self.step_us))
-        self._publishers = [(robot.id, c) for robot in self.robots for c in robot.components
-                            if type(c).publish is not Component.publish]
+        self._publishers = [
+            (robot.id, c) for robot in self.robots for c in robot.components if type(c).publish is not Component.publish
+        ]
         for robot in self.robots:
             for component in robot.components:
                 component.reset()
@@ -250,8 +251,11 @@ class Simulation:
         # Decided here, on the simulation thread, when a session closes: in deterministic mode
         # time cannot have moved since the program's last call, so the run ends at the same
         # simulation time every time.
-        if self.stop_when_programs_done and not self.expected_programs and \
-                not any(s.robot is not None for s in self.sessions):
+        if (
+            self.stop_when_programs_done
+            and not self.expected_programs
+            and not any(s.robot is not None for s in self.sessions)
+        ):
             self.stop()
 
     def close(self) -> None:

@@ -67,8 +67,11 @@ def _place(sim, command: dict) -> Action:
     target = (sim.robot_by_id if kind == "robot" else sim.object_by_id)(ident)
     if target is None:
         count = len(sim.robots if kind == "robot" else sim.objects)
-        raise InputError(f"place: no {kind} {ident!r} (the scene has {kind}s 1..{count})" if count else
-                         f"place: no {kind} {ident!r} (the scene has none)")
+        raise InputError(
+            f"place: no {kind} {ident!r} (the scene has {kind}s 1..{count})"
+            if count
+            else f"place: no {kind} {ident!r} (the scene has none)"
+        )
     x, y, phi = (_finite(command[name]) for name in ("x", "y", "phi"))
     width, height = sim.floor.width, sim.floor.height
     if not (0 <= x <= width and 0 <= y <= height):
@@ -101,8 +104,13 @@ def _move(sim, kind: str, ident: int, x: float, y: float, phi: float) -> None:
 
 # The inputs: viewer-channel command type -> what checks it against the world and makes its action.
 INPUTS: dict[str, Callable[[object, dict], Action]] = {
-    "key": _key, "touch": _touch, "irtv": _irtv, "serial": _serial, "digital": _digital,
-    "analog": _analog, "place": _place,
+    "key": _key,
+    "touch": _touch,
+    "irtv": _irtv,
+    "serial": _serial,
+    "digital": _digital,
+    "analog": _analog,
+    "place": _place,
 }
 
 

@@ -112,8 +112,12 @@ class Requests:
             return
         except Exception:  # a fault stays with its call: the program gets an error, everyone else goes on
             log.error("handler for %s from %s failed:\n%s", op.name, session.name, traceback.format_exc())
-            self.sim.timing.answer(request, encode_error(op.code, request.request_id, g.ERR_BAD_ARGUMENT,
-                                                         "internal simulator error (see the simulator log)"))
+            self.sim.timing.answer(
+                request,
+                encode_error(
+                    op.code, request.request_id, g.ERR_BAD_ARGUMENT, "internal simulator error (see the simulator log)"
+                ),
+            )
             return
         if isinstance(result, Deferred):
             self.sim.timing.defer(request, result)
@@ -137,18 +141,24 @@ class Requests:
         try:
             return encode_message(request.op.code, g.KIND_REPLY, request.request_id, values)
         except (struct.error, OverflowError, TypeError, ValueError) as error:
-            log.error("reply to %s from %s does not encode (%s): %r", request.op.name, request.session.name,
-                      error, values)
-            return encode_error(request.op.code, request.request_id, g.ERR_BAD_ARGUMENT,
-                                "the result does not fit the reply (a value out of range)")
+            log.error(
+                "reply to %s from %s does not encode (%s): %r", request.op.name, request.session.name, error, values
+            )
+            return encode_error(
+                request.op.code,
+                request.request_id,
+                g.ERR_BAD_ARGUMENT,
+                "the result does not fit the reply (a value out of range)",
+            )
 
     def _deferred_frame(self, request: Request, deferred: Deferred) -> bytes:
         """The reply a Deferred made; an error reply if making it failed (logged here, once)."""
         if deferred.work.error is None:
             return deferred.work.result[1]
         log.error("handler for %s from %s failed:\n%s", request.op.name, request.session.name, deferred.work.error)
-        return encode_error(request.op.code, request.request_id, g.ERR_BAD_ARGUMENT,
-                            "internal simulator error (see the simulator log)")
+        return encode_error(
+            request.op.code, request.request_id, g.ERR_BAD_ARGUMENT, "internal simulator error (see the simulator log)"
+        )
 
     def send(self, session: Session, frame: bytes) -> None:
         if not session.closed:
@@ -164,8 +174,13 @@ class Requests:
         if session.robot is not None:
             raise commands.CommandError("handshake sent twice", g.ERR_BAD_PAYLOAD)
         if sim.program_token is not None and not secrets.compare_digest(token.encode(), sim.program_token.encode()):
-            log.warning("refused a program from %s (%s, pid %d): %s program token", session.peer,
-                        reprlib.repr(program), pid, "wrong" if token else "no")
+            log.warning(
+                "refused a program from %s (%s, pid %d): %s program token",
+                session.peer,
+                reprlib.repr(program),
+                pid,
+                "wrong" if token else "no",
+            )
             raise commands.CommandError(program_token.refusal(token, sim.program_token_file), g.ERR_BAD_TOKEN)
         robot = self._choose_robot(selector)
         session.robot, session.program, session.pid = robot, program, pid
@@ -199,8 +214,9 @@ class Requests:
         else:
             candidates = [r for r in robots if r.name.lower() == selector.lower()]
         if not candidates:
-            raise commands.CommandError(f"no robot {reprlib.repr(selector)} in the scene (robots: {names})",
-                                        g.ERR_NO_ROBOT)
+            raise commands.CommandError(
+                f"no robot {reprlib.repr(selector)} in the scene (robots: {names})", g.ERR_NO_ROBOT
+            )
         free = [r for r in candidates if r.id not in taken]
         if not free:
             raise commands.CommandError(f"robot {selector!r} already runs a program", g.ERR_NO_ROBOT)

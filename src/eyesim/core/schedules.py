@@ -274,9 +274,13 @@ class LockstepSchedule:
 
     def several_threads(self, session: Session) -> None:
         assert session.robot is not None  # asked only once the handshake has bound a robot
-        log.warning("robot %d (%s): RoBIOS calls come from more than one thread of the program; their "
-                    "order follows the operating system's scheduling, so this deterministic run may not "
-                    "repeat exactly (docs/running.md#time)", session.robot.id, session.program or "program")
+        log.warning(
+            "robot %d (%s): RoBIOS calls come from more than one thread of the program; their "
+            "order follows the operating system's scheduling, so this deterministic run may not "
+            "repeat exactly (docs/running.md#time)",
+            session.robot.id,
+            session.program or "program",
+        )
 
     def clear(self) -> None:
         """Nothing is kept outside the sessions."""

@@ -29,15 +29,17 @@ def waits(sim, seconds: float) -> list[str]:
         who = f"robot {session.robot.id} ({session.program or 'program'})"
         waiting = [request.op for request, pending in session.pending if not pending.background]
         if waiting and waiting[0].group == "key":
-            lines.append(f"{who}: waiting in {function_name(waiting[0].name)} — press a key in the viewer "
-                         f"or pass --key")
+            lines.append(
+                f"{who}: waiting in {function_name(waiting[0].name)} — press a key in the viewer or pass --key"
+            )
         elif waiting:
             lines.append(f"{who}: waiting in {function_name(waiting[0].name)}")
         elif not session.queued:
             lines.append(f"{who}: no RoBIOS call for {seconds:.0f} s; deterministic time waits for it")
     for robot_id in sorted(sim.expected_programs):
-        lines.append(f"robot {robot_id}: its program has not connected for {seconds:.0f} s; deterministic time "
-                     f"waits for it")
+        lines.append(
+            f"robot {robot_id}: its program has not connected for {seconds:.0f} s; deterministic time waits for it"
+        )
     return lines
 
 
@@ -56,8 +58,9 @@ class StallWatch:
     moved, or (`keys_can_come` False: no viewer) every program has been waiting for a key, for
     `seconds` of wall time."""
 
-    def __init__(self, sim, report: Callable[[list[str]], None], seconds: float = STALL_SECONDS,
-                 keys_can_come: bool = True):
+    def __init__(
+        self, sim, report: Callable[[list[str]], None], seconds: float = STALL_SECONDS, keys_can_come: bool = True
+    ):
         self.sim = sim
         self.report = report
         self.seconds = seconds
@@ -89,14 +92,19 @@ class StallWatch:
     def _state(self):
         """What must stay the same for a stall: the simulated time, or, when no key can come, which
         calls for a key the programs wait in (None: neither holds still, or the run is paused)."""
+
         def look(sim):
             if sim.clock.paused:
                 return None
             if self.keys_can_come:
                 return sim.time_us
             live = [s for s in sim.sessions if s.robot is not None and not s.closed]
-            keys = tuple(id(request) for s in live for request, pending in s.pending
-                         if request.op.group == "key" and not pending.background)
+            keys = tuple(
+                id(request)
+                for s in live
+                for request, pending in s.pending
+                if request.op.group == "key" and not pending.background
+            )
             all_wait_for_keys = live and len(keys) == len(live) and not sim.expected_programs
             return ("keys", keys) if all_wait_for_keys else sim.time_us
 

@@ -40,8 +40,9 @@ def _tail(text: str) -> str:
     return text if len(text) <= TAIL else "..." + text[-TAIL:]
 
 
-def build(program, submission_files: dict[str, bytes], directory: Path,
-          task_processes: int | None = None) -> tuple[Path | None, dict]:
+def build(
+    program, submission_files: dict[str, bytes], directory: Path, task_processes: int | None = None
+) -> tuple[Path | None, dict]:
     """Build one of the spec's programs from the submission's files in `directory`, the compiler
     under COMPILE_LIMITS (and `task_processes`); returns (executable or None, build record)."""
     from eyesim.programs import toolchain
@@ -55,8 +56,11 @@ def build(program, submission_files: dict[str, bytes], directory: Path,
         sources += found
     if missing:
         listed = ", ".join(sorted(submission_files)) or "none"
-        return None, {"ok": False, "status": "missing_sources",
-                      "output": f"no file matching {', '.join(map(repr, missing))} in the submission (its files: {listed})"}
+        return None, {
+            "ok": False,
+            "status": "missing_sources",
+            "output": f"no file matching {', '.join(map(repr, missing))} in the submission (its files: {listed})",
+        }
     if program.language == "python":
         return directory / sources[0], {"ok": True, "status": "ok", "output": ""}
     output = toolchain.executable_name(directory.parent / "build" / program.name)
@@ -84,8 +88,16 @@ def build(program, submission_files: dict[str, bytes], directory: Path,
 def _run_limited(command: list[str], cwd: Path, processes: int | None) -> subprocess.CompletedProcess:
     from eyesim import platform
 
-    process = platform.start(command, own_group=True, limits=platform.Limits(**COMPILE_LIMITS, processes=processes),
-                             cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, errors="replace")
+    process = platform.start(
+        command,
+        own_group=True,
+        limits=platform.Limits(**COMPILE_LIMITS, processes=processes),
+        cwd=cwd,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        errors="replace",
+    )
     try:
         stdout, stderr = process.communicate(timeout=COMPILE_TIMEOUT)
     finally:
@@ -129,8 +141,18 @@ def _png(pixels) -> bytes:
 def _not_run(case, reason: str) -> list[dict]:
     from eyesim.grade.checks import describe
 
-    return [{"name": describe(c), "kind": c["kind"], "weight": c.get("weight", 1.0), "passed": False, "score": 0.0,
-             "message": f"not run: {reason}", "evidence": {}} for c in case.checks]
+    return [
+        {
+            "name": describe(c),
+            "kind": c["kind"],
+            "weight": c.get("weight", 1.0),
+            "passed": False,
+            "score": 0.0,
+            "message": f"not run: {reason}",
+            "evidence": {},
+        }
+        for c in case.checks
+    ]
 
 
 def _status(end, runs) -> str:
@@ -159,8 +181,18 @@ def run_case(task: dict, directory: Path) -> dict:
     from eyesim.testing.assertions import describe_exit
 
     case, programs = task["case"], task["programs"]
-    result = {"student": task["student"], "case": case.name, "weight": case.weight, "key": task["key"],
-              "status": "ok", "build": {}, "programs": {}, "robots": {}, "contacts": [], "artifacts": {}}
+    result = {
+        "student": task["student"],
+        "case": case.name,
+        "weight": case.weight,
+        "key": task["key"],
+        "status": "ok",
+        "build": {},
+        "programs": {},
+        "robots": {},
+        "contacts": [],
+        "artifacts": {},
+    }
     work = directory / "work"
     work.mkdir(parents=True)
     for name, data in task["submission_files"].items():
@@ -171,15 +203,22 @@ def run_case(task: dict, directory: Path) -> dict:
     for entry in case.robots:
         name = entry["program"]
         if name not in result["build"]:
-            executables[name], result["build"][name] = build(programs[name], task["submission_files"], work,
-                                                             task.get("processes"))
+            executables[name], result["build"][name] = build(
+                programs[name], task["submission_files"], work, task.get("processes")
+            )
     failed = [name for name, record in result["build"].items() if not record["ok"]]
     if failed:
         record = result["build"][failed[0]]
         result["status"] = record["status"]
-        result["checks"] = _not_run(case, f"program {failed[0]!r} " +
-                                    {"missing_sources": "has no source files", "compile_error": "does not compile",
-                                     "grader_error": "could not be built"}[record["status"]])
+        result["checks"] = _not_run(
+            case,
+            f"program {failed[0]!r} "
+            + {
+                "missing_sources": "has no source files",
+                "compile_error": "does not compile",
+                "grader_error": "could not be built",
+            }[record["status"]],
+        )
         result["score"] = 0.0
         return result
 
@@ -200,15 +239,21 @@ def run_case(task: dict, directory: Path) -> dict:
             if run is not None:
                 result["programs"][str(robot.id)] = {
                     "name": next(e["program"] for e in case.robots if e["robot"] == robot.id),
-                    "status": describe_exit(run), "exit_code": robot.exit_code, "stopped": run.stopped_by_us,
+                    "status": describe_exit(run),
+                    "exit_code": robot.exit_code,
+                    "stopped": run.stopped_by_us,
                     "crashed": run.crash is not None,
-                    "stdout": _tail(robot.stdout), "stderr": _tail(robot.stderr)}
+                    "stdout": _tail(robot.stdout),
+                    "stderr": _tail(robot.stderr),
+                }
             pose = robot.pose
             step = max(1, round(PATH_PERIOD / 0.01))
             result["robots"][str(robot.id)] = {
-                "name": robot.name, "final": {"x": round(pose.x, 1), "y": round(pose.y, 1), "phi": round(pose.phi, 1)},
+                "name": robot.name,
+                "final": {"x": round(pose.x, 1), "y": round(pose.y, 1), "phi": round(pose.phi, 1)},
                 "path": [[round(p.t, 3), round(p.x, 1), round(p.y, 1)] for p in robot.path[::step]],
-                "lcd_text": robot.lcd_text()}
+                "lcd_text": robot.lcd_text(),
+            }
             result["artifacts"][f"robot{robot.id}-lcd.png"] = _png(robot.lcd_image())
         result["contacts"] = [c.as_dict() for c in sim.contacts[:100]]
     failed = result["status"] != "ok" or result["score"] < 1.0
@@ -225,12 +270,24 @@ def _simulated(case, executables: dict, work: Path, task: dict, recording: Path 
 
     with Simulation(case.scene) as sim:
         for entry in case.robots:
-            sim.program(entry["robot"], executables[entry["program"]], *entry.get("args", ()),
-                        stdin=entry.get("stdin"), cwd=work, env=entry.get("env"), cpu_seconds=case.cpu,
-                        memory_bytes=case.memory_mb << 20, processes=task.get("processes"), file_bytes=FILE_BYTES)
+            sim.program(
+                entry["robot"],
+                executables[entry["program"]],
+                *entry.get("args", ()),
+                stdin=entry.get("stdin"),
+                cwd=work,
+                env=entry.get("env"),
+                cpu_seconds=case.cpu,
+                memory_bytes=case.memory_mb << 20,
+                processes=task.get("processes"),
+                file_bytes=FILE_BYTES,
+            )
         _schedule_inputs(sim, case.inputs)
-        recorder = (Recorder(sim.engine, recording, pose_rate=RECORDING_POSE_RATE, lcd_rate=RECORDING_LCD_RATE)
-                    if recording is not None else None)
+        recorder = (
+            Recorder(sim.engine, recording, pose_rate=RECORDING_POSE_RATE, lcd_rate=RECORDING_LCD_RATE)
+            if recording is not None
+            else None
+        )
         end = sim.run(until=case.time, end_with_programs=case.end_with_programs, wall_timeout=case.wall_clock)
         sim.stop_programs()  # the run is over: what still runs is stopped, its output complete
         if recorder is not None:
@@ -252,10 +309,17 @@ def main(argv: list[str] | None = None) -> int:
     try:
         result = run_case(task, directory)
     except Exception:
-        result = {"student": task["student"], "case": task["case"].name, "weight": task["case"].weight,
-                  "key": task["key"], "status": "grader_error", "score": 0.0,
-                  "checks": _not_run(task["case"], "the grader failed on this case"),
-                  "error": traceback.format_exc(), "artifacts": {}}
+        result = {
+            "student": task["student"],
+            "case": task["case"].name,
+            "weight": task["case"].weight,
+            "key": task["key"],
+            "status": "grader_error",
+            "score": 0.0,
+            "checks": _not_run(task["case"], "the grader failed on this case"),
+            "error": traceback.format_exc(),
+            "artifacts": {},
+        }
     finally:
         shutil.rmtree(directory, ignore_errors=True)
     result["timing"] = {"case_seconds": round(time.perf_counter() - started, 3)}
@@ -273,8 +337,10 @@ def _cpu_seconds() -> float:
     grader's own resource usage."""
     import resource
 
-    return sum(usage.ru_utime + usage.ru_stime
-               for usage in (resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)))
+    return sum(
+        usage.ru_utime + usage.ru_stime
+        for usage in (resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN))
+    )
 
 
 def _not_inspectable() -> None:

@@ -14,8 +14,14 @@ def _target(check: dict) -> dict:
 
 
 def final_pose(sim, check, context):
-    return a.judge_final_pose(sim, check["robot"], check["tolerance"], heading=check.get("heading"),
-                              heading_tolerance=check.get("heading_tolerance", 10.0), **_target(check))
+    return a.judge_final_pose(
+        sim,
+        check["robot"],
+        check["tolerance"],
+        heading=check.get("heading"),
+        heading_tolerance=check.get("heading_tolerance", 10.0),
+        **_target(check),
+    )
 
 
 def reach(sim, check, context):
@@ -27,8 +33,9 @@ def no_collision(sim, check, context):
 
 
 def lcd_text(sim, check, context):
-    return a.judge_lcd_text(sim, check["robot"], check.get("text"), check.get("regex"), check.get("row"),
-                            check.get("column"))
+    return a.judge_lcd_text(
+        sim, check["robot"], check.get("text"), check.get("regex"), check.get("row"), check.get("column")
+    )
 
 
 def exit_code(sim, check, context):
@@ -49,8 +56,9 @@ def console(sim, check, context):
     stream = check.get("stream", "stdout")
     robot = sim.robot(check["robot"])
     content = robot.stdout if stream == "stdout" else robot.stderr
-    return a.judge_text(f"robot {robot.id}'s {stream}", content, check.get("contains"), check.get("equals"),
-                        check.get("regex"))
+    return a.judge_text(
+        f"robot {robot.id}'s {stream}", content, check.get("contains"), check.get("equals"), check.get("regex")
+    )
 
 
 def object_pose(sim, check, context):
@@ -70,8 +78,12 @@ def python(sim, check, context):
     except Exception as error:
         frames = traceback.extract_tb(error.__traceback__)
         where = next((f"{f.filename}:{f.lineno}" for f in reversed(frames) if f.filename == check["file"]), "")
-        return a.Verdict(False, f"custom check {check['function']} raised {type(error).__name__}: {error}"
-                                + (f" ({where})" if where else ""), {})
+        return a.Verdict(
+            False,
+            f"custom check {check['function']} raised {type(error).__name__}: {error}"
+            + (f" ({where})" if where else ""),
+            {},
+        )
     message = None
     if isinstance(value, tuple):
         value, message = value
@@ -83,8 +95,17 @@ def python(sim, check, context):
     return verdict
 
 
-KINDS = {"final_pose": final_pose, "reach": reach, "no_collision": no_collision, "lcd_text": lcd_text,
-         "exit_code": exit_code, "file": file, "console": console, "object_pose": object_pose, "python": python}
+KINDS = {
+    "final_pose": final_pose,
+    "reach": reach,
+    "no_collision": no_collision,
+    "lcd_text": lcd_text,
+    "exit_code": exit_code,
+    "file": file,
+    "console": console,
+    "object_pose": object_pose,
+    "python": python,
+}
 
 
 def describe(check: dict) -> str:
@@ -106,5 +127,12 @@ def judge(sim, check: dict, context: dict) -> dict:
     except Exception as error:  # a check must never end the grading of the other checks
         verdict = a.Verdict(False, f"the check could not be evaluated: {type(error).__name__}: {error}", {})
     score = getattr(verdict, "score", 1.0 if verdict.passed else 0.0)
-    return {"name": describe(check), "kind": check["kind"], "weight": weight, "passed": verdict.passed,
-            "score": score, "message": verdict.message, "evidence": verdict.evidence}
+    return {
+        "name": describe(check),
+        "kind": check["kind"],
+        "weight": weight,
+        "passed": verdict.passed,
+        "score": score,
+        "message": verdict.message,
+        "evidence": verdict.evidence,
+    }

@@ -18,7 +18,9 @@ def _result(task: dict, future) -> dict:
     try:
         return future.result()
     except Exception as error:  # noqa: BLE001 - reported per case
-        return failed_result(task, "grader_error", f"the worker running this case failed: {type(error).__name__}: {error}")
+        return failed_result(
+            task, "grader_error", f"the worker running this case failed: {type(error).__name__}: {error}"
+        )
 
 
 class ExecutorError(Exception):
@@ -80,16 +82,16 @@ class DaskCluster:
         try:
             from distributed import Client, LocalCluster
         except ImportError:
-            raise ExecutorError("--cluster needs Dask: pip install 'eyesim[cluster]' "
-                                "(or dask[distributed])") from None
+            raise ExecutorError("--cluster needs Dask: pip install 'eyesim[cluster]' (or dask[distributed])") from None
         self._cluster = None
         try:
             if address.startswith("local:"):
                 count = address.split(":", 1)[1]
                 if not count.isdigit() or int(count) < 1:
                     raise ExecutorError(f"--cluster {address!r}: expected local:N with N workers, e.g. local:2")
-                self._cluster = LocalCluster(n_workers=int(count), threads_per_worker=1, processes=True,
-                                             dashboard_address=None)
+                self._cluster = LocalCluster(
+                    n_workers=int(count), threads_per_worker=1, processes=True, dashboard_address=None
+                )
                 self.client = Client(self._cluster)
             else:
                 self.client = Client(address, timeout="10s")  # refused connections are retried until then

@@ -18,8 +18,9 @@ from eyesim.grade.summary import summarise, write_json, write_junit
 
 class Interrupted(Exception):
     def __init__(self, stored: int, total: int):
-        super().__init__(f"interrupted: {stored} of {total} case(s) are stored; "
-                         f"run the same command again to grade the rest")
+        super().__init__(
+            f"interrupted: {stored} of {total} case(s) are stored; run the same command again to grade the rest"
+        )
 
 
 @dataclass
@@ -30,24 +31,40 @@ class GradingRun:
     reused: int  # cases whose stored results were still valid
 
 
-def tasks_for(spec: GradingSpec, submission: Submission, require_isolation: bool = False,
-              keep_recordings: str = "failed") -> list[dict]:
+def tasks_for(
+    spec: GradingSpec, submission: Submission, require_isolation: bool = False, keep_recordings: str = "failed"
+) -> list[dict]:
     """What each case process is sent. With `require_isolation` a worker that cannot sandbox the
     case refuses it (sandbox.py); `keep_recordings` (failed, all, none): which cases' MCAP
     recordings come back with their results."""
     tasks = []
     for case in spec.cases:
         used = {entry["program"] for entry in case.robots}
-        tasks.append({"student": submission.name, "submission_files": submission.files, "case": case,
-                      "programs": {name: spec.programs[name] for name in sorted(used)},
-                      "python_checks": spec.python_checks, "require_isolation": require_isolation,
-                      "keep_recording": keep_recordings,
-                      "key": {"spec": spec.digest, "submission": submission.digest, "case": case.name}})
+        tasks.append(
+            {
+                "student": submission.name,
+                "submission_files": submission.files,
+                "case": case,
+                "programs": {name: spec.programs[name] for name in sorted(used)},
+                "python_checks": spec.python_checks,
+                "require_isolation": require_isolation,
+                "keep_recording": keep_recordings,
+                "key": {"spec": spec.digest, "submission": submission.digest, "case": case.name},
+            }
+        )
     return tasks
 
 
-def grade(spec: GradingSpec, submissions: list[Submission], out: Path, executor, resume: bool = True,
-          progress_stream=None, require_isolation: bool = False, keep_recordings: str = "failed") -> GradingRun:
+def grade(
+    spec: GradingSpec,
+    submissions: list[Submission],
+    out: Path,
+    executor,
+    resume: bool = True,
+    progress_stream=None,
+    require_isolation: bool = False,
+    keep_recordings: str = "failed",
+) -> GradingRun:
     """Grade; results already stored for the same spec and submission are reused when `resume`.
     A KeyboardInterrupt stops the run; what finished is stored."""
     out.mkdir(parents=True, exist_ok=True)
@@ -75,7 +92,9 @@ def grade(spec: GradingSpec, submissions: list[Submission], out: Path, executor,
                 try:
                     trajectory_plot(spec.case(result["case"]).scene, stored, plot)
                     stored["files"]["trajectory.png"] = plot.relative_to(out).as_posix()
-                    store.path(result["student"], result["case"]).write_text(json.dumps(stored, indent=1, sort_keys=True))
+                    store.path(result["student"], result["case"]).write_text(
+                        json.dumps(stored, indent=1, sort_keys=True)
+                    )
                 except Exception as error:  # a plot is a nicety; the result stands without it
                     progress.message(f"no trajectory plot for {result['student']}/{result['case']}: {error}")
             results[(result["student"], result["case"])] = stored

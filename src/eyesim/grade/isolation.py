@@ -46,8 +46,17 @@ def failed_result(task: dict, status: str, message: str) -> dict:
     from eyesim.grade.case_run import _not_run
 
     case = task["case"]
-    return {"student": task["student"], "case": case.name, "weight": case.weight, "key": task["key"],
-            "status": status, "score": 0.0, "checks": _not_run(case, message), "error": message, "artifacts": {}}
+    return {
+        "student": task["student"],
+        "case": case.name,
+        "weight": case.weight,
+        "key": task["key"],
+        "status": status,
+        "score": 0.0,
+        "checks": _not_run(case, message),
+        "error": message,
+        "artifacts": {},
+    }
 
 
 def run_case_isolated(task: dict, runner: warm.Runner | None = None) -> dict:
@@ -67,7 +76,9 @@ def run_case_isolated(task: dict, runner: warm.Runner | None = None) -> dict:
             task, watched = dict(task, processes=CASE_PROCESSES), runner.process
         else:
             folder = None
-            process, task = _start_case(task, Path(stack.enter_context(tempfile.TemporaryDirectory(prefix="eyesim-grade-"))))
+            process, task = _start_case(
+                task, Path(stack.enter_context(tempfile.TemporaryDirectory(prefix="eyesim-grade-")))
+            )
             watched = process
         with _running_lock:
             _running.add(watched)
@@ -76,7 +87,9 @@ def run_case_isolated(task: dict, runner: warm.Runner | None = None) -> dict:
             stdout, stderr = process.communicate(pickle.dumps(task), timeout=timeout)
         except subprocess.TimeoutExpired:
             _kill_group(watched)
-            return timed(failed_result(task, "timeout", f"the case took over {timeout:g} s of real time and was killed"))
+            return timed(
+                failed_result(task, "timeout", f"the case took over {timeout:g} s of real time and was killed")
+            )
         finally:
             if folder is None:
                 _kill_group(process)  # programs the case left behind in its group
@@ -87,8 +100,13 @@ def run_case_isolated(task: dict, runner: warm.Runner | None = None) -> dict:
         result = _read_result(stdout, task)
         if result is None:
             tail = stderr.decode(errors="replace")[-3000:]
-            return timed(failed_result(task, "grader_error", f"the case process ended with status {process.returncode} "
-                                                             f"without a result:\n{tail}"))
+            return timed(
+                failed_result(
+                    task,
+                    "grader_error",
+                    f"the case process ended with status {process.returncode} without a result:\n{tail}",
+                )
+            )
         return result
 
 
@@ -114,13 +132,23 @@ def _read_result(stdout: bytes, task: dict) -> dict | None:
         if not isinstance(result, dict) or not isinstance(result.get("checks"), list):
             return None
         score = float(result["score"])
-        artifacts = {str(name): base64.b64decode(data) for name, data in (result.get("artifacts") or {}).items()
-                     if "/" not in str(name) and not str(name).startswith(".")}
+        artifacts = {
+            str(name): base64.b64decode(data)
+            for name, data in (result.get("artifacts") or {}).items()
+            if "/" not in str(name) and not str(name).startswith(".")
+        }
     except (ValueError, TypeError, KeyError, AttributeError):
         return None
     case = task["case"]
-    return dict(result, student=task["student"], case=case.name, weight=case.weight, key=task["key"],
-                score=min(1.0, max(0.0, score)), artifacts=artifacts)
+    return dict(
+        result,
+        student=task["student"],
+        case=case.name,
+        weight=case.weight,
+        key=task["key"],
+        score=min(1.0, max(0.0, score)),
+        artifacts=artifacts,
+    )
 
 
 def _kill_group(process: subprocess.Popen) -> None:

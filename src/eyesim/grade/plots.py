@@ -17,8 +17,13 @@ def trajectory_plot(scene, result: dict, path: Path) -> Path:
     figure = Figure(figsize=(4.8, 4.0), dpi=80)
     axes = figure.add_subplot()
     for wall in scene.world.walls:
-        axes.plot([wall.x1, wall.x2], [wall.y1, wall.y2], color="#555555",
-                  linewidth=max(1.0, wall.thickness / 12), solid_capstyle="projecting")
+        axes.plot(
+            [wall.x1, wall.x2],
+            [wall.y1, wall.y2],
+            color="#555555",
+            linewidth=max(1.0, wall.thickness / 12),
+            solid_capstyle="projecting",
+        )
     for number, marker in enumerate(scene.markers, start=1):
         axes.plot(marker.x, marker.y, "o", color=[c / 255 for c in marker.color[:3]], markersize=9)
         axes.annotate(f"marker {number}", (marker.x, marker.y), textcoords="offset points", xytext=(6, 6), fontsize=7)

@@ -54,20 +54,26 @@ def _case_cell(case: dict | None) -> str:
 
 def write_html(summary: dict, path: Path) -> None:
     cases = summary["cases"]
-    parts = [f"<!doctype html><html lang='en'><head><meta charset='utf-8'><title>{escape(summary['title'])}</title>",
-             f"<style>{STYLE}</style></head><body>",
-             f"<h1>{escape(summary['title'])}</h1>",
-             f"<p>{len(summary['students'])} submission(s), {len(cases)} case(s); graded on "
-             f"{escape(summary['executor'])}. Spec: <code>{escape(summary['spec'])}</code></p>",
-             "<table id='scores'><thead><tr><th>student</th><th>score</th><th>checks passed</th>"
-             + "".join(f"<th>{escape(c['name'])} (×{c['weight']:g})</th>" for c in cases) + "</tr></thead><tbody>"]
+    parts = [
+        f"<!doctype html><html lang='en'><head><meta charset='utf-8'><title>{escape(summary['title'])}</title>",
+        f"<style>{STYLE}</style></head><body>",
+        f"<h1>{escape(summary['title'])}</h1>",
+        f"<p>{len(summary['students'])} submission(s), {len(cases)} case(s); graded on "
+        f"{escape(summary['executor'])}. Spec: <code>{escape(summary['spec'])}</code></p>",
+        "<table id='scores'><thead><tr><th>student</th><th>score</th><th>checks passed</th>"
+        + "".join(f"<th>{escape(c['name'])} (×{c['weight']:g})</th>" for c in cases)
+        + "</tr></thead><tbody>",
+    ]
     for student in summary["students"]:
         by_case = {c["case"]: c for c in student["cases"]}
         anchor = f"student-{escape(student['name'])}"
-        parts.append(f"<tr data-student='{escape(student['name'])}'><td><a href='#{anchor}'>{escape(student['name'])}</a></td>"
-                     f"<td class='score total'>{student['score']:.1f}</td>"
-                     f"<td class='num'>{student['passed_checks']}/{student['checks']}</td>"
-                     + "".join(_case_cell(by_case.get(c["name"])) for c in cases) + "</tr>")
+        parts.append(
+            f"<tr data-student='{escape(student['name'])}'><td><a href='#{anchor}'>{escape(student['name'])}</a></td>"
+            f"<td class='score total'>{student['score']:.1f}</td>"
+            f"<td class='num'>{student['passed_checks']}/{student['checks']}</td>"
+            + "".join(_case_cell(by_case.get(c["name"])) for c in cases)
+            + "</tr>"
+        )
     parts.append("</tbody></table>")
     for student in summary["students"]:
         parts.append(_student_section(student))
@@ -80,45 +86,68 @@ def _student_section(student: dict) -> str:
     parts = [f"<section class='student' id='student-{name}'><h2>{name}: {student['score']:.1f} / 100</h2>"]
     for case in student["cases"]:
         status = "" if case["status"] == "ok" else " " + _status(case["status"])
-        parts.append(f"<div class='case' data-case='{escape(case['case'])}'><h3>{escape(case['case'])}: "
-                     f"{_badge(case)}{status}</h3>")
+        parts.append(
+            f"<div class='case' data-case='{escape(case['case'])}'><h3>{escape(case['case'])}: "
+            f"{_badge(case)}{status}</h3>"
+        )
         recording = case.get("files", {}).get(RECORDING)
         if recording:
-            parts.append(f"<p class='replay'><a class='replay-link' href='/replay-case?file={escape(recording)}'>"
-                         f"Watch the run</a> (when the report is served by <code>eyesim replay REPORT_FOLDER</code> "
-                         f"or <code>eyesim grade --serve</code>), or run <code>eyesim replay {escape(recording)}</code> "
-                         f"in the report's folder.</p>")
+            parts.append(
+                f"<p class='replay'><a class='replay-link' href='/replay-case?file={escape(recording)}'>"
+                f"Watch the run</a> (when the report is served by <code>eyesim replay REPORT_FOLDER</code> "
+                f"or <code>eyesim grade --serve</code>), or run <code>eyesim replay {escape(recording)}</code> "
+                f"in the report's folder.</p>"
+            )
         end = case.get("end")
         if end:
             parts.append(f"<p>Ran until {end['time']:.2f} s of simulation time ({escape(end['reason'])}).</p>")
         if case.get("hung"):
-            parts.append(f"<p class='hung'>The run stood still: {escape(case['hung'])}.</p><ul>"
-                         + "".join(f"<li>{escape(line)}</li>" for line in end.get("stalled", [])) + "</ul>")
+            parts.append(
+                f"<p class='hung'>The run stood still: {escape(case['hung'])}.</p><ul>"
+                + "".join(f"<li>{escape(line)}</li>" for line in end.get("stalled", []))
+                + "</ul>"
+            )
         for program, build in case.get("build", {}).items():
             if not build["ok"] or build["output"].strip():
                 label = "does not build" if not build["ok"] else "built with messages"
-                parts.append(f"<details{' open' if not build['ok'] else ''}><summary>program {escape(program)} "
-                             f"{label}</summary><pre>{escape(build['output'])}</pre></details>")
+                parts.append(
+                    f"<details{' open' if not build['ok'] else ''}><summary>program {escape(program)} "
+                    f"{label}</summary><pre>{escape(build['output'])}</pre></details>"
+                )
         if case.get("error"):
             parts.append(f"<details open><summary>grader message</summary><pre>{escape(case['error'])}</pre></details>")
-        parts.append("<table class='checks'><thead><tr><th></th><th>check</th><th>weight</th><th>result</th>"
-                     "<th>evidence</th></tr></thead><tbody>")
+        parts.append(
+            "<table class='checks'><thead><tr><th></th><th>check</th><th>weight</th><th>result</th>"
+            "<th>evidence</th></tr></thead><tbody>"
+        )
         for check in case["checks"]:
             mark = "<span class='pass'>✓</span>" if check["passed"] else "<span class='fail'>✗</span>"
             evidence = json.dumps(check.get("evidence", {}), sort_keys=True)
-            evidence_cell = (f"<details><summary>show</summary><pre>{escape(evidence)}</pre></details>"
-                             if check.get("evidence") else "")
-            parts.append(f"<tr><td>{mark}</td><td>{escape(check['name'])}</td><td class='num'>{check['weight']:g}</td>"
-                         f"<td><pre>{escape(check['message'])}</pre></td><td>{evidence_cell}</td></tr>")
+            evidence_cell = (
+                f"<details><summary>show</summary><pre>{escape(evidence)}</pre></details>"
+                if check.get("evidence")
+                else ""
+            )
+            parts.append(
+                f"<tr><td>{mark}</td><td>{escape(check['name'])}</td><td class='num'>{check['weight']:g}</td>"
+                f"<td><pre>{escape(check['message'])}</pre></td><td>{evidence_cell}</td></tr>"
+            )
         parts.append("</tbody></table>")
         for robot, program in sorted(case.get("programs", {}).items()):
-            parts.append(f"<p>Robot {escape(robot)}, program {escape(program['name'])}: {escape(program['status'])}</p>")
+            parts.append(
+                f"<p>Robot {escape(robot)}, program {escape(program['name'])}: {escape(program['status'])}</p>"
+            )
             for stream in ("stdout", "stderr"):
                 if program.get(stream):
-                    parts.append(f"<details><summary>robot {escape(robot)} {stream}</summary>"
-                                 f"<pre>{escape(program[stream])}</pre></details>")
-        images = [f"<img src='{escape(file)}' alt='{escape(name)}' title='{escape(name)}'>"
-                  for name, file in sorted(case.get("files", {}).items()) if file.endswith(".png")]
+                    parts.append(
+                        f"<details><summary>robot {escape(robot)} {stream}</summary>"
+                        f"<pre>{escape(program[stream])}</pre></details>"
+                    )
+        images = [
+            f"<img src='{escape(file)}' alt='{escape(name)}' title='{escape(name)}'>"
+            for name, file in sorted(case.get("files", {}).items())
+            if file.endswith(".png")
+        ]
         if images:
             parts.append("<div class='images'>" + "".join(images) + "</div>")
         parts.append("</div>")

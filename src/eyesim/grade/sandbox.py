@@ -42,12 +42,16 @@ def bwrap() -> str | None:
 def why_not_isolated() -> str | None:
     """None when cases can be sandboxed here; else why not and what to do instead."""
     if not sys.platform.startswith("linux"):
-        return ("cases are not isolated from each other on this system: a submission can read and change "
-                "files of other submissions and of the grader. Grade on Linux with bubblewrap "
-                "(apt install bubblewrap), or in a Linux container or virtual machine")
+        return (
+            "cases are not isolated from each other on this system: a submission can read and change "
+            "files of other submissions and of the grader. Grade on Linux with bubblewrap "
+            "(apt install bubblewrap), or in a Linux container or virtual machine"
+        )
     if bwrap() is None:
-        return ("cases are not isolated from each other: bubblewrap is not installed "
-                "(apt install bubblewrap / dnf install bubblewrap)")
+        return (
+            "cases are not isolated from each other: bubblewrap is not installed "
+            "(apt install bubblewrap / dnf install bubblewrap)"
+        )
     return None
 
 
@@ -65,8 +69,12 @@ def readable_folders() -> list[Path]:
     in and the Python it was made from, and the RoBIOS library if it lives elsewhere."""
     from eyesim import paths
 
-    folders = {Path(sys.prefix).resolve(), Path(sys.base_prefix).resolve(), paths.robios_dir().resolve(),
-               paths.PACKAGE_DIR.resolve()}
+    folders = {
+        Path(sys.prefix).resolve(),
+        Path(sys.base_prefix).resolve(),
+        paths.robios_dir().resolve(),
+        paths.PACKAGE_DIR.resolve(),
+    }
     return sorted(folder for folder in folders if not any(folder.is_relative_to(Path(s)) for s in SYSTEM_FOLDERS))
 
 
@@ -93,15 +101,36 @@ def warm_command(inner: list[str], spool: Path) -> list[str]:
 
 
 def case_environment(work: Path) -> list[str]:
-    return ["--setenv", "HOME", str(work), "--setenv", "TMPDIR", str(work),
-            "--setenv", "MPLCONFIGDIR", str(work / ".matplotlib")]
+    return [
+        "--setenv",
+        "HOME",
+        str(work),
+        "--setenv",
+        "TMPDIR",
+        str(work),
+        "--setenv",
+        "MPLCONFIGDIR",
+        str(work / ".matplotlib"),
+    ]
 
 
 def _file_system(unshare: list[str], work: Path) -> list[str]:
     # Empty /run and /tmp first: what is bound below them afterwards (a Python environment or the
     # work folder under /tmp, as in a CI checkout made with mktemp) stays visible.
-    args = [bwrap(), *unshare, "--die-with-parent", "--new-session", "--proc", "/proc", "--dev", "/dev",
-            "--tmpfs", "/run", "--tmpfs", "/tmp"]
+    args = [
+        bwrap(),
+        *unshare,
+        "--die-with-parent",
+        "--new-session",
+        "--proc",
+        "/proc",
+        "--dev",
+        "/dev",
+        "--tmpfs",
+        "/run",
+        "--tmpfs",
+        "/tmp",
+    ]
     for folder in SYSTEM_FOLDERS:
         args += ["--ro-bind-try", folder, folder]
     for folder in readable_folders():
@@ -160,7 +189,9 @@ def case_file_system(spool: Path, folder: Path) -> None:
     staging = b"/run/case"
     os.mkdir(staging, 0o700)
     _libc("mount", bytes(folder), staging, None, MS_BIND, None)
-    _libc("mount", b"tmpfs", bytes(spool), b"tmpfs", MS_NOSUID | MS_NODEV, b"mode=0755")  # the other cases' folders hidden
+    _libc(
+        "mount", b"tmpfs", bytes(spool), b"tmpfs", MS_NOSUID | MS_NODEV, b"mode=0755"
+    )  # the other cases' folders hidden
     os.mkdir(folder, 0o700)
     _libc("mount", staging, bytes(folder), None, MS_MOVE, None)
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as sock:

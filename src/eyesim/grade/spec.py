@@ -142,8 +142,12 @@ class _Checker:
         programs = {}
         for name, p in _table(doc.get("programs")).items():
             with _passed_over():
-                programs[name] = ProgramSpec(name, tuple(p["sources"]), p.get("language", "c"),
-                                             tuple(p.get("flags", ["-O2"] if p.get("language", "c") != "python" else [])))
+                programs[name] = ProgramSpec(
+                    name,
+                    tuple(p["sources"]),
+                    p.get("language", "c"),
+                    tuple(p.get("flags", ["-O2"] if p.get("language", "c") != "python" else [])),
+                )
         python_checks: dict[str, str] = {}
         cases, names = [], set()
         raw_cases = doc.get("cases") if isinstance(doc.get("cases"), list) else []
@@ -159,18 +163,29 @@ class _Checker:
             digest.update(python_checks[name].encode())
         for case in cases:
             digest.update(repr(case.scene).encode())  # the scene as loaded, with its robot and world files
-        return GradingSpec(self.path, doc.get("title", self.path.stem), programs, cases, python_checks,
-                           digest.hexdigest()[:16])
+        return GradingSpec(
+            self.path, doc.get("title", self.path.stem), programs, cases, python_checks, digest.hexdigest()[:16]
+        )
 
     def _case(self, where: tuple, raw: dict, names: set, limits: dict, programs: dict, python_checks: dict) -> CaseSpec:
         if raw["name"] in names:
             self.problem(where + ("name",), f"a second case named {raw['name']!r}")
         names.add(raw["name"])
         scene = self._scene(where + ("scene",), raw["scene"])
-        case = CaseSpec(raw["name"], scene, raw["scene"], raw.get("time", limits["time"]),
-                        raw.get("wall_clock", limits["wall_clock"]), limits["cpu"], limits["memory_mb"],
-                        raw.get("weight", 1.0), raw.get("end_with_programs", True),
-                        raw.get("robots", []), raw.get("inputs", []), raw["checks"])
+        case = CaseSpec(
+            raw["name"],
+            scene,
+            raw["scene"],
+            raw.get("time", limits["time"]),
+            raw.get("wall_clock", limits["wall_clock"]),
+            limits["cpu"],
+            limits["memory_mb"],
+            raw.get("weight", 1.0),
+            raw.get("end_with_programs", True),
+            raw.get("robots", []),
+            raw.get("inputs", []),
+            raw["checks"],
+        )
         if scene is not None:
             self._settings(case, raw)
             self._robots(where, case, programs)
@@ -204,8 +219,9 @@ class _Checker:
         try:
             return load_scene(source)
         except SceneError as error:
-            self.problem(where, f"scene {name!r} does not load:\n    " +
-                         "\n    ".join(str(d) for d in error.diagnostics))
+            self.problem(
+                where, f"scene {name!r} does not load:\n    " + "\n    ".join(str(d) for d in error.diagnostics)
+            )
         except OSError as error:
             self.problem(where, f"cannot read scene {name!r}: {error.strerror}")
         return None
@@ -240,8 +256,10 @@ class _Checker:
             taken.add(number)
             entry["robot"] = number
             if entry["program"] not in programs:
-                self.problem(at + ("program",), f"no program {entry['program']!r} in [programs] "
-                                                f"(programs: {', '.join(programs)})")
+                self.problem(
+                    at + ("program",),
+                    f"no program {entry['program']!r} in [programs] (programs: {', '.join(programs)})",
+                )
 
     def _inputs(self, where: tuple, case: CaseSpec) -> None:
         from eyesim.robot.components.irtv import code_of
@@ -252,8 +270,11 @@ class _Checker:
             entry["robot"] = self._robot(at + ("robot",), case, entry["robot"])
             kinds = [k for k in INPUT_KINDS if k in entry]
             if len(kinds) != 1:
-                self.problem(at, f"an input needs exactly one of {', '.join(INPUT_KINDS)}"
-                                 + (f"; it has {', '.join(kinds)}" if kinds else ""))
+                self.problem(
+                    at,
+                    f"an input needs exactly one of {', '.join(INPUT_KINDS)}"
+                    + (f"; it has {', '.join(kinds)}" if kinds else ""),
+                )
                 continue
             if "interface" in entry and kinds != ["serial"]:
                 self.problem(at + ("interface",), "'interface' goes with a serial input")
@@ -275,14 +296,21 @@ class _Checker:
                 check["robot"] = self._robot(at + ("robot",), case, check["robot"])
             targets = [t for t in TARGETS if t in check]
             if kind in ("final_pose", "reach") and len(targets) != 1:
-                self.problem(at, f"a {kind} check needs exactly one of point, marker, object"
-                                 + (f"; it has {', '.join(targets)}" if targets else ""))
+                self.problem(
+                    at,
+                    f"a {kind} check needs exactly one of point, marker, object"
+                    + (f"; it has {', '.join(targets)}" if targets else ""),
+                )
             if "marker" in check and check["marker"] > len(case.scene.markers):
-                self.problem(at + ("marker",), f"scene {case.scene_path!r} has {len(case.scene.markers)} marker(s), "
-                                               f"no marker {check['marker']}")
+                self.problem(
+                    at + ("marker",),
+                    f"scene {case.scene_path!r} has {len(case.scene.markers)} marker(s), no marker {check['marker']}",
+                )
             if "object" in check and check["object"] > len(case.scene.objects):
-                self.problem(at + ("object",), f"scene {case.scene_path!r} has {len(case.scene.objects)} object(s), "
-                                               f"no object {check['object']}")
+                self.problem(
+                    at + ("object",),
+                    f"scene {case.scene_path!r} has {len(case.scene.objects)} object(s), no object {check['object']}",
+                )
             if kind == "lcd_text" and ("text" in check) == ("regex" in check):
                 self.problem(at, "an lcd_text check needs one of text, regex")
             if kind in ("file", "console") and sum(k in check for k in ("contains", "equals", "regex")) > 1:

@@ -47,6 +47,7 @@ class ResultStore:
             _write_atomically(folder / name, data)
             result["files"][name] = (folder / name).relative_to(self.out).as_posix()
         # The result file last: its presence says the case is complete.
-        _write_atomically(self.path(result["student"], result["case"]),
-                          json.dumps(result, indent=1, sort_keys=True).encode())
+        _write_atomically(
+            self.path(result["student"], result["case"]), json.dumps(result, indent=1, sort_keys=True).encode()
+        )
         return result

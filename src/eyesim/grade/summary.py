@@ -18,14 +18,26 @@ def summarise(spec, results: dict[tuple[str, str], dict], students: list[str], e
     rows = []
     for student in students:
         cases = [results[(student, case.name)] for case in spec.cases if (student, case.name) in results]
-        rows.append({"name": student, "score": round(student_score(cases), 2),
-                     "complete": len(cases) == len(spec.cases),
-                     "passed_checks": sum(c["passed"] for case in cases for c in case["checks"]),
-                     "checks": sum(len(case["checks"]) for case in cases), "cases": cases})
-    return {"title": spec.title, "spec": str(spec.path), "spec_digest": spec.digest, "executor": executor,
-            "cases": [{"name": c.name, "weight": c.weight, "scene": c.scene_path, "time_limit": c.time}
-                      for c in spec.cases],
-            "students": rows}
+        rows.append(
+            {
+                "name": student,
+                "score": round(student_score(cases), 2),
+                "complete": len(cases) == len(spec.cases),
+                "passed_checks": sum(c["passed"] for case in cases for c in case["checks"]),
+                "checks": sum(len(case["checks"]) for case in cases),
+                "cases": cases,
+            }
+        )
+    return {
+        "title": spec.title,
+        "spec": str(spec.path),
+        "spec_digest": spec.digest,
+        "executor": executor,
+        "cases": [
+            {"name": c.name, "weight": c.weight, "scene": c.scene_path, "time_limit": c.time} for c in spec.cases
+        ],
+        "students": rows,
+    }
 
 
 def write_json(summary: dict, path: Path) -> None:
@@ -49,14 +61,23 @@ def write_junit(summary: dict, path: Path) -> None:
             seconds = case.get("timing", {}).get("case_seconds", 0.0) / max(len(case["checks"]), 1)
             for check in case["checks"]:
                 counts["tests"] += 1
-                element = ET.SubElement(suite, "testcase", classname=f"{student['name']}.{case['case']}",
-                                        name=check["name"], time=f"{seconds:.3f}")
+                element = ET.SubElement(
+                    suite,
+                    "testcase",
+                    classname=f"{student['name']}.{case['case']}",
+                    name=check["name"],
+                    time=f"{seconds:.3f}",
+                )
                 if check["passed"]:
                     continue
                 is_error = case["status"] in ("compile_error", "missing_sources", "grader_error")
                 counts["errors" if is_error else "failures"] += 1
-                detail = ET.SubElement(element, "error" if is_error else "failure", message=check["message"][:500],
-                                       type=case["status"] if is_error else check["kind"])
+                detail = ET.SubElement(
+                    element,
+                    "error" if is_error else "failure",
+                    message=check["message"][:500],
+                    type=case["status"] if is_error else check["kind"],
+                )
                 detail.text = _details(case, check)
         for key, value in counts.items():
             suite.set(key, str(value))

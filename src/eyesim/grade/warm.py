@@ -35,8 +35,17 @@ from pathlib import Path
 from eyesim.grade import sandbox
 
 # What case_run imports while running a case, imported once by the runner.
-CASE_MODULES = ("eyesim.grade.case_run", "eyesim.grade.checks", "eyesim.testing", "eyesim.testing.assertions",
-                "eyesim.record", "eyesim.core.stalls", "eyesim.programs.toolchain", "PIL.Image", "PIL.PngImagePlugin")
+CASE_MODULES = (
+    "eyesim.grade.case_run",
+    "eyesim.grade.checks",
+    "eyesim.testing",
+    "eyesim.testing.assertions",
+    "eyesim.record",
+    "eyesim.core.stalls",
+    "eyesim.programs.toolchain",
+    "PIL.Image",
+    "PIL.PngImagePlugin",
+)
 MESSAGE = 4096  # bytes, at most, of a request or an answer
 READY_TIMEOUT = 120  # s for a runner's imports and its first namespaces on a loaded machine
 
@@ -61,8 +70,13 @@ class Runner:
         with theirs:
             inner = [sys.executable, "-m", "eyesim.grade.warm", str(self.spool)]
             with open(self.spool / "runner.log", "wb") as log:  # hidden from the cases with the spool
-                self.process = subprocess.Popen(sandbox.warm_command(inner, self.spool), stdin=theirs,
-                                                stdout=subprocess.DEVNULL, stderr=log, start_new_session=True)
+                self.process = subprocess.Popen(
+                    sandbox.warm_command(inner, self.spool),
+                    stdin=theirs,
+                    stdout=subprocess.DEVNULL,
+                    stderr=log,
+                    start_new_session=True,
+                )
         self._cases = 0
         self._socket.settimeout(READY_TIMEOUT)
         try:
@@ -130,11 +144,16 @@ class CaseProcess:
 
     def communicate(self, data: bytes, timeout: float) -> tuple[bytes, bytes]:
         """Send `data`, read both outputs to their end; subprocess.TimeoutExpired after `timeout` s."""
-        stdin, stdout, stderr = os.fdopen(self._stdin[1], "wb"), os.fdopen(self._stdout[0], "rb"), \
-            os.fdopen(self._stderr[0], "rb")
+        stdin, stdout, stderr = (
+            os.fdopen(self._stdin[1], "wb"),
+            os.fdopen(self._stdout[0], "rb"),
+            os.fdopen(self._stderr[0], "rb"),
+        )
         outputs: dict[str, bytes] = {}
-        readers = [threading.Thread(target=lambda name=name, stream=stream: outputs.update({name: stream.read()}),
-                                    daemon=True) for name, stream in (("stdout", stdout), ("stderr", stderr))]
+        readers = [
+            threading.Thread(target=lambda name=name, stream=stream: outputs.update({name: stream.read()}), daemon=True)
+            for name, stream in (("stdout", stdout), ("stderr", stderr))
+        ]
         for reader in readers:
             reader.start()
         try:
@@ -155,6 +174,7 @@ class CaseProcess:
 
 
 # ---- The runner, in its sandbox -------------------------------------------------------------------
+
 
 def serve(spool: Path) -> None:
     import importlib

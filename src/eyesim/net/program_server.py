@@ -54,8 +54,10 @@ TCP_CLOSE_WAIT = 8  # Linux's TCP state once the peer has closed its end (includ
 
 
 def version_refusal(version: int) -> str:
-    return (f"protocol version {version} is not supported; this simulator speaks version {g.VERSION} "
-            f"(rebuild the program with this EyeSim's `eyesim cc`)")
+    return (
+        f"protocol version {version} is not supported; this simulator speaks version {g.VERSION} "
+        f"(rebuild the program with this EyeSim's `eyesim cc`)"
+    )
 
 
 def peer_closed(sock: socket.socket) -> bool:
@@ -105,8 +107,11 @@ class ProgramConnection:
                 return
             data = memoryview(data)[sent:]
         if self.backlog.size + len(data) > MAX_BACKLOG:
-            log.warning("%s: %d bytes of replies unread; closing the connection (the program stopped "
-                        "reading its replies)", self.session.name, self.backlog.size + len(data))
+            log.warning(
+                "%s: %d bytes of replies unread; closing the connection (the program stopped reading its replies)",
+                self.session.name,
+                self.backlog.size + len(data),
+            )
             self.close()
             return
         if not self.backlog.size:
@@ -157,12 +162,17 @@ class ProgramConnection:
     def _dispatch(self, message) -> None:
         op = g.OPS.get(message.op)
         if op is None:
-            self.send(encode_error(message.op, message.request_id, g.ERR_UNKNOWN_OP,
-                                   f"unknown operation {message.op}"))
+            self.send(encode_error(message.op, message.request_id, g.ERR_UNKNOWN_OP, f"unknown operation {message.op}"))
             return
         if message.kind != g.KIND_REQUEST:
-            self.send(encode_error(message.op, message.request_id, g.ERR_BAD_FRAME,
-                                   f"programs may only send requests (kind {g.KIND_REQUEST}), not kind {message.kind}"))
+            self.send(
+                encode_error(
+                    message.op,
+                    message.request_id,
+                    g.ERR_BAD_FRAME,
+                    f"programs may only send requests (kind {g.KIND_REQUEST}), not kind {message.kind}",
+                )
+            )
             return
         try:
             args = decode_payload(op.request, message.payload, op.lengths)
@@ -196,14 +206,19 @@ class ProgramConnection:
         """Every request the cap holds is a blocking call waiting for its condition (a key, a time),
         none is to be served: the requests behind them could wait for ever."""
         session = self.session
-        return not session.queued and len(session.pending) >= MAX_QUEUED and \
-            not any(isinstance(pending, Deferred) for _, pending in session.pending)
+        return (
+            not session.queued
+            and len(session.pending) >= MAX_QUEUED
+            and not any(isinstance(pending, Deferred) for _, pending in session.pending)
+        )
 
     def _refuse_more_waits(self) -> None:
         """More calls than MAX_QUEUED waiting at once: no program makes them (one call at a time per
         thread), and unread they would hide the program's close, keeping its robot taken."""
-        text = (f"more than {MAX_QUEUED} calls waiting at once (a program makes one call at a time per "
-                f"thread); closing the connection")
+        text = (
+            f"more than {MAX_QUEUED} calls waiting at once (a program makes one call at a time per "
+            f"thread); closing the connection"
+        )
         log.warning("%s: %s", self.session.name, text)
         self.send(encode_error(0, 0, g.ERR_NOT_SUPPORTED, text))
         self.close(flush=True)
@@ -331,23 +346,36 @@ class ProgramSockets:
             self._drop_stalled(now)
             self._end_rest(now)
             if self._refused > 1:
-                log.warning("refused %d more program connection(s): %d are open, the most a run takes",
-                            self._refused - 1, self.max_connections)
+                log.warning(
+                    "refused %d more program connection(s): %d are open, the most a run takes",
+                    self._refused - 1,
+                    self.max_connections,
+                )
             self._refused = 0
 
     def _drop_stalled(self, now: float) -> None:
         for connection in list(self.connections):
             if connection.backlog.size and now - connection.backlog_progress > STALL_TIMEOUT:
-                log.warning("%s: has not read its replies for %.0f s (%d bytes waiting); closing the connection",
-                            connection.session.name, now - connection.backlog_progress, connection.backlog.size)
+                log.warning(
+                    "%s: has not read its replies for %.0f s (%d bytes waiting); closing the connection",
+                    connection.session.name,
+                    now - connection.backlog_progress,
+                    connection.backlog.size,
+                )
                 connection.close()
             elif connection.session.robot is None and now - connection.connected_at > self.handshake_timeout:
-                log.warning("%s: sent no handshake within %g s; closing the connection",
-                            connection.session.peer, self.handshake_timeout)
+                log.warning(
+                    "%s: sent no handshake within %g s; closing the connection",
+                    connection.session.peer,
+                    self.handshake_timeout,
+                )
                 connection.close()
             elif not connection.reading() and peer_closed(connection.sock):
-                log.warning("%s: closed its connection while %d of its calls waited; closing it here too",
-                            connection.session.name, connection.held())
+                log.warning(
+                    "%s: closed its connection while %d of its calls waited; closing it here too",
+                    connection.session.name,
+                    connection.held(),
+                )
                 connection.close()
 
     def _evict_silent(self) -> bool:
@@ -357,8 +385,11 @@ class ProgramSockets:
         if not silent:
             return False
         oldest = min(silent, key=lambda c: c.connected_at)
-        log.warning("%s: closed without a handshake to make room (%d connections open, the most a run takes)",
-                    oldest.session.peer, self.max_connections)
+        log.warning(
+            "%s: closed without a handshake to make room (%d connections open, the most a run takes)",
+            oldest.session.peer,
+            self.max_connections,
+        )
         oldest.close()
         return True
 
@@ -366,8 +397,11 @@ class ProgramSockets:
         """Out of file descriptors: stop watching the listeners for ACCEPT_REST (the kernel keeps
         new connections in its backlog), rather than wake at once, again and again."""
         if not self._resting_until:
-            log.warning("out of file descriptors (%d program connections open); not accepting programs for %g s",
-                        len(self.connections), ACCEPT_REST)
+            log.warning(
+                "out of file descriptors (%d program connections open); not accepting programs for %g s",
+                len(self.connections),
+                ACCEPT_REST,
+            )
             for listener in self._listeners:
                 self.selector.unregister(listener)
         self._resting_until = time.monotonic() + ACCEPT_REST
@@ -397,8 +431,12 @@ class ProgramSockets:
         if len(self.connections) >= self.max_connections and not self._evict_silent():
             self._refused += 1
             if self._refused == 1:  # the first of a burst now, the rest counted once a second
-                log.warning("refused a program connection from %s:%s: %d are open, the most a run takes",
-                            address[0], address[1], self.max_connections)
+                log.warning(
+                    "refused a program connection from %s:%s: %d are open, the most a run takes",
+                    address[0],
+                    address[1],
+                    self.max_connections,
+                )
             sock.close()
             return
         sock.setblocking(False)
@@ -432,8 +470,15 @@ class ProgramServer:
     random one; `require_token=False` lets any program in, on loopback only (NoTokenRefused, a
     ValueError, for any other host). The token is the simulation's `program_token`."""
 
-    def __init__(self, sim, host: str = g.DEFAULT_HOST, port: int = g.DEFAULT_PORT, *,
-                 require_token: bool = True, token: str | None = None):
+    def __init__(
+        self,
+        sim,
+        host: str = g.DEFAULT_HOST,
+        port: int = g.DEFAULT_PORT,
+        *,
+        require_token: bool = True,
+        token: str | None = None,
+    ):
         if not require_token:
             program_token.check_no_token(host)
         self.sim = sim

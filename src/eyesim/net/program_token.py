@@ -49,8 +49,10 @@ def is_loopback(host: str) -> bool:
 def check_no_token(host: str) -> None:
     """Raise NoTokenRefused unless a server without a token may listen on `host`."""
     if not is_loopback(host):
-        raise NoTokenRefused(f"--no-token: {host} can be reached from other machines; programs may only "
-                             f"connect without a token on loopback (127.0.0.1)")
+        raise NoTokenRefused(
+            f"--no-token: {host} can be reached from other machines; programs may only "
+            f"connect without a token on loopback (127.0.0.1)"
+        )
 
 
 def token_file_path(port: int) -> Path:
@@ -97,9 +99,17 @@ class TokenFile:
 
 def refusal(given: str, token_file: Path | None) -> str:
     """The message of a HELLO refused for its token (missing: `given` is empty)."""
-    problem = ("this simulator wants its program token, and this program sent none" if not given else
-               "this program sent a wrong program token (one of an earlier run or another simulator?)")
-    where = (f"a program started by hand, as the same user, reads it from {token_file} while the run lasts"
-             if token_file is not None else "set it for a program started by hand")
-    return (f"{problem}. A program the simulator starts gets it in {ENV_NAME}; {where}; or set {ENV_NAME} "
-            f"to this run's token (`eyesim run --no-token` turns it off, on loopback only; docs/running.md)")
+    problem = (
+        "this simulator wants its program token, and this program sent none"
+        if not given
+        else "this program sent a wrong program token (one of an earlier run or another simulator?)"
+    )
+    where = (
+        f"a program started by hand, as the same user, reads it from {token_file} while the run lasts"
+        if token_file is not None
+        else "set it for a program started by hand"
+    )
+    return (
+        f"{problem}. A program the simulator starts gets it in {ENV_NAME}; {where}; or set {ENV_NAME} "
+        f"to this run's token (`eyesim run --no-token` turns it off, on loopback only; docs/running.md)"
+    )

@@ -188,8 +188,11 @@ class Session:
             return False
         if not self.free_running and now_wall - self.last_request_wall > BUSY_WAIT_GRACE:
             self.free_running = True
-            log.warning("%s makes no RoBIOS call while its other threads wait; simulation time goes on without it "
-                        "(the run is no longer deterministic)", self.name)
+            log.warning(
+                "%s makes no RoBIOS call while its other threads wait; simulation time goes on without it "
+                "(the run is no longer deterministic)",
+                self.name,
+            )
         return self.free_running
 
     @property

@@ -125,7 +125,8 @@ def _read(path: str, size: int, warnings: _Warnings) -> Mesh | None:
             if corners is not None:
                 # a convex polygon as a fan of triangles from its first corner
                 faces.setdefault(material, []).extend(
-                    (corners[0], corners[i], corners[i + 1]) for i in range(1, len(corners) - 1))
+                    (corners[0], corners[i], corners[i + 1]) for i in range(1, len(corners) - 1)
+                )
                 triangles += len(corners) - 2
                 if triangles > MAX_TRIANGLES:
                     warnings.add(number, f"more than {MAX_TRIANGLES} triangles; the model is too detailed")
@@ -176,7 +177,7 @@ def _face(args: list[str], count: int, line: int, warnings: _Warnings) -> list[i
 
 def _library_names(raw: str) -> list[str]:
     """The .mtl files of an `mtllib` line: usually one name, which may contain spaces."""
-    rest = raw.split("#", 1)[0].strip()[len("mtllib"):].strip()
+    rest = raw.split("#", 1)[0].strip()[len("mtllib") :].strip()
     return [rest] if rest else []
 
 
@@ -240,6 +241,7 @@ def _assemble(path: str, vertices, faces, colors, warnings: _Warnings) -> Mesh |
 
 # Placing a model in a body's frame (x forward, y left, z up).
 
+
 def _euler_unity(rotation_deg) -> np.ndarray:
     """EyeSim VR's rotation (deg about X, Y, Z of its model space, applied Z, then X, then Y)."""
     rx, ry, rz = (math.radians(v) for v in rotation_deg)
@@ -256,8 +258,9 @@ _OBJ_TO_MODEL = np.diag([-1.0, 1.0, 1.0])
 _MODEL_TO_BODY = np.array([[0.0, 0.0, 1.0], [-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
 
 
-def placed(mesh: Mesh, scale: float = 1.0, offset_mm=(0.0, 0.0, 0.0), rotation_deg=(0.0, 0.0, 0.0),
-           shift=(0.0, 0.0, 0.0)) -> list[MeshPart]:
+def placed(
+    mesh: Mesh, scale: float = 1.0, offset_mm=(0.0, 0.0, 0.0), rotation_deg=(0.0, 0.0, 0.0), shift=(0.0, 0.0, 0.0)
+) -> list[MeshPart]:
     """The mesh's parts with vertices in the body frame (m): scaled, rotated and offset in model
     space as a .robi `model` line says, turned into the body frame, then moved by `shift` (m)."""
     rotation = _MODEL_TO_BODY @ _euler_unity(rotation_deg) @ _OBJ_TO_MODEL

@@ -32,8 +32,9 @@ class SceneObject:
 
     world: PhysicsWorld  # the world it is in, from bind() once the model is compiled
 
-    def __init__(self, object_id: int, object_type: ObjectType, placement: ObjectPlacement, body_name: str,
-                 centre_height: float):
+    def __init__(
+        self, object_id: int, object_type: ObjectType, placement: ObjectPlacement, body_name: str, centre_height: float
+    ):
         self.id = object_id
         self.type = object_type
         self.placement = placement
@@ -79,19 +80,27 @@ def add_object(spec: mujoco.MjSpec, object_id: int, object_type: ObjectType, pla
     yaw = math.radians(pose.phi)
     cos, sin = math.cos(yaw), math.sin(yaw)
     body = spec.worldbody.add_body(
-        name=name, pos=[mm(pose.x) + cos * centre[0] - sin * centre[1], mm(pose.y) + sin * centre[0] + cos * centre[1],
-                        centre[2]], quat=yaw_quat(yaw))
+        name=name,
+        pos=[mm(pose.x) + cos * centre[0] - sin * centre[1], mm(pose.y) + sin * centre[0] + cos * centre[1], centre[2]],
+        quat=yaw_quat(yaw),
+    )
     if not object_type.fixed:
         body.add_freejoint(name=f"{name}/free")
     friction = placement.friction if placement.friction is not None else DEFAULT_FRICTION
     for index, (collider, volume) in enumerate(zip(colliders, volumes)):
         sphere = collider.kind == "sphere"
-        geom = add_collider(body, f"{name}/{index}", collider, rgba=rgba(object_type.color),
-                            mass=object_type.mass * volume / sum(volumes),
-                            # priority: the object's own friction decides its contacts (MuJoCo otherwise
-                            # takes the larger one, and the floor's grip would make crates too heavy to push)
-                            priority=1, friction=[friction, 0.005, ROLLING_FRICTION if sphere else 0.0001],
-                            condim=6 if sphere else 3)
+        geom = add_collider(
+            body,
+            f"{name}/{index}",
+            collider,
+            rgba=rgba(object_type.color),
+            mass=object_type.mass * volume / sum(volumes),
+            # priority: the object's own friction decides its contacts (MuJoCo otherwise
+            # takes the larger one, and the floor's grip would make crates too heavy to push)
+            priority=1,
+            friction=[friction, 0.005, ROLLING_FRICTION if sphere else 0.0001],
+            condim=6 if sphere else 3,
+        )
         geom.pos = [geom.pos[i] - centre[i] for i in range(3)]
     mesh = model_mesh(object_type.model)
     if mesh is not None:
@@ -148,5 +157,9 @@ def shape_of(model: mujoco.MjModel, geom: int) -> dict | None:
         shape, dims = "capsule", [size[0], 2 * size[1] + 2 * size[0]]
     else:
         return None
-    return {"shape": shape, "size": [float(v) for v in dims], "pos": [float(v) for v in model.geom_pos[geom]],
-            "quat": [float(v) for v in model.geom_quat[geom]]}
+    return {
+        "shape": shape,
+        "size": [float(v) for v in dims],
+        "pos": [float(v) for v in model.geom_pos[geom]],
+        "quat": [float(v) for v in model.geom_quat[geom]],
+    }

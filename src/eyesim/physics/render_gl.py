@@ -56,8 +56,12 @@ def _works(backend: str) -> bool:
     if backend in ("egl", "osmesa"):
         env["PYOPENGL_PLATFORM"] = backend
     try:
-        result = subprocess.run([sys.executable, "-m", "eyesim.physics.render_gl", backend], env=env,
-                                capture_output=True, timeout=PROBE_TIMEOUT)
+        result = subprocess.run(
+            [sys.executable, "-m", "eyesim.physics.render_gl", backend],
+            env=env,
+            capture_output=True,
+            timeout=PROBE_TIMEOUT,
+        )
     except (OSError, subprocess.TimeoutExpired):
         return False
     return result.returncode == 0
@@ -94,8 +98,12 @@ class _Target:
         mujoco.mjr_setBuffer(mujoco.mjtFramebuffer.mjFB_OFFSCREEN, self.context)
         self.size = (model.vis.global_.offwidth, model.vis.global_.offheight)
         self.scene = mujoco.MjvScene(model, maxgeom=max(1000, 4 * model.ngeom))
-        for flag in (mujoco.mjtRndFlag.mjRND_SHADOW, mujoco.mjtRndFlag.mjRND_REFLECTION,
-                     mujoco.mjtRndFlag.mjRND_SKYBOX, mujoco.mjtRndFlag.mjRND_FOG):
+        for flag in (
+            mujoco.mjtRndFlag.mjRND_SHADOW,
+            mujoco.mjtRndFlag.mjRND_REFLECTION,
+            mujoco.mjtRndFlag.mjRND_SKYBOX,
+            mujoco.mjtRndFlag.mjRND_FOG,
+        ):
             self.scene.flags[flag] = 0
         self.option = mujoco.MjvOption()
         self.camera = mujoco.MjvCamera()
@@ -164,14 +172,12 @@ class GlRenderer:
             target = self._targets[id(world)] = _Target(world)
         return target
 
-    def _perspective(self, model, data, target: _Target, view: View, width: int, height: int,
-                     fov: float) -> np.ndarray:
+    def _perspective(self, model, data, target: _Target, view: View, width: int, height: int, fov: float) -> np.ndarray:
         """A pinhole image of `fov` degrees across its width."""
         target.ensure_size(width, height)
         scene = target.scene
-        mujoco.mjv_updateScene(model, data, target.option, None, target.camera,
-                               mujoco.mjtCatBit.mjCAT_ALL, scene)
-        for geom in scene.geoms[:scene.ngeom]:
+        mujoco.mjv_updateScene(model, data, target.option, None, target.camera, mujoco.mjtCatBit.mjCAT_ALL, scene)
+        for geom in scene.geoms[: scene.ngeom]:
             if geom.objtype == mujoco.mjtObj.mjOBJ_GEOM and model.geom_bodyid[geom.objid] == view.own_body:
                 geom.pos[2] = -2 * render.FAR  # out of sight: the camera looks past its own chassis
         top = render.NEAR * np.tan(np.radians(fov) / 2) * height / width
@@ -230,8 +236,7 @@ def _probe(backend: str) -> int:
     context = mujoco.MjrContext(model, mujoco.mjtFontScale.mjFONTSCALE_100)
     mujoco.mjr_setBuffer(mujoco.mjtFramebuffer.mjFB_OFFSCREEN, context)
     scene = mujoco.MjvScene(model, maxgeom=100)
-    mujoco.mjv_updateScene(model, data, mujoco.MjvOption(), None, mujoco.MjvCamera(), mujoco.mjtCatBit.mjCAT_ALL,
-                           scene)
+    mujoco.mjv_updateScene(model, data, mujoco.MjvOption(), None, mujoco.MjvCamera(), mujoco.mjtCatBit.mjCAT_ALL, scene)
     mujoco.mjr_render(mujoco.MjrRect(0, 0, 8, 8), scene, context)
     context.free()
     gl.free()

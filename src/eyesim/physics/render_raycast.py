@@ -22,8 +22,9 @@ DEFAULT_GEOM_RGBA = (0.5, 0.5, 0.5, 1.0)  # MuJoCo's: a geom with this colour sh
 HIDDEN_GROUPS = 3  # geom groups from here on are hidden in MuJoCo's default view, so in OpenGL's too
 # What this renderer draws: OpenGL's groups, but a body's colliders instead of its .obj model, which
 # keeps every geom an analytic shape (physics/visual_mesh.py)
-SHOWN_GROUPS = np.array([(g < HIDDEN_GROUPS and g != MESH_GROUP) or g == COVERED_GROUP for g in range(6)],
-                        dtype=np.uint8)
+SHOWN_GROUPS = np.array(
+    [(g < HIDDEN_GROUPS and g != MESH_GROUP) or g == COVERED_GROUP for g in range(6)], dtype=np.uint8
+)
 EPSILON = 1e-9
 G = mujoco.mjtGeom
 CORNERS = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=np.float64)
@@ -41,8 +42,9 @@ class RayCastRenderer:
         basis = np.stack([view.right, np.asarray(view.up, dtype=np.float64), forward])
         # The rays in the world, one array per axis (camera frame: x right, y up, z forward); an array
         # each, though sum() is typed as 0 for no terms.
-        columns = [cast(np.ndarray, sum(_ray_axis(view, k) * float(basis[k, axis]) for k in range(3)))
-                   for axis in range(3)]
+        columns = [
+            cast(np.ndarray, sum(_ray_axis(view, k) * float(basis[k, axis]) for k in range(3))) for axis in range(3)
+        ]
         origin = np.asarray(view.position, dtype=np.float64)
 
         geoms = _visible_geoms(model, view.own_body)
@@ -100,7 +102,11 @@ def _cast(model, data, geoms, origin, columns, view, basis):
 
 def _visible_geoms(model, own_body: int) -> np.ndarray:
     """Geoms a camera shows: not transparent, in a shown group, not the camera's own chassis."""
-    visible = (model.geom_rgba[:, 3] > 0) & np.isin(model.geom_group, np.flatnonzero(SHOWN_GROUPS)) & (model.geom_bodyid != own_body)
+    visible = (
+        (model.geom_rgba[:, 3] > 0)
+        & np.isin(model.geom_group, np.flatnonzero(SHOWN_GROUPS))
+        & (model.geom_bodyid != own_body)
+    )
     return np.flatnonzero(visible)
 
 
@@ -116,8 +122,9 @@ def _half_extent(model, geom: int) -> np.ndarray:
     return size.copy()  # box, ellipsoid
 
 
-def _candidates(model, data, geom: int, origin: np.ndarray, view: render.View, columns: list[np.ndarray],
-                basis: np.ndarray):
+def _candidates(
+    model, data, geom: int, origin: np.ndarray, view: render.View, columns: list[np.ndarray], basis: np.ndarray
+):
     """Indices of the pixels whose rays may meet the geom; None for every pixel. `basis`: the
     camera's right, up and forward vectors as rows."""
     width, height = view.width, view.height
@@ -166,6 +173,7 @@ def _local_rays(data, geom: int, origin: np.ndarray, columns: list[np.ndarray], 
 
 # Ray-shape distances, in the shape's frame, with the directions as one array per axis: how far
 # along each ray it enters the shape, inf where it misses or starts inside (seen from outside only).
+
 
 def _plane_distance(o, d, size):
     """MuJoCo's plane: z = 0 seen from above, within +-size[0] x +-size[1] unless those are 0."""
@@ -239,12 +247,14 @@ def _cylinder_distance(o, d, size):
 
 def _capsule_distance(o, d, size):
     radius, half_length = size[0], size[1]
-    return np.minimum(_cylinder_side_distance(o, d, radius, half_length),
-                      np.minimum(_sphere_distance(o, d, radius, half_length),
-                                 _sphere_distance(o, d, radius, -half_length)))
+    return np.minimum(
+        _cylinder_side_distance(o, d, radius, half_length),
+        np.minimum(_sphere_distance(o, d, radius, half_length), _sphere_distance(o, d, radius, -half_length)),
+    )
 
 
 # Outward normals of the shapes at points on them (one array per axis, in the shape's frame).
+
 
 def _plane_normal(p, size):
     return np.zeros_like(p[0]), np.zeros_like(p[0]), np.ones_like(p[0])
@@ -271,8 +281,11 @@ def _cylinder_normal(p, size):
     radius, half_length = size[0], size[1]
     on_cap = np.abs(np.abs(p[2]) - half_length) < 1e-7 * max(1.0, half_length) + 1e-9
     on_cap &= p[0] ** 2 + p[1] ** 2 < radius * radius * (1 - 1e-6)
-    return (np.where(on_cap, 0.0, p[0] / radius), np.where(on_cap, 0.0, p[1] / radius),
-            np.where(on_cap, np.sign(p[2]), 0.0))
+    return (
+        np.where(on_cap, 0.0, p[0] / radius),
+        np.where(on_cap, 0.0, p[1] / radius),
+        np.where(on_cap, np.sign(p[2]), 0.0),
+    )
 
 
 def _capsule_normal(p, size):
@@ -282,12 +295,22 @@ def _capsule_normal(p, size):
 
 
 # keyed by the geom type's number, as model.geom_type holds it
-SHAPE_DISTANCE = {int(G.mjGEOM_PLANE): _plane_distance, int(G.mjGEOM_SPHERE): lambda o, d, s: _sphere_distance(o, d, s[0]),
-                  int(G.mjGEOM_ELLIPSOID): _ellipsoid_distance, int(G.mjGEOM_BOX): _box_distance,
-                  int(G.mjGEOM_CYLINDER): _cylinder_distance, int(G.mjGEOM_CAPSULE): _capsule_distance}
-SHAPE_NORMAL = {int(G.mjGEOM_PLANE): _plane_normal, int(G.mjGEOM_SPHERE): _sphere_normal,
-                int(G.mjGEOM_ELLIPSOID): _ellipsoid_normal, int(G.mjGEOM_BOX): _box_normal,
-                int(G.mjGEOM_CYLINDER): _cylinder_normal, int(G.mjGEOM_CAPSULE): _capsule_normal}
+SHAPE_DISTANCE = {
+    int(G.mjGEOM_PLANE): _plane_distance,
+    int(G.mjGEOM_SPHERE): lambda o, d, s: _sphere_distance(o, d, s[0]),
+    int(G.mjGEOM_ELLIPSOID): _ellipsoid_distance,
+    int(G.mjGEOM_BOX): _box_distance,
+    int(G.mjGEOM_CYLINDER): _cylinder_distance,
+    int(G.mjGEOM_CAPSULE): _capsule_distance,
+}
+SHAPE_NORMAL = {
+    int(G.mjGEOM_PLANE): _plane_normal,
+    int(G.mjGEOM_SPHERE): _sphere_normal,
+    int(G.mjGEOM_ELLIPSOID): _ellipsoid_normal,
+    int(G.mjGEOM_BOX): _box_normal,
+    int(G.mjGEOM_CYLINDER): _cylinder_normal,
+    int(G.mjGEOM_CAPSULE): _capsule_normal,
+}
 SHAPES = tuple(SHAPE_DISTANCE)
 
 
@@ -297,8 +320,20 @@ def _mujoco_cast(model, data, origin, directions, own_body):
     geoms = np.empty(n, dtype=np.int32)
     distances = np.empty(n)
     normals = np.empty((n, 3))
-    mujoco.mj_multiRay(model, data, origin, np.ascontiguousarray(directions).reshape(-1), SHOWN_GROUPS, 1, own_body,
-                       geoms, distances, normals.reshape(-1), n, render.FAR)
+    mujoco.mj_multiRay(
+        model,
+        data,
+        origin,
+        np.ascontiguousarray(directions).reshape(-1),
+        SHOWN_GROUPS,
+        1,
+        own_body,
+        geoms,
+        distances,
+        normals.reshape(-1),
+        n,
+        render.FAR,
+    )
     return geoms, distances, normals
 
 
@@ -326,7 +361,7 @@ def _apply_textures(model, data, geoms: np.ndarray, points: np.ndarray, colours:
             continue
         width, height, channels = model.tex_width[texture], model.tex_height[texture], model.tex_nchannel[texture]
         start = model.tex_adr[texture]
-        pixels = model.tex_data[start:start + width * height * channels].reshape(height, width, channels)
+        pixels = model.tex_data[start : start + width * height * channels].reshape(height, width, channels)
         mine = np.flatnonzero(geoms == geom)
         local = render.times(points[mine] - data.geom_xpos[geom], data.geom_xmat[geom].reshape(3, 3))
         size_x, size_y = model.geom_size[geom, :2]

@@ -26,8 +26,16 @@ RAY_GROUPS = np.array([1, 1, 0, 1, 1, 1], dtype=np.uint8)  # mj_ray's geomgroup:
 MIN_AREA = 1e-10  # m²: MuJoCo refuses meshes with (almost) no surface
 
 
-def add_model(spec: mujoco.MjSpec, body: mujoco.MjsBody, name: str, mesh: Mesh, scale: float = 1.0,
-              offset_mm=(0.0, 0.0, 0.0), rotation_deg=(0.0, 0.0, 0.0), shift=(0.0, 0.0, 0.0)) -> int:
+def add_model(
+    spec: mujoco.MjSpec,
+    body: mujoco.MjsBody,
+    name: str,
+    mesh: Mesh,
+    scale: float = 1.0,
+    offset_mm=(0.0, 0.0, 0.0),
+    rotation_deg=(0.0, 0.0, 0.0),
+    shift=(0.0, 0.0, 0.0),
+) -> int:
     """Adds the model's geoms to `body` (placement as in meshes.placed) and moves the body's
     existing geoms into COVERED_GROUP. Returns how many mesh geoms were added (0: the body keeps
     its colliders as its look)."""
@@ -38,11 +46,20 @@ def add_model(spec: mujoco.MjSpec, body: mujoco.MjsBody, name: str, mesh: Mesh, 
             log.warning("%s: material %r has too few or too small faces to draw; left out", mesh.path, part.material)
             continue
         mesh_name = f"{name}/mesh{index}"
-        asset = spec.add_mesh(name=mesh_name, uservert=part.vertices.ravel().tolist(),
-                              userface=part.triangles.ravel().tolist())
+        asset = spec.add_mesh(
+            name=mesh_name, uservert=part.vertices.ravel().tolist(), userface=part.triangles.ravel().tolist()
+        )
         asset.inertia = mujoco.mjtMeshInertia.mjMESH_INERTIA_SHELL  # open (sheet) models are fine
-        body.add_geom(name=mesh_name, type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh_name, contype=0,
-                      conaffinity=0, group=MESH_GROUP, mass=0.0, rgba=[*part.color, 1.0])
+        body.add_geom(
+            name=mesh_name,
+            type=mujoco.mjtGeom.mjGEOM_MESH,
+            meshname=mesh_name,
+            contype=0,
+            conaffinity=0,
+            group=MESH_GROUP,
+            mass=0.0,
+            rgba=[*part.color, 1.0],
+        )
         added += 1
     if added:
         for geom in covered:

@@ -26,9 +26,10 @@ class Water:
 
 def water_of(scene: Scene) -> Water | None:
     # (mypy cannot see RobotType's fields: scene/parts assembles it with make_dataclass)
-    swimming = any(drive_of(scene.robot_types[p.type_name]).swims
-                   or scene.robot_types[p.type_name].buoyancy is not None  # type: ignore[attr-defined]
-                   for p in scene.robots)
+    swimming = any(
+        drive_of(scene.robot_types[p.type_name]).swims or scene.robot_types[p.type_name].buoyancy is not None  # type: ignore[attr-defined]
+        for p in scene.robots
+    )
     if not swimming:
         return None
     walls = scene.world.walls
@@ -50,8 +51,17 @@ class WaterForces:
     mass would leave their thrust a lever that pitches it nose down (13 degrees for a Mako-like
     hull) and drives it into the pool floor."""
 
-    def __init__(self, body: int, volume: float, buoyancy_centre, hull_centre, height: float,
-                 drag=(0.0, 0.0, 0.0), rotational_drag: float = 0.0, pressure_centre=None):
+    def __init__(
+        self,
+        body: int,
+        volume: float,
+        buoyancy_centre,
+        hull_centre,
+        height: float,
+        drag=(0.0, 0.0, 0.0),
+        rotational_drag: float = 0.0,
+        pressure_centre=None,
+    ):
         self.body = body
         self.volume = volume  # m^3
         self.buoyancy_centre = buoyancy_centre
@@ -77,9 +87,11 @@ class WaterForces:
     def _world_point(self, local) -> tuple[float, float, float]:
         pos, rot = self.data.xpos[self.body], self.data.xmat[self.body]
         x, y, z = local
-        return (pos[0] + rot[0] * x + rot[1] * y + rot[2] * z,
-                pos[1] + rot[3] * x + rot[4] * y + rot[5] * z,
-                pos[2] + rot[6] * x + rot[7] * y + rot[8] * z)
+        return (
+            pos[0] + rot[0] * x + rot[1] * y + rot[2] * z,
+            pos[1] + rot[3] * x + rot[4] * y + rot[5] * z,
+            pos[2] + rot[6] * x + rot[7] * y + rot[8] * z,
+        )
 
     def apply(self) -> None:
         forces = self.data.xfrc_applied[self.body]
@@ -96,12 +108,16 @@ class WaterForces:
         rot = self.data.xmat[self.body]
         qvel = self.data.qvel
         vx, vy, vz = qvel[self.dof], qvel[self.dof + 1], qvel[self.dof + 2]
-        local = (rot[0] * vx + rot[3] * vy + rot[6] * vz,
-                 rot[1] * vx + rot[4] * vy + rot[7] * vz,
-                 rot[2] * vx + rot[5] * vy + rot[8] * vz)
+        local = (
+            rot[0] * vx + rot[3] * vy + rot[6] * vz,
+            rot[1] * vx + rot[4] * vy + rot[7] * vz,
+            rot[2] * vx + rot[5] * vy + rot[8] * vz,
+        )
         drag_local = [-fraction * d * v for d, v in zip(self.drag, local)]
-        drag = [rot[3 * i] * drag_local[0] + rot[3 * i + 1] * drag_local[1] + rot[3 * i + 2] * drag_local[2]
-                for i in range(3)]
+        drag = [
+            rot[3 * i] * drag_local[0] + rot[3 * i + 1] * drag_local[1] + rot[3 * i + 2] * drag_local[2]
+            for i in range(3)
+        ]
         spin = [qvel[self.dof + 3 + i] for i in range(3)]
         spin_world = [rot[3 * i] * spin[0] + rot[3 * i + 1] * spin[1] + rot[3 * i + 2] * spin[2] for i in range(3)]
         # where the drag acts: the middle of the submerged part of the hull
@@ -112,10 +128,12 @@ class WaterForces:
         forces[2] = drag[2] + lift
         # torques of the lift at the centre of buoyancy (arm x (0, 0, lift)) and of the drag at the
         # centre of pressure (lever x drag), plus rotational drag
-        forces[3] = arm[1] * lift + lever[1] * drag[2] - lever[2] * drag[1] \
-            - fraction * self.rotational_drag * spin_world[0]
-        forces[4] = -arm[0] * lift + lever[2] * drag[0] - lever[0] * drag[2] \
-            - fraction * self.rotational_drag * spin_world[1]
+        forces[3] = (
+            arm[1] * lift + lever[1] * drag[2] - lever[2] * drag[1] - fraction * self.rotational_drag * spin_world[0]
+        )
+        forces[4] = (
+            -arm[0] * lift + lever[2] * drag[0] - lever[0] * drag[2] - fraction * self.rotational_drag * spin_world[1]
+        )
         forces[5] = lever[0] * drag[1] - lever[1] * drag[0] - fraction * self.rotational_drag * spin_world[2]
 
 

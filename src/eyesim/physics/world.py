@@ -64,11 +64,14 @@ def add_floor(spec: mujoco.MjSpec, floor: Floor, texture: str | None = None) -> 
     """The floor plane; with `texture` (an image file) stretched once over it, its top edge north."""
     material = _floor_material(spec, texture) if texture else ""
     spec.worldbody.add_geom(
-        name="floor", type=mujoco.mjtGeom.mjGEOM_PLANE,
+        name="floor",
+        type=mujoco.mjtGeom.mjGEOM_PLANE,
         size=[floor.width / 2, floor.height / 2, 0.05],
         pos=[floor.width / 2, floor.height / 2, 0.0],
         rgba=[1.0, 1.0, 1.0, 1.0] if material else [0.82, 0.82, 0.78, 1.0],
-        friction=[FLOOR_FRICTION, 0.005, 0.0001], material=material)
+        friction=[FLOOR_FRICTION, 0.005, 0.0001],
+        material=material,
+    )
 
 
 def _floor_material(spec: mujoco.MjSpec, path: str) -> str:
@@ -84,8 +87,9 @@ def _floor_material(spec: mujoco.MjSpec, path: str) -> str:
     height, width = pixels.shape[:2]
     # MuJoCo maps the first texture row to the plane's +y edge, so the image's top row lies north
     # as it is (tests/sensors/test_camera.py looks at it through a camera).
-    texture = spec.add_texture(name="floor", type=mujoco.mjtTexture.mjTEXTURE_2D, width=width, height=height,
-                               nchannel=3)
+    texture = spec.add_texture(
+        name="floor", type=mujoco.mjtTexture.mjTEXTURE_2D, width=width, height=height, nchannel=3
+    )
     texture.data = np.ascontiguousarray(pixels).tobytes()
     material = spec.add_material(name="floor", texuniform=False, texrepeat=[1, 1])
     material.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = "floor"
@@ -99,20 +103,28 @@ def add_wall(spec: mujoco.MjSpec, index: int, wall: Wall) -> None:
     height = max(mm(wall.height), 0.002)
     # A wall's length includes half its thickness at both ends so corners close.
     spec.worldbody.add_geom(
-        name=f"wall{index}", type=mujoco.mjtGeom.mjGEOM_BOX,
+        name=f"wall{index}",
+        type=mujoco.mjtGeom.mjGEOM_BOX,
         size=[(length + thickness) / 2, thickness / 2, height / 2],
         pos=[(x1 + x2) / 2, (y1 + y2) / 2, height / 2],
         quat=yaw_quat(math.atan2(y2 - y1, x2 - x1)),
-        rgba=rgba(wall.color), friction=[0.6, 0.005, 0.0001])
+        rgba=rgba(wall.color),
+        friction=[0.6, 0.005, 0.0001],
+    )
 
 
 def add_marker(spec: mujoco.MjSpec, index: int, marker: Marker) -> None:
     """A coloured disc on the floor; it has no collision bits (nothing bumps into a marker)."""
     r, g, b, a = marker.color
     spec.worldbody.add_geom(
-        name=f"marker{index}", type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[MARKER_RADIUS, MARKER_THICKNESS / 2, 0],
-        pos=[mm(marker.x), mm(marker.y), MARKER_THICKNESS / 2], rgba=[r / 255, g / 255, b / 255, a / 255],
-        contype=0, conaffinity=0)
+        name=f"marker{index}",
+        type=mujoco.mjtGeom.mjGEOM_CYLINDER,
+        size=[MARKER_RADIUS, MARKER_THICKNESS / 2, 0],
+        pos=[mm(marker.x), mm(marker.y), MARKER_THICKNESS / 2],
+        rgba=[r / 255, g / 255, b / 255, a / 255],
+        contype=0,
+        conaffinity=0,
+    )
 
 
 def collider_volume(collider: Collider) -> float:
@@ -124,13 +136,15 @@ def collider_volume(collider: Collider) -> float:
         return 4 / 3 * math.pi * size[0] ** 3
     radius, length = size[0], size[1]
     if collider.kind == "capsule":  # length includes both caps
-        return math.pi * radius ** 2 * max(length - 2 * radius, 0.0) + 4 / 3 * math.pi * radius ** 3
-    return math.pi * radius ** 2 * length
+        return math.pi * radius**2 * max(length - 2 * radius, 0.0) + 4 / 3 * math.pi * radius**3
+    return math.pi * radius**2 * length
 
 
-AXIS_QUATS = {"z": [1.0, 0.0, 0.0, 0.0],
-              "x": [math.cos(math.pi / 4), 0.0, math.sin(math.pi / 4), 0.0],  # turns +z onto +x
-              "y": [math.cos(math.pi / 4), -math.sin(math.pi / 4), 0.0, 0.0]}  # turns +z onto +y
+AXIS_QUATS = {
+    "z": [1.0, 0.0, 0.0, 0.0],
+    "x": [math.cos(math.pi / 4), 0.0, math.sin(math.pi / 4), 0.0],  # turns +z onto +x
+    "y": [math.cos(math.pi / 4), -math.sin(math.pi / 4), 0.0, 0.0],
+}  # turns +z onto +y
 
 
 def add_collider(body: mujoco.MjsBody, name: str, collider: Collider, **attributes) -> mujoco.MjsGeom:
@@ -144,8 +158,14 @@ def add_collider(body: mujoco.MjsBody, name: str, collider: Collider, **attribut
         geom_type, geom_size = mujoco.mjtGeom.mjGEOM_CAPSULE, [size[0], max(size[1] / 2 - size[0], 1e-4), 0.0]
     else:
         geom_type, geom_size = mujoco.mjtGeom.mjGEOM_CYLINDER, [size[0], size[1] / 2, 0.0]
-    return body.add_geom(name=name, type=geom_type, size=geom_size, pos=[mm(v) for v in collider.center],
-                         quat=AXIS_QUATS[collider.axis], **attributes)
+    return body.add_geom(
+        name=name,
+        type=geom_type,
+        size=geom_size,
+        pos=[mm(v) for v in collider.center],
+        quat=AXIS_QUATS[collider.axis],
+        **attributes,
+    )
 
 
 class PhysicsWorld:
@@ -202,14 +222,22 @@ class PhysicsWorld:
         joint = self.model.body_jntadr[body]
         qadr = self.model.jnt_qposadr[joint]
         vadr = self.model.jnt_dofadr[joint]
-        self.data.qpos[qadr:qadr + 3] = (x, y, z)
-        self.data.qpos[qadr + 3:qadr + 7] = yaw_quat(yaw)
-        self.data.qvel[vadr:vadr + 6] = 0.0
+        self.data.qpos[qadr : qadr + 3] = (x, y, z)
+        self.data.qpos[qadr + 3 : qadr + 7] = yaw_quat(yaw)
+        self.data.qvel[vadr : vadr + 6] = 0.0
         self.forward()
 
     def ray(self, origin, direction, exclude_body: int) -> float | None:
         """Distance (m) along a unit direction to the first geom hit, ignoring one body; None = no hit."""
         geomid = np.zeros(1, dtype=np.int32)
-        dist = mujoco.mj_ray(self.model, self.data, np.asarray(origin, dtype=np.float64),
-                             np.asarray(direction, dtype=np.float64), RAY_GROUPS, 1, exclude_body, geomid)
+        dist = mujoco.mj_ray(
+            self.model,
+            self.data,
+            np.asarray(origin, dtype=np.float64),
+            np.asarray(direction, dtype=np.float64),
+            RAY_GROUPS,
+            1,
+            exclude_body,
+            geomid,
+        )
         return None if dist < 0 else float(dist)

@@ -135,18 +135,24 @@ class Launcher:
         self.sim.call(lambda sim: sim.expected_programs.add(robot_id_))
         try:
             process = run.process = platform.start(
-                [*command_for(run.path), *options.args], own_group=options.own_group, limits=options.limits,
-                cwd=options.cwd or (run.source or run.path).parent, env=env,
+                [*command_for(run.path), *options.args],
+                own_group=options.own_group,
+                limits=options.limits,
+                cwd=options.cwd or (run.source or run.path).parent,
+                env=env,
                 stdin=subprocess.DEVNULL if options.stdin is None else subprocess.PIPE,
-                stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+                stdout=subprocess.PIPE,
+                stderr=subprocess.PIPE,
+            )
         except OSError as error:
             run.error = f"cannot start {run.path}: {error.strerror}"
             self._print(run, "stderr", f"eyesim: {run.error}\n")
             self.sim.call(lambda sim: sim.program_gone(robot_id_))
             return run
         self.sim.call(lambda sim: sim.events.program(robot_id_, "started", run.name, None))
-        output = ProgramOutput({"stdout": process.stdout, "stderr": process.stderr},
-                               lambda stream, text: self._show(run, stream, text))
+        output = ProgramOutput(
+            {"stdout": process.stdout, "stderr": process.stderr}, lambda stream, text: self._show(run, stream, text)
+        )
         self._outputs[id(run)] = output
         pid = process.pid
 
@@ -241,7 +247,7 @@ class Launcher:
             if kept + len(text) <= OUTPUT_LIMIT:
                 run.output[stream].append(text)
             else:
-                run.output[stream].append(text[:max(0, OUTPUT_LIMIT - kept)])
+                run.output[stream].append(text[: max(0, OUTPUT_LIMIT - kept)])
                 run.truncated = True
         if self.echo:
             with self._lock:
@@ -312,4 +318,3 @@ class Launcher:
         for run in self.runs:  # the loop has ended: what they printed last is taken in here
             if run.process is not None:
                 self._take_output(run, run.process)
-

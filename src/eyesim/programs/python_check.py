@@ -25,16 +25,28 @@ def check(path: Path) -> dict:
         except py_compile.PyCompileError as error:
             diagnostics.append(_error(error.exc_value))
     for warning in said:
-        diagnostics.append({"line": warning.lineno or 0, "column": None, "kind": "warning",
-                            "message": f"{warning.category.__name__}: {warning.message}"})
-    return {"ok": not any(d["kind"] == "error" for d in diagnostics),
-            "diagnostics": sorted(diagnostics, key=lambda d: d["line"])}
+        diagnostics.append(
+            {
+                "line": warning.lineno or 0,
+                "column": None,
+                "kind": "warning",
+                "message": f"{warning.category.__name__}: {warning.message}",
+            }
+        )
+    return {
+        "ok": not any(d["kind"] == "error" for d in diagnostics),
+        "diagnostics": sorted(diagnostics, key=lambda d: d["line"]),
+    }
 
 
 def _error(error: BaseException) -> dict:
     if isinstance(error, SyntaxError):  # IndentationError and TabError too
-        return {"line": error.lineno or 0, "column": error.offset or None, "kind": "error",
-                "message": f"{type(error).__name__}: {error.msg}"}
+        return {
+            "line": error.lineno or 0,
+            "column": error.offset or None,
+            "kind": "error",
+            "message": f"{type(error).__name__}: {error.msg}",
+        }
     return {"line": 0, "column": None, "kind": "error", "message": f"{type(error).__name__}: {error}"}  # NUL bytes
 
 

@@ -27,8 +27,11 @@ def locate(path: Path) -> Path:
     extension (`drive` -> `drive.c`); `path` again when there is none (the caller reports it)."""
     if path.suffix or _is_file(path):
         return path
-    found = [path.with_name(path.name + suffix) for suffix in paths.PROGRAM_SOURCE_SUFFIXES
-             if _is_file(path.with_name(path.name + suffix))]
+    found = [
+        path.with_name(path.name + suffix)
+        for suffix in paths.PROGRAM_SOURCE_SUFFIXES
+        if _is_file(path.with_name(path.name + suffix))
+    ]
     return found[0] if len(found) == 1 else path
 
 
@@ -58,8 +61,9 @@ def executable_for(source: Path) -> tuple[Path, str]:
         building = output.with_name(f".{output.name}.{os.getpid()}")
         args = [toolchain.source_argument(source.name), "-o", str(building)]
         command = toolchain.compiler_command(language, args)
-        result = subprocess.run(command, cwd=source.parent, capture_output=True, text=True, errors="replace",
-                                timeout=COMPILE_SECONDS)
+        result = subprocess.run(
+            command, cwd=source.parent, capture_output=True, text=True, errors="replace", timeout=COMPILE_SECONDS
+        )
     except (toolchain.LibraryMissing, toolchain.CompilerMissing) as error:
         raise BuildError(str(error)) from None
     except subprocess.TimeoutExpired:

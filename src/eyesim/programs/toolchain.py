@@ -21,10 +21,21 @@ from eyesim import paths, platform
 COMPILERS = {"cc": ("CC", ("cc", "gcc", "clang")), "c++": ("CXX", ("c++", "g++", "clang++"))}
 
 # Arguments after which the compiler does not link (or does nothing but report).
-NO_LINK_ARGS = frozenset({
-    "-c", "-E", "-S", "-M", "-MM", "-fsyntax-only",
-    "--version", "-dumpversion", "-dumpfullversion", "-dumpmachine", "--help",
-})
+NO_LINK_ARGS = frozenset(
+    {
+        "-c",
+        "-E",
+        "-S",
+        "-M",
+        "-MM",
+        "-fsyntax-only",
+        "--version",
+        "-dumpversion",
+        "-dumpfullversion",
+        "-dumpmachine",
+        "--help",
+    }
+)
 
 LIBRARY_FILES = ("libeyesim.so", "libeyesim.a", "libeyesim.dylib", "eyesim.lib", "libeyesim.dll.a")
 
@@ -52,12 +63,22 @@ def find_compiler(language: str) -> list[str]:
         f"{', '.join(system)} and the ziglang package). Install one:\n"
         f"  pip install ziglang            (any system: Zig's clang, which eyesim {language} then uses)\n"
         f"  or the system's compiler: Debian/Ubuntu `sudo apt install build-essential`, "
-        f"Fedora `sudo dnf install gcc gcc-c++`, macOS `xcode-select --install`")
+        f"Fedora `sudo dnf install gcc gcc-c++`, macOS `xcode-select --install`"
+    )
 
 
 # glibc's feature-test macros: a program that sets one has chosen which names it wants.
-FEATURE_MACROS = ("_DEFAULT_SOURCE", "_GNU_SOURCE", "_POSIX_C_SOURCE", "_POSIX_SOURCE", "_XOPEN_SOURCE",
-                  "_BSD_SOURCE", "_SVID_SOURCE", "_ISOC99_SOURCE", "_ISOC11_SOURCE")
+FEATURE_MACROS = (
+    "_DEFAULT_SOURCE",
+    "_GNU_SOURCE",
+    "_POSIX_C_SOURCE",
+    "_POSIX_SOURCE",
+    "_XOPEN_SOURCE",
+    "_BSD_SOURCE",
+    "_SVID_SOURCE",
+    "_ISOC99_SOURCE",
+    "_ISOC11_SOURCE",
+)
 
 
 def chooses_features(args: list[str]) -> bool:
@@ -80,14 +101,14 @@ def check_library(prefix: Path) -> None:
     lib_dir = prefix / "lib"
     if header.is_file() and any((lib_dir / name).is_file() for name in LIBRARY_FILES):
         return
-    how = ("EYESIM_ROBIOS points there" if os.environ.get("EYESIM_ROBIOS")
-           else "the installed eyesim package")
+    how = "EYESIM_ROBIOS points there" if os.environ.get("EYESIM_ROBIOS") else "the installed eyesim package"
     raise LibraryMissing(
         f"the RoBIOS C library is not installed: looked for {header} and {lib_dir}/libeyesim.* "
         f"({how}). Reinstall eyesim with pip, or build it for development with\n"
         f"  cmake -S robios -B build/robios-build && cmake --build build/robios-build && "
         f"cmake --install build/robios-build --prefix build/robios\n"
-        f"and set EYESIM_ROBIOS=<checkout>/build/robios")
+        f"and set EYESIM_ROBIOS=<checkout>/build/robios"
+    )
 
 
 # On by default: a missing LCDPrintf argument or an uninitialised variable is worth a word. Not
@@ -96,8 +117,7 @@ def check_library(prefix: Path) -> None:
 WARNINGS = ("-Wall",)
 
 
-def compiler_command(language: str, args: list[str], prefix: Path | None = None,
-                     warnings: bool = True) -> list[str]:
+def compiler_command(language: str, args: list[str], prefix: Path | None = None, warnings: bool = True) -> list[str]:
     """The full compiler command line for `eyesim <language> args...`; `warnings`: add -Wall
     before the arguments (so that their -Wno-... still win)."""
     prefix = paths.robios_dir() if prefix is None else Path(prefix)
@@ -159,8 +179,9 @@ def place_library(args: list[str], cwd: Path | None = None, prefix: Path | None 
         shutil.copy2(dll, target)
 
 
-def run_compiler(language: str, args: list[str], prefix: Path | None = None, verbose: bool = False,
-                 warnings: bool = True) -> int:
+def run_compiler(
+    language: str, args: list[str], prefix: Path | None = None, verbose: bool = False, warnings: bool = True
+) -> int:
     """Runs the compiler; returns its exit status (1 when the library or compiler is missing)."""
     try:
         command = compiler_command(language, args, prefix, warnings)
@@ -173,8 +194,7 @@ def run_compiler(language: str, args: list[str], prefix: Path | None = None, ver
         status = subprocess.call(command)
     except FileNotFoundError:
         variable = COMPILERS[language][0]
-        print(f"eyesim {language}: compiler {command[0]!r} not found; install one or set {variable}",
-              file=sys.stderr)
+        print(f"eyesim {language}: compiler {command[0]!r} not found; install one or set {variable}", file=sys.stderr)
         return 1
     if status == 0:
         place_library(args, prefix=prefix)
@@ -187,8 +207,12 @@ OUR_OPTIONS = ("--verbose", "--no-warnings")
 def _compile(language: str, args: list[str]) -> int:
     """`eyesim cc [--verbose] [--no-warnings] ARGS...`: those two are ours (show the command; leave
     out -Wall); the rest is the compiler's."""
-    return run_compiler(language, [arg for arg in args if arg not in OUR_OPTIONS], verbose="--verbose" in args,
-                        warnings="--no-warnings" not in args)
+    return run_compiler(
+        language,
+        [arg for arg in args if arg not in OUR_OPTIONS],
+        verbose="--verbose" in args,
+        warnings="--no-warnings" not in args,
+    )
 
 
 def register(subparsers) -> None:
@@ -197,10 +221,12 @@ def register(subparsers) -> None:
         parser = subparsers.add_parser(
             language,
             help=f"compile a {what} RoBIOS program",
-            description=(f"Runs ${variable} (else {', '.join(system)}, else Zig's clang from the ziglang "
-                         f"package) with the RoBIOS headers and libeyesim, e.g. `eyesim {language} prog.c -o prog`. "
-                         f"It adds -Wall (--no-warnings leaves it out); --verbose shows the command; every other "
-                         f"argument goes to the compiler."),
+            description=(
+                f"Runs ${variable} (else {', '.join(system)}, else Zig's clang from the ziglang "
+                f"package) with the RoBIOS headers and libeyesim, e.g. `eyesim {language} prog.c -o prog`. "
+                f"It adds -Wall (--no-warnings leaves it out); --verbose shows the command; every other "
+                f"argument goes to the compiler."
+            ),
             add_help=False,  # -h/--help belong to the compiler too
             prefix_chars="\0",  # no argument looks like an option: all of them pass through
         )

@@ -124,8 +124,11 @@ def _describe(error, kind: str | None) -> str:
         text = f"{where} must be {_alternative(error.schema)}, not {got}"
     elif check == "required":
         missing = [repr(name) for name in limit if name not in error.instance]  # one error per name: say all
-        text = f"field {missing[0]} is missing" if len(missing) == 1 else \
-            f"fields {', '.join(missing[:-1])} and {missing[-1]} are missing"
+        text = (
+            f"field {missing[0]} is missing"
+            if len(missing) == 1
+            else f"fields {', '.join(missing[:-1])} and {missing[-1]} are missing"
+        )
     elif check == "additionalProperties":
         known = error.schema.get("properties", {})
         extra = [name for name in error.instance if name not in known]
@@ -146,8 +149,15 @@ def _describe(error, kind: str | None) -> str:
 
 
 def _kinds(types) -> str:
-    words = {"integer": "a whole number", "number": "a number", "string": "text", "boolean": "true or false",
-             "array": "a list", "object": "an object", "null": "null"}
+    words = {
+        "integer": "a whole number",
+        "number": "a number",
+        "string": "text",
+        "boolean": "true or false",
+        "array": "a list",
+        "object": "an object",
+        "null": "null",
+    }
     return " or ".join(words.get(t, t) for t in ([types] if isinstance(types, str) else types))
 
 

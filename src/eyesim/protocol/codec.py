@@ -100,8 +100,9 @@ def encode_payload(layout: Sequence[tuple[str, str]], values: Sequence) -> bytes
     return b"".join(out)
 
 
-def decode_payload(layout: Sequence[tuple[str, str]], payload: bytes | memoryview,
-                   lengths: Sequence[tuple[int, int]] = ()) -> tuple:
+def decode_payload(
+    layout: Sequence[tuple[str, str]], payload: bytes | memoryview, lengths: Sequence[tuple[int, int]] = ()
+) -> tuple:
     """Decode `payload` by `layout`; raises ProtocolError(BAD_PAYLOAD) on any mismatch, and
     ProtocolError(BAD_ARGUMENT) for a field longer than `lengths` allows (an OpSpec's: (field
     index, most bytes)), before it is decoded. Text is decoded straight from the payload (a
@@ -135,7 +136,7 @@ def decode_payload(layout: Sequence[tuple[str, str]], payload: bytes | memoryvie
                 size = n * 4 if typ == "i32s" else n
                 if pos + size > end:
                     raise ProtocolError(g.ERR_BAD_PAYLOAD, f"field {name!r}: length {n} runs past the payload")
-                raw = payload[pos:pos + size]
+                raw = payload[pos : pos + size]
                 pos += size
                 if typ == "str":
                     values.append(str(raw, "utf-8"))
@@ -176,7 +177,7 @@ def decode_body(body: bytes | memoryview) -> Message:
     if len(body) < _HEADER.size:
         raise ProtocolError(g.ERR_BAD_FRAME, f"frame of {len(body)} bytes is shorter than its header")
     op, kind, request_id = _HEADER.unpack_from(body)
-    return Message(op, kind, request_id, memoryview(body)[_HEADER.size:])
+    return Message(op, kind, request_id, memoryview(body)[_HEADER.size :])
 
 
 class FrameDecoder:
@@ -204,8 +205,7 @@ class FrameDecoder:
         while len(buf) - pos >= 4 and (limit is None or len(messages) < limit):
             (length,) = _LEN.unpack_from(buf, pos)
             if length > self._max_frame or length < _HEADER.size:
-                raise ProtocolError(g.ERR_BAD_FRAME,
-                                    f"frame length {length} outside {_HEADER.size}..{self._max_frame}")
+                raise ProtocolError(g.ERR_BAD_FRAME, f"frame length {length} outside {_HEADER.size}..{self._max_frame}")
             if len(buf) - pos - 4 < length:
                 break
             if pos == 0 and len(buf) == 4 + length and length > SHARE_BUFFER_FROM:
@@ -214,7 +214,7 @@ class FrameDecoder:
                 self._buffer = bytearray()
                 messages.append(decode_body(memoryview(buf)[4:]))
                 return messages
-            messages.append(decode_body(bytes(buf[pos + 4:pos + 4 + length])))
+            messages.append(decode_body(bytes(buf[pos + 4 : pos + 4 + length])))
             pos += 4 + length
         if pos:
             del buf[:pos]
@@ -233,8 +233,8 @@ def encode_image_reply(op: int, request_id: int, values: Sequence, image: np.nda
         raise ValueError(f"the reply of {g.OPS[op].name} does not end in a bytes field")
     head = encode_message(op, g.KIND_REPLY, request_id, (*values, b""))
     frame = np.empty(len(head) + image.nbytes, dtype=np.uint8)
-    frame[:len(head)] = np.frombuffer(head, dtype=np.uint8)
+    frame[: len(head)] = np.frombuffer(head, dtype=np.uint8)
     _LEN.pack_into(frame, 0, len(frame) - _LEN.size)
     _U32.pack_into(frame, len(head) - _U32.size, image.nbytes)
-    np.copyto(frame[len(head):].reshape(image.shape), image)
+    np.copyto(frame[len(head) :].reshape(image.shape), image)
     return memoryview(frame)

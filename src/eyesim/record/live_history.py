@@ -122,7 +122,7 @@ class LiveHistory:
         images = self.images[(robot_id, kind)]
         images.append((time_us, message))
         if len(images) > MAX_IMAGES:
-            del images[:len(images) - MAX_IMAGES]
+            del images[: len(images) - MAX_IMAGES]
 
     def add_psd(self, robot_id: int, time_us: int, reading: dict) -> None:
         self.psd[robot_id].append(time_us, reading)
@@ -133,13 +133,13 @@ class LiveHistory:
         del self.times[:cut], self.snapshots[:cut]
         for times, poses in self.tracks.values():
             cut = bisect.bisect_left(times, oldest)
-            del times[:cut], poses[:cut * POSE]
+            del times[:cut], poses[: cut * POSE]
         for table in (self.states, self.psd):
             for samples in table.values():
                 samples.forget_before(oldest)
         for images in self.images.values():
             # keep the last image before the oldest time: it is what the LCD showed then
-            del images[:max(0, bisect.bisect_right(images, oldest, key=lambda s: s[0]) - 1)]
+            del images[: max(0, bisect.bisect_right(images, oldest, key=lambda s: s[0]) - 1)]
         self.events.forget_before(oldest)
 
     # -- the timeline source ------------------------------------------------------------------------

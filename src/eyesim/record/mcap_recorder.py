@@ -54,8 +54,14 @@ def _image_message(time_us: int, frame: str, pixels, image_format: str) -> bytes
         Image.fromarray(pixels).save(buffer, format="PNG", compress_level=6)
     else:
         Image.fromarray(pixels).save(buffer, format="JPEG", quality=JPEG_QUALITY)
-    return _json({"timestamp": schemas.stamp(time_us), "frame_id": frame, "format": image_format,
-                  "data": base64.b64encode(buffer.getvalue()).decode("ascii")})
+    return _json(
+        {
+            "timestamp": schemas.stamp(time_us),
+            "frame_id": frame,
+            "format": image_format,
+            "data": base64.b64encode(buffer.getvalue()).decode("ascii"),
+        }
+    )
 
 
 def period_us(rate: float, step_us: int, what: str) -> int:
@@ -86,8 +92,7 @@ class Recorder:
 
     wants_lcd = False  # LCDs are sampled on simulation time, not at the viewer's publish ticks
 
-    def __init__(self, sim, path: str | Path, pose_rate: float = DEFAULT_POSE_RATE,
-                 lcd_rate: float = DEFAULT_LCD_RATE):
+    def __init__(self, sim, path: str | Path, pose_rate: float = DEFAULT_POSE_RATE, lcd_rate: float = DEFAULT_LCD_RATE):
         self.sim = sim
         self.path = Path(path)
         self.paths = [self.path]
@@ -138,13 +143,22 @@ class Recorder:
     def _start_file(self) -> None:
         sim = self.sim
         self._writer.start(profile=schemas.PROFILE, library=f"{schemas.LIBRARY} {__version__}")
-        self._schema_ids = {name: self._writer.register_schema(name, "jsonschema", schemas.schema_bytes(name))
-                            for name in schemas.SCHEMAS}
+        self._schema_ids = {
+            name: self._writer.register_schema(name, "jsonschema", schemas.schema_bytes(name))
+            for name in schemas.SCHEMAS
+        }
         self._register([schemas.SCENE, schemas.TRANSFORMS, schemas.EVENTS, schemas.LOG, schemas.EDITS])
-        self._writer.add_metadata("eyesim", {
-            "version": __version__, "start_time_s": repr(sim.time), "step_s": repr(sim.step_us / 1e6),
-            "pose_rate_hz": repr(1e6 / self.pose_period_us), "lcd_rate_hz": repr(1e6 / self.lcd_period_us),
-            "clock": sim.clock.mode})
+        self._writer.add_metadata(
+            "eyesim",
+            {
+                "version": __version__,
+                "start_time_s": repr(sim.time),
+                "step_s": repr(sim.step_us / 1e6),
+                "pose_rate_hz": repr(1e6 / self.pose_period_us),
+                "lcd_rate_hz": repr(1e6 / self.lcd_period_us),
+                "clock": sim.clock.mode,
+            },
+        )
         self._write_scene(*self._scene_parts())
 
     def _scene_parts(self) -> tuple:
@@ -159,23 +173,34 @@ class Recorder:
         texture = sim.scene.world.floor_texture
         has_texture = bool(texture) and Path(texture).is_file()
         if has_texture:
-            attachments.append((FLOOR_TEXTURE + suffix, "image/" + Path(texture).suffix[1:].lower(),
-                                Path(texture).read_bytes()))
+            attachments.append(
+                (FLOOR_TEXTURE + suffix, "image/" + Path(texture).suffix[1:].lower(), Path(texture).read_bytes())
+            )
         for kind, things in (("robot", sim.robots), ("object", sim.objects)):
             for thing in things:
                 if mesh_message.has_mesh(sim, thing.body):
-                    attachments.append((f"mesh/{kind}/{thing.id}{suffix}", "application/json",
-                                        _json(mesh_message.mesh_message(sim.world.model, thing.body))))
-        viewer_scene = messages.scene(sim, "/scene/floor-texture" + query if has_texture else None,
-                                      version=str(segment) if segment else None, new_scene=segment > 0)
+                    attachments.append(
+                        (
+                            f"mesh/{kind}/{thing.id}{suffix}",
+                            "application/json",
+                            _json(mesh_message.mesh_message(sim.world.model, thing.body)),
+                        )
+                    )
+        viewer_scene = messages.scene(
+            sim,
+            "/scene/floor-texture" + query if has_texture else None,
+            version=str(segment) if segment else None,
+            new_scene=segment > 0,
+        )
         description = json.loads(json.dumps(dataclasses.asdict(sim.scene), default=str))
         return sim.time_us, topics, attachments, _json({"viewer": viewer_scene, "description": description})
 
     def _register(self, topics: list[str]) -> None:
         for topic in topics:
             if topic not in self._channels:
-                self._channels[topic] = self._writer.register_channel(topic, "json",
-                                                                      self._schema_ids[schemas.schema_of(topic)])
+                self._channels[topic] = self._writer.register_channel(
+                    topic, "json", self._schema_ids[schemas.schema_of(topic)]
+                )
 
     def _write_scene(self, time_us: int, topics: list[str], attachments: list[tuple], scene: bytes) -> None:
         """Channels, attachments and the /scene message of a scene (on the thread that writes)."""
@@ -218,7 +243,9 @@ class Recorder:
             self._lcd_versions[robot.id] = lcd.version
             pixels = lcd.screen().copy()
             frame = schemas.robot_frame(robot.id)
-            self._put(schemas.robot_topic(robot.id, "lcd"), now, lambda p=pixels, f=frame: _image_message(now, f, p, "png"))
+            self._put(
+                schemas.robot_topic(robot.id, "lcd"), now, lambda p=pixels, f=frame: _image_message(now, f, p, "png")
+            )
 
     def on_request(self, robot, request, reply) -> None:
         """A request the simulator answered at once: keep the readings and commands worth seeing."""
@@ -234,13 +261,15 @@ class Recorder:
             camera = robot.component(Camera)
             if camera is not None and camera.image is not None:
                 pixels, frame = camera.image.copy(), schemas.robot_frame(robot.id)
-                self._put(schemas.robot_topic(robot.id, "camera"), now,
-                          lambda: _image_message(now, frame, pixels, "jpeg"))
+                self._put(
+                    schemas.robot_topic(robot.id, "camera"), now, lambda: _image_message(now, frame, pixels, "jpeg")
+                )
             return
         elif _is_command(op):
             args = {name: value for (name, _), value in zip(op.request, request.args)}
-            self._put(schemas.robot_topic(robot.id, "command"), now,
-                      _json({"robot": robot.id, "op": op.name, "args": args}))
+            self._put(
+                schemas.robot_topic(robot.id, "command"), now, _json({"robot": robot.id, "op": op.name, "args": args})
+            )
             return
         else:
             return
@@ -264,8 +293,20 @@ class Recorder:
             line = _log_line(message)
             if line is not None:
                 level, text = line
-                self._put(schemas.LOG, now, _json({"timestamp": schemas.stamp(now), "level": level, "message": text,
-                                                   "name": f"robot {message['robot']}", "file": "", "line": 0}))
+                self._put(
+                    schemas.LOG,
+                    now,
+                    _json(
+                        {
+                            "timestamp": schemas.stamp(now),
+                            "level": level,
+                            "message": text,
+                            "name": f"robot {message['robot']}",
+                            "file": "",
+                            "line": 0,
+                        }
+                    ),
+                )
 
     def on_snapshot(self, message: dict) -> None:
         pass  # poses are sampled on simulation time (see __call__), not at wall-clock publish ticks
@@ -323,8 +364,9 @@ class Recorder:
         channel = self._channels[topic]
         sequence = self._sequence.get(channel, 0)
         self._sequence[channel] = sequence + 1
-        self._writer.add_message(channel, log_time=time_us * 1000, data=data, publish_time=time_us * 1000,
-                                 sequence=sequence)
+        self._writer.add_message(
+            channel, log_time=time_us * 1000, data=data, publish_time=time_us * 1000, sequence=sequence
+        )
 
 
 def _laser_scan(robot, time_us: int, distances_mm: list[int]) -> bytes:
@@ -335,11 +377,20 @@ def _laser_scan(robot, time_us: int, distances_mm: list[int]) -> bytes:
     step = math.radians(scanner.field) / points
     start = (points // 2) * step  # beam 0 is the most counter-clockwise (docs/api/lidar.md)
     tilt = math.radians(scanner.tilt)
-    return _json({"timestamp": schemas.stamp(time_us), "frame_id": schemas.robot_frame(robot.id),
-                  "pose": {"position": {"x": 0.0, "y": 0.0, "z": float(scanner.mount[2])},
-                           "orientation": {"x": 0.0, "y": math.sin(tilt / 2), "z": 0.0, "w": math.cos(tilt / 2)}},
-                  "start_angle": start, "end_angle": start - (points - 1) * step,
-                  "ranges": [d / 1000 for d in distances_mm], "intensities": []})
+    return _json(
+        {
+            "timestamp": schemas.stamp(time_us),
+            "frame_id": schemas.robot_frame(robot.id),
+            "pose": {
+                "position": {"x": 0.0, "y": 0.0, "z": float(scanner.mount[2])},
+                "orientation": {"x": 0.0, "y": math.sin(tilt / 2), "z": 0.0, "w": math.cos(tilt / 2)},
+            },
+            "start_angle": start,
+            "end_angle": start - (points - 1) * step,
+            "ranges": [d / 1000 for d in distances_mm],
+            "intensities": [],
+        }
+    )
 
 
 def _log_line(message: dict) -> tuple[int, str] | None:
@@ -351,5 +402,7 @@ def _log_line(message: dict) -> tuple[int, str] | None:
         if message["event"] == "started":
             return schemas.LOG_INFO, f"program {message['name']} started"
         code = message["exit_code"]
-        return (schemas.LOG_INFO if code == 0 else schemas.LOG_ERROR), f"program {message['name']} exited with code {code}"
+        return (
+            schemas.LOG_INFO if code == 0 else schemas.LOG_ERROR
+        ), f"program {message['name']} exited with code {code}"
     return None

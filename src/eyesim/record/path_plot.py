@@ -20,8 +20,15 @@ IMAGE_TYPES = (".png", ".svg", ".pdf")
 
 def _footprint(x: float, y: float, heading: float, length: float, width: float) -> list[tuple[float, float]]:
     c, s = math.cos(heading), math.sin(heading)
-    return [(x + c * u - s * v, y + s * u + c * v)
-            for u, v in ((length / 2, width / 2), (-length / 2, width / 2), (-length / 2, -width / 2), (length / 2, -width / 2))]
+    return [
+        (x + c * u - s * v, y + s * u + c * v)
+        for u, v in (
+            (length / 2, width / 2),
+            (-length / 2, width / 2),
+            (-length / 2, -width / 2),
+            (length / 2, -width / 2),
+        )
+    ]
 
 
 def plot_paths(recording: Recording, output: str | Path, dpi: int = 150) -> None:
@@ -38,10 +45,18 @@ def plot_paths(recording: Recording, output: str | Path, dpi: int = 150) -> None
     else:
         axes.add_patch(Rectangle((0, 0), width, height, color="#f6f2e8", zorder=0))
     for wall in scene["walls"]:
-        axes.plot([wall["x1"], wall["x2"]], [wall["y1"], wall["y2"]], color=[c / 255 for c in wall["color"]],
-                  linewidth=max(1.0, wall["thickness"] * 200), solid_capstyle="butt", zorder=1)
+        axes.plot(
+            [wall["x1"], wall["x2"]],
+            [wall["y1"], wall["y2"]],
+            color=[c / 255 for c in wall["color"]],
+            linewidth=max(1.0, wall["thickness"] * 200),
+            solid_capstyle="butt",
+            zorder=1,
+        )
     for marker in scene["markers"]:
-        axes.add_patch(Circle((marker["x"], marker["y"]), 0.0125, color=[c / 255 for c in marker["color"][:3]], zorder=1))
+        axes.add_patch(
+            Circle((marker["x"], marker["y"]), 0.0125, color=[c / 255 for c in marker["color"][:3]], zorder=1)
+        )
     first = recording.snapshot_at(recording.start_us)
     objects = {o["id"]: o for o in scene["objects"]}
     for pose in first["objects"] if first else []:
@@ -50,8 +65,14 @@ def plot_paths(recording: Recording, output: str | Path, dpi: int = 150) -> None
             size = thing["size"]
             x, y = pose["pos"][:2]
             if thing["shape"] == "box":
-                axes.add_patch(Polygon(_footprint(x, y, yaw(pose["quat"]), size[0], size[1]),
-                                       color=[c / 255 for c in thing["color"]], alpha=0.8, zorder=2))
+                axes.add_patch(
+                    Polygon(
+                        _footprint(x, y, yaw(pose["quat"]), size[0], size[1]),
+                        color=[c / 255 for c in thing["color"]],
+                        alpha=0.8,
+                        zorder=2,
+                    )
+                )
             else:
                 axes.add_patch(Circle((x, y), size[0], color=[c / 255 for c in thing["color"]], alpha=0.8, zorder=2))
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
@@ -60,12 +81,20 @@ def plot_paths(recording: Recording, output: str | Path, dpi: int = 150) -> None
         if len(poses) == 0:
             continue
         color = colors[index % len(colors)]
-        axes.plot(poses[:, 0], poses[:, 1], color=color, linewidth=1.6, zorder=3,
-                  label=f"robot {robot['id']} {robot['name']}")
+        axes.plot(
+            poses[:, 0], poses[:, 1], color=color, linewidth=1.6, zorder=3, label=f"robot {robot['id']} {robot['name']}"
+        )
         axes.add_patch(Circle(tuple(poses[0, :2]), 0.02, fill=False, edgecolor=color, linewidth=1.5, zorder=4))
         end = poses[-1]
-        axes.add_patch(Polygon(_footprint(end[0], end[1], yaw(end[3:7]), *robot["size"][:2]), facecolor=color,
-                               edgecolor="black", linewidth=0.8, zorder=4))
+        axes.add_patch(
+            Polygon(
+                _footprint(end[0], end[1], yaw(end[3:7]), *robot["size"][:2]),
+                facecolor=color,
+                edgecolor="black",
+                linewidth=0.8,
+                zorder=4,
+            )
+        )
     axes.set_xlim(0, width)
     axes.set_ylim(0, height)
     axes.set_aspect("equal")

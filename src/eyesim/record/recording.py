@@ -62,7 +62,9 @@ class Recording:
             raise
         except Exception as error:  # MCAP's, zstandard's, JSON's errors have no common base class
             self._file.close()
-            raise RecordingError(f"{self.path} is damaged and cannot be read ({error.__class__.__name__}: {error})") from None
+            raise RecordingError(
+                f"{self.path} is damaged and cannot be read ({error.__class__.__name__}: {error})"
+            ) from None
 
     def close(self) -> None:
         self._file.close()
@@ -77,11 +79,15 @@ class Recording:
     def _load(self) -> None:
         summary = self._reader.get_summary()
         if summary is None or summary.statistics is None:
-            raise RecordingError(f"{self.path} has no index: the recording was not finished "
-                                 "(the simulator was killed?) or the file is truncated")
+            raise RecordingError(
+                f"{self.path} has no index: the recording was not finished "
+                "(the simulator was killed?) or the file is truncated"
+            )
         topics = {channel.topic for channel in summary.channels.values()}
         if schemas.SCENE not in topics:
-            raise RecordingError(f"{self.path} is an MCAP file but not an EyeSim recording (it has no {schemas.SCENE} channel)")
+            raise RecordingError(
+                f"{self.path} is an MCAP file but not an EyeSim recording (it has no {schemas.SCENE} channel)"
+            )
         self.metadata = {m.name: dict(m.metadata) for m in self._reader.iter_metadata()}
         self.segments: list[Segment] = []
         self.pose_times: list[int] = []
@@ -108,8 +114,9 @@ class Recording:
                 continue
             data = _decode(self.path, topic, time_us, message.data)
             if topic == schemas.SCENE:
-                self.segments.append(Segment(len(self.segments), time_us, data["viewer"], data["description"],
-                                             len(self.events)))
+                self.segments.append(
+                    Segment(len(self.segments), time_us, data["viewer"], data["description"], len(self.events))
+                )
             elif topic == schemas.TRANSFORMS:
                 poses.append(self._pose_row(data))
                 self.pose_times.append(time_us)
@@ -128,7 +135,9 @@ class Recording:
             elif robot_channel == "input":
                 self.inputs.append((time_us, data))
         if not self.segments:
-            raise RecordingError(f"{self.path} is an MCAP file but not an EyeSim recording (its {schemas.SCENE} channel is empty)")
+            raise RecordingError(
+                f"{self.path} is an MCAP file but not an EyeSim recording (its {schemas.SCENE} channel is empty)"
+            )
         first = self.segments[0]
         self.scene: dict = first.scene  # the first scene's (see segments)
         self.description: dict = first.description
@@ -153,7 +162,7 @@ class Recording:
         for transform in data["transforms"]:
             index = self._frames[transform["child_frame_id"]]
             t, q = transform["translation"], transform["rotation"]
-            row[7 * index:7 * index + 7] = [t["x"], t["y"], t["z"], q["w"], q["x"], q["y"], q["z"]]
+            row[7 * index : 7 * index + 7] = [t["x"], t["y"], t["z"], q["w"], q["x"], q["y"], q["z"]]
         return row
 
     def segment_at(self, time_us: int) -> Segment:
@@ -202,10 +211,16 @@ class Recording:
             if pose is not None:
                 state = self._latest(self.states.get(robot_id, ()), sample_us)
                 robots.append(messages.pose(robot_id, pose[0], pose[1], state.get("battery") if state else None))
-        objects = [messages.pose(o["id"], p[0], p[1]) for o in scene["objects"]
-                   if (p := self.pose(schemas.object_frame(o["id"]), index)) is not None]
-        bodies = [messages.pose(b["id"], p[0], p[1]) for b in scene["bodies"]
-                  if (p := self.pose(schemas.body_frame(b["id"]), index)) is not None]
+        objects = [
+            messages.pose(o["id"], p[0], p[1])
+            for o in scene["objects"]
+            if (p := self.pose(schemas.object_frame(o["id"]), index)) is not None
+        ]
+        bodies = [
+            messages.pose(b["id"], p[0], p[1])
+            for b in scene["bodies"]
+            if (p := self.pose(schemas.body_frame(b["id"]), index)) is not None
+        ]
         rays = None
         if scene["settings"].get("vis"):
             at = bisect.bisect_right(self._ray_times, time_us) - 1
@@ -221,7 +236,7 @@ class Recording:
     # -- events and images ---------------------------------------------------------------------------
     def events_until(self, time_us: int) -> list[dict]:
         """Viewer events (console, menu, program, ...) up to and including `time_us`, in order."""
-        return [e for _, e in self.events[:bisect.bisect_right(self._event_times, time_us)]]
+        return [e for _, e in self.events[: bisect.bisect_right(self._event_times, time_us)]]
 
     def image_time(self, robot_id: int, kind: str, time_us: int) -> int | None:
         """The time of the robot's last LCD or camera image at or before `time_us`."""
@@ -233,8 +248,9 @@ class Recording:
         """The foxglove.CompressedImage message the robot's `kind` (lcd/camera) channel has at exactly time_us."""
         topic = schemas.robot_topic(robot_id, kind)
         try:
-            for _, _, message in self._reader.iter_messages(topics=[topic], starting_at=time_us * 1000,
-                                                            ending_at=time_us * 1000, reverse=True):
+            for _, _, message in self._reader.iter_messages(
+                topics=[topic], starting_at=time_us * 1000, ending_at=time_us * 1000, reverse=True
+            ):
                 return _decode(self.path, topic, time_us, message.data)
         except Exception as error:  # as above
             raise RecordingError(f"{self.path} is damaged at t={time_us / 1e6:g} s: {error}") from None
@@ -263,8 +279,9 @@ def _open(path: Path):
     file.seek(-len(MAGIC), 2)
     if file.read(len(MAGIC)) != MAGIC:
         file.close()
-        raise RecordingError(f"{path} is truncated: the recording was not finished (the simulator was killed?) "
-                             "or the file was cut short")
+        raise RecordingError(
+            f"{path} is truncated: the recording was not finished (the simulator was killed?) or the file was cut short"
+        )
     file.seek(0)
     return file
 
@@ -273,7 +290,9 @@ def _decode(path: Path, topic: str, time_us: int, data: bytes):
     try:
         value = json.loads(data)
     except ValueError:
-        raise RecordingError(f"{path} is damaged: the message on {topic} at t={time_us / 1e6:g} s is not JSON") from None
+        raise RecordingError(
+            f"{path} is damaged: the message on {topic} at t={time_us / 1e6:g} s is not JSON"
+        ) from None
     if not isinstance(value, dict):
         raise RecordingError(f"{path} is damaged: the message on {topic} at t={time_us / 1e6:g} s is not a JSON object")
     return value

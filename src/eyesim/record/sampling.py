@@ -11,9 +11,13 @@ from eyesim.robot.components.vw import VwController
 
 
 def _transform(time_us: int, child: str, pos, quat) -> dict:
-    return {"timestamp": schemas.stamp(time_us), "parent_frame_id": schemas.WORLD_FRAME, "child_frame_id": child,
-            "translation": {"x": float(pos[0]), "y": float(pos[1]), "z": float(pos[2])},
-            "rotation": {"x": float(quat[1]), "y": float(quat[2]), "z": float(quat[3]), "w": float(quat[0])}}
+    return {
+        "timestamp": schemas.stamp(time_us),
+        "parent_frame_id": schemas.WORLD_FRAME,
+        "child_frame_id": child,
+        "translation": {"x": float(pos[0]), "y": float(pos[1]), "z": float(pos[2])},
+        "rotation": {"x": float(quat[1]), "y": float(quat[2]), "z": float(quat[3]), "w": float(quat[0])},
+    }
 
 
 def transforms(sim) -> dict:
@@ -21,8 +25,9 @@ def transforms(sim) -> dict:
     data, now = sim.world.data, sim.time_us
     frames = [_transform(now, schemas.robot_frame(r.id), data.xpos[r.body], data.xquat[r.body]) for r in sim.robots]
     frames += [_transform(now, schemas.object_frame(o.id), data.xpos[o.body], data.xquat[o.body]) for o in sim.objects]
-    frames += [_transform(now, schemas.body_frame(b), data.xpos[b], data.xquat[b])
-               for r in sim.robots for b in r.shown_parts]
+    frames += [
+        _transform(now, schemas.body_frame(b), data.xpos[b], data.xquat[b]) for r in sim.robots for b in r.shown_parts
+    ]
     return {"transforms": frames}
 
 
@@ -30,9 +35,13 @@ def robot_state(robot) -> dict:
     """eyesim.RobotState: odometry and speed (drives with V-omega control), encoders, battery."""
     vw = robot.component(VwController)
     battery = robot.component(Battery)
-    state = {"robot": robot.id, "odometry": None, "speed": None,
-             "encoders": {str(n): e.encoder() for n, e in sorted(robot.encoders.items())},
-             "battery": battery.volts if battery is not None else None}
+    state = {
+        "robot": robot.id,
+        "odometry": None,
+        "speed": None,
+        "encoders": {str(n): e.encoder() for n, e in sorted(robot.encoders.items())},
+        "battery": battery.volts if battery is not None else None,
+    }
     if vw is not None:
         x, y, phi = vw.odometry
         v, w = vw.measured_speed()

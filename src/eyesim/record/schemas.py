@@ -43,43 +43,85 @@ def body_frame(body_id: int) -> str:
 
 # -- Foxglove schemas ----------------------------------------------------------------------------
 _NUMBER = {"type": "number"}
-_TIME = {"type": "object", "title": "time", "properties": {
-    "sec": {"type": "integer", "minimum": 0},
-    "nsec": {"type": "integer", "minimum": 0, "maximum": 999_999_999}}}
-_VECTOR3 = {"type": "object", "title": "foxglove.Vector3",
-            "properties": {"x": _NUMBER, "y": _NUMBER, "z": _NUMBER}}
-_QUATERNION = {"type": "object", "title": "foxglove.Quaternion",
-               "properties": {"x": _NUMBER, "y": _NUMBER, "z": _NUMBER, "w": _NUMBER}}
-_POSE = {"type": "object", "title": "foxglove.Pose",
-         "properties": {"position": _VECTOR3, "orientation": _QUATERNION}}
-_FRAME_TRANSFORM = {"type": "object", "title": "foxglove.FrameTransform", "properties": {
-    "timestamp": _TIME, "parent_frame_id": {"type": "string"}, "child_frame_id": {"type": "string"},
-    "translation": _VECTOR3, "rotation": _QUATERNION}}
+_TIME = {
+    "type": "object",
+    "title": "time",
+    "properties": {
+        "sec": {"type": "integer", "minimum": 0},
+        "nsec": {"type": "integer", "minimum": 0, "maximum": 999_999_999},
+    },
+}
+_VECTOR3 = {"type": "object", "title": "foxglove.Vector3", "properties": {"x": _NUMBER, "y": _NUMBER, "z": _NUMBER}}
+_QUATERNION = {
+    "type": "object",
+    "title": "foxglove.Quaternion",
+    "properties": {"x": _NUMBER, "y": _NUMBER, "z": _NUMBER, "w": _NUMBER},
+}
+_POSE = {"type": "object", "title": "foxglove.Pose", "properties": {"position": _VECTOR3, "orientation": _QUATERNION}}
+_FRAME_TRANSFORM = {
+    "type": "object",
+    "title": "foxglove.FrameTransform",
+    "properties": {
+        "timestamp": _TIME,
+        "parent_frame_id": {"type": "string"},
+        "child_frame_id": {"type": "string"},
+        "translation": _VECTOR3,
+        "rotation": _QUATERNION,
+    },
+}
 
 FOXGLOVE = {
     "foxglove.FrameTransforms": {
-        "type": "object", "title": "foxglove.FrameTransforms",
+        "type": "object",
+        "title": "foxglove.FrameTransforms",
         "description": "An array of FrameTransform messages",
-        "properties": {"transforms": {"type": "array", "items": _FRAME_TRANSFORM}}},
+        "properties": {"transforms": {"type": "array", "items": _FRAME_TRANSFORM}},
+    },
     "foxglove.CompressedImage": {
-        "type": "object", "title": "foxglove.CompressedImage", "description": "A compressed image",
-        "properties": {"timestamp": _TIME, "frame_id": {"type": "string"},
-                       "data": {"type": "string", "contentEncoding": "base64"},
-                       "format": {"type": "string"}}},
+        "type": "object",
+        "title": "foxglove.CompressedImage",
+        "description": "A compressed image",
+        "properties": {
+            "timestamp": _TIME,
+            "frame_id": {"type": "string"},
+            "data": {"type": "string", "contentEncoding": "base64"},
+            "format": {"type": "string"},
+        },
+    },
     "foxglove.LaserScan": {
-        "type": "object", "title": "foxglove.LaserScan", "description": "A single scan from a planar laser range-finder",
-        "properties": {"timestamp": _TIME, "frame_id": {"type": "string"}, "pose": _POSE,
-                       "start_angle": _NUMBER, "end_angle": _NUMBER,
-                       "ranges": {"type": "array", "items": _NUMBER},
-                       "intensities": {"type": "array", "items": _NUMBER}}},
+        "type": "object",
+        "title": "foxglove.LaserScan",
+        "description": "A single scan from a planar laser range-finder",
+        "properties": {
+            "timestamp": _TIME,
+            "frame_id": {"type": "string"},
+            "pose": _POSE,
+            "start_angle": _NUMBER,
+            "end_angle": _NUMBER,
+            "ranges": {"type": "array", "items": _NUMBER},
+            "intensities": {"type": "array", "items": _NUMBER},
+        },
+    },
     "foxglove.Log": {
-        "type": "object", "title": "foxglove.Log", "description": "A log message",
-        "properties": {"timestamp": _TIME,
-                       "level": {"type": "integer", "description": "0 unknown, 1 debug, 2 info, 3 warning, 4 error, 5 fatal",
-                                 "oneOf": [{"const": n, "title": t} for n, t in enumerate(
-                                     ("UNKNOWN", "DEBUG", "INFO", "WARNING", "ERROR", "FATAL"))]},
-                       "message": {"type": "string"}, "name": {"type": "string"},
-                       "file": {"type": "string"}, "line": {"type": "integer", "minimum": 0}}},
+        "type": "object",
+        "title": "foxglove.Log",
+        "description": "A log message",
+        "properties": {
+            "timestamp": _TIME,
+            "level": {
+                "type": "integer",
+                "description": "0 unknown, 1 debug, 2 info, 3 warning, 4 error, 5 fatal",
+                "oneOf": [
+                    {"const": n, "title": t}
+                    for n, t in enumerate(("UNKNOWN", "DEBUG", "INFO", "WARNING", "ERROR", "FATAL"))
+                ],
+            },
+            "message": {"type": "string"},
+            "name": {"type": "string"},
+            "file": {"type": "string"},
+            "line": {"type": "integer", "minimum": 0},
+        },
+    },
 }
 LOG_INFO, LOG_WARNING, LOG_ERROR = 2, 3, 4
 
@@ -89,63 +131,103 @@ _NULLABLE_NUMBER = {"type": ["number", "null"]}
 
 EYESIM = {
     "eyesim.Scene": {
-        "type": "object", "title": "eyesim.Scene",
+        "type": "object",
+        "title": "eyesim.Scene",
         "description": "The scene at the start: the viewer's `scene` message (docs/viewer-channel.md) and the "
-                       "loaded scene description",
+        "loaded scene description",
         "properties": {"viewer": {"type": "object"}, "description": {"type": "object"}},
-        "required": ["viewer", "description"]},
+        "required": ["viewer", "description"],
+    },
     "eyesim.RobotState": {
-        "type": "object", "title": "eyesim.RobotState",
+        "type": "object",
+        "title": "eyesim.RobotState",
         "description": "What a robot knows about itself: odometry (m, rad), measured speed (m/s, rad/s), "
-                       "encoder ticks by encoder number, battery voltage",
-        "properties": {"robot": _ROBOT,
-                       "odometry": {"type": ["object", "null"], "properties": {"x": _NUMBER, "y": _NUMBER, "phi": _NUMBER}},
-                       "speed": {"type": ["object", "null"], "properties": {"v": _NUMBER, "w": _NUMBER}},
-                       "encoders": {"type": "object", "additionalProperties": {"type": "integer"}},
-                       "battery": _NULLABLE_NUMBER},
-        "required": ["robot"]},
+        "encoder ticks by encoder number, battery voltage",
+        "properties": {
+            "robot": _ROBOT,
+            "odometry": {"type": ["object", "null"], "properties": {"x": _NUMBER, "y": _NUMBER, "phi": _NUMBER}},
+            "speed": {"type": ["object", "null"], "properties": {"v": _NUMBER, "w": _NUMBER}},
+            "encoders": {"type": "object", "additionalProperties": {"type": "integer"}},
+            "battery": _NULLABLE_NUMBER,
+        },
+        "required": ["robot"],
+    },
     "eyesim.PsdReading": {
-        "type": "object", "title": "eyesim.PsdReading",
+        "type": "object",
+        "title": "eyesim.PsdReading",
         "description": "A PSD reading the program asked for: PSDGet (distance_mm) or PSDGetRaw (raw)",
-        "properties": {"robot": _ROBOT, "psd": {"type": "integer"}, "distance_mm": {"type": "integer"},
-                       "raw": {"type": "integer"}},
-        "required": ["robot", "psd"]},
+        "properties": {
+            "robot": _ROBOT,
+            "psd": {"type": "integer"},
+            "distance_mm": {"type": "integer"},
+            "raw": {"type": "integer"},
+        },
+        "required": ["robot", "psd"],
+    },
     "eyesim.Command": {
-        "type": "object", "title": "eyesim.Command",
+        "type": "object",
+        "title": "eyesim.Command",
         "description": "A drive, motor or servo command the program gave (RoBIOS units: mm, degrees, percent)",
         "properties": {"robot": _ROBOT, "op": {"type": "string"}, "args": {"type": "object"}},
-        "required": ["robot", "op", "args"]},
+        "required": ["robot", "op", "args"],
+    },
     "eyesim.Input": {
-        "type": "object", "title": "eyesim.Input",
+        "type": "object",
+        "title": "eyesim.Input",
         "description": "Input from outside the robot: key, touch, irtv, serial, digital or analog",
         "properties": {"robot": _ROBOT, "input": {"enum": ["key", "touch", "irtv", "serial", "digital", "analog"]}},
-        "required": ["robot", "input"]},
+        "required": ["robot", "input"],
+    },
     "eyesim.SceneEdit": {
-        "type": "object", "title": "eyesim.SceneEdit",
+        "type": "object",
+        "title": "eyesim.SceneEdit",
         "description": "A change made to the world from the viewer: `place` a robot or object at x, y (m), phi (rad)",
-        "properties": {"edit": {"const": "place"}, "robot": _ROBOT, "object": {"type": "integer"},
-                       "x": _NUMBER, "y": _NUMBER, "phi": _NUMBER},
-        "required": ["edit", "x", "y", "phi"]},
+        "properties": {
+            "edit": {"const": "place"},
+            "robot": _ROBOT,
+            "object": {"type": "integer"},
+            "x": _NUMBER,
+            "y": _NUMBER,
+            "phi": _NUMBER,
+        },
+        "required": ["edit", "x", "y", "phi"],
+    },
     "eyesim.ViewerEvent": {
-        "type": "object", "title": "eyesim.ViewerEvent",
+        "type": "object",
+        "title": "eyesim.ViewerEvent",
         "description": "A viewer channel event (docs/viewer-channel.md): menu, console, program, serial, io, audio, reset",
         "properties": {"type": {"enum": ["menu", "console", "program", "serial", "io", "audio", "reset"]}},
-        "required": ["type"]},
+        "required": ["type"],
+    },
     "eyesim.SensorRays": {
-        "type": "object", "title": "eyesim.SensorRays",
+        "type": "object",
+        "title": "eyesim.SensorRays",
         "description": "With the scene setting VIS: the `rays` of the viewer's snapshots (docs/viewer-channel.md)",
         "properties": {"rays": {"type": "array", "items": {"type": "object"}}},
-        "required": ["rays"]},
+        "required": ["rays"],
+    },
 }
 
 SCHEMAS = {**FOXGLOVE, **EYESIM}
 
 # Which schema each topic uses; robot topics by their last part.
-TOPIC_SCHEMAS = {SCENE: "eyesim.Scene", TRANSFORMS: "foxglove.FrameTransforms", RAYS: "eyesim.SensorRays",
-                 EVENTS: "eyesim.ViewerEvent", LOG: "foxglove.Log", EDITS: "eyesim.SceneEdit"}
-ROBOT_SCHEMAS = {"state": "eyesim.RobotState", "lcd": "foxglove.CompressedImage",
-                 "camera": "foxglove.CompressedImage", "lidar": "foxglove.LaserScan", "psd": "eyesim.PsdReading",
-                 "command": "eyesim.Command", "input": "eyesim.Input"}
+TOPIC_SCHEMAS = {
+    SCENE: "eyesim.Scene",
+    TRANSFORMS: "foxglove.FrameTransforms",
+    RAYS: "eyesim.SensorRays",
+    EVENTS: "eyesim.ViewerEvent",
+    LOG: "foxglove.Log",
+    EDITS: "eyesim.SceneEdit",
+}
+ROBOT_SCHEMAS = {
+    "state": "eyesim.RobotState",
+    "lcd": "foxglove.CompressedImage",
+    "camera": "foxglove.CompressedImage",
+    "lidar": "foxglove.LaserScan",
+    "psd": "eyesim.PsdReading",
+    "command": "eyesim.Command",
+    "input": "eyesim.Input",
+}
 
 
 def schema_of(topic: str) -> str:

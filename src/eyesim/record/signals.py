@@ -22,14 +22,28 @@ def catalogue(source) -> list[dict]:
         state = states[-1][1] if states else None
         if state is not None:
             if state.get("odometry") is not None:
-                names += [("odometry.x", "m"), ("odometry.y", "m"), ("odometry.phi", "deg"), ("v", "m/s"), ("w", "deg/s")]
+                names += [
+                    ("odometry.x", "m"),
+                    ("odometry.y", "m"),
+                    ("odometry.phi", "deg"),
+                    ("v", "m/s"),
+                    ("w", "deg/s"),
+                ]
             names += [(f"encoder.{n}", "ticks") for n in state.get("encoders", {})]
             if state.get("battery") is not None:
                 names.append(("battery", "V"))
         psd_ids = sorted({reading["psd"] for _, reading in source.psd.get(robot_id, ()) if "distance_mm" in reading})
         names += [(f"psd.{n}", "mm") for n in psd_ids]
-        signals += [{"id": f"robot/{robot_id}/{name}", "robot": robot_id, "name": name,
-                     "label": f"robot {robot_id} {name}", "unit": unit} for name, unit in names]
+        signals += [
+            {
+                "id": f"robot/{robot_id}/{name}",
+                "robot": robot_id,
+                "name": name,
+                "label": f"robot {robot_id} {name}",
+                "unit": unit,
+            }
+            for name, unit in names
+        ]
     return signals
 
 
@@ -48,8 +62,11 @@ def series(source, signal_id: str) -> tuple[list[float], list[float]] | None:
             values = poses[:, 0 if name == "x" else 1]
         return _thin(np.asarray(times) / 1e6, values)
     if name.startswith("psd."):
-        readings = [(t, r["distance_mm"]) for t, r in source.psd.get(robot_id, ())
-                    if str(r["psd"]) == name[4:] and "distance_mm" in r]
+        readings = [
+            (t, r["distance_mm"])
+            for t, r in source.psd.get(robot_id, ())
+            if str(r["psd"]) == name[4:] and "distance_mm" in r
+        ]
         return _thin(np.array([t for t, _ in readings]) / 1e6, np.array([v for _, v in readings], dtype=float))
     pick = _state_value(name)
     if pick is None:

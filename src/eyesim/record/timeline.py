@@ -45,7 +45,7 @@ class EventIndex:
             stream = self._streams[(kind, message["robot"])]
             stream.append((time_us, message))
             if self._max_stream is not None and len(stream) > self._max_stream:
-                del stream[:len(stream) - self._max_stream]
+                del stream[: len(stream) - self._max_stream]
 
     def latest(self, kind: str, robot_id: int, time_us: int) -> dict | None:
         events = self._latest.get((kind, robot_id), [])
@@ -56,7 +56,7 @@ class EventIndex:
         """The events after `after_us` up to and including `until_us`."""
         events = self._streams.get((kind, robot_id), [])
         first = bisect.bisect_right(events, after_us, key=lambda e: e[0])
-        return [e for _, e in events[first:bisect.bisect_right(events, until_us, key=lambda e: e[0])]]
+        return [e for _, e in events[first : bisect.bisect_right(events, until_us, key=lambda e: e[0])]]
 
     def forget_before(self, time_us: int) -> None:
         """Drops what no time from `time_us` on needs (bounded live history)."""
@@ -64,7 +64,7 @@ class EventIndex:
             keep = max(0, bisect.bisect_right(events, time_us, key=lambda e: e[0]) - 1)
             del events[:keep]
         for events in self._streams.values():
-            del events[:bisect.bisect_left(events, time_us, key=lambda e: e[0])]
+            del events[: bisect.bisect_left(events, time_us, key=lambda e: e[0])]
 
 
 class RecordingTimeline:
@@ -166,11 +166,13 @@ class FrameCursor:
         snapshot = source.snapshot_at(time_us)
         if snapshot is not None:
             messages.append(json.dumps(snapshot))
-        return viewer_messages.frame_text(time_us / 1e6, list(robot_ids) if afresh else [], messages,
-                                          source.start_us / 1e6, source.end_us / 1e6)
+        return viewer_messages.frame_text(
+            time_us / 1e6, list(robot_ids) if afresh else [], messages, source.start_us / 1e6, source.end_us / 1e6
+        )
 
-    async def _robot(self, source, events, robot_id: int, after_us: float, since_us: float, time_us: int,
-                     messages: list[str]) -> None:
+    async def _robot(
+        self, source, events, robot_id: int, after_us: float, since_us: float, time_us: int, messages: list[str]
+    ) -> None:
         for kind in LATEST_KINDS:  # a panel that starts afresh (`clear`) has none of these
             event = events.latest(kind, robot_id, time_us)
             if event is not None and self.sent.get((kind, robot_id)) is not event:

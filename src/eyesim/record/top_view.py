@@ -33,7 +33,10 @@ class TopView:
         self.scene = scene
         width, height = scene["floor"]["width"], scene["floor"]["height"]
         self.scale = (size - 2 * MARGIN) / max(width, height)
-        self.size = (2 * round((width * self.scale + 2 * MARGIN) / 2), 2 * round((height * self.scale + 2 * MARGIN) / 2))
+        self.size = (
+            2 * round((width * self.scale + 2 * MARGIN) / 2),
+            2 * round((height * self.scale + 2 * MARGIN) / 2),
+        )
         self.height_m = height
         self.background = self._background(floor_image)
 
@@ -53,16 +56,20 @@ class TopView:
             draw.rectangle(corners, fill=FLOOR)
         for wall in self.scene["walls"]:
             width = max(1, round(wall["thickness"] * self.scale))
-            draw.line([self.pixel(wall["x1"], wall["y1"]), self.pixel(wall["x2"], wall["y2"])],
-                      fill=tuple(wall["color"]), width=width)
+            draw.line(
+                [self.pixel(wall["x1"], wall["y1"]), self.pixel(wall["x2"], wall["y2"])],
+                fill=tuple(wall["color"]),
+                width=width,
+            )
         for marker in self.scene["markers"]:
             x, y = self.pixel(marker["x"], marker["y"])
             r = max(2, 0.0125 * self.scale)
             draw.ellipse([x - r, y - r, x + r, y + r], fill=tuple(marker["color"][:3]))
         return image
 
-    def draw(self, snapshot: dict | None, paths: dict[int, list[tuple[float, float]]] | None = None,
-             label: str = "") -> Image.Image:
+    def draw(
+        self, snapshot: dict | None, paths: dict[int, list[tuple[float, float]]] | None = None, label: str = ""
+    ) -> Image.Image:
         """A frame: the snapshot's poses (and `rays`; the arena alone without a snapshot: a recording
         with no pose samples), each robot's path so far, `label` in a corner."""
         image = self.background.copy()
@@ -93,7 +100,12 @@ class TopView:
 
     def _footprint(self, x: float, y: float, heading: float, length: float, width: float) -> list:
         c, s = math.cos(heading), math.sin(heading)
-        corners = [(length / 2, width / 2), (-length / 2, width / 2), (-length / 2, -width / 2), (length / 2, -width / 2)]
+        corners = [
+            (length / 2, width / 2),
+            (-length / 2, width / 2),
+            (-length / 2, -width / 2),
+            (length / 2, -width / 2),
+        ]
         return [self.pixel(x + c * u - s * v, y + s * u + c * v) for u, v in corners]
 
     def _robot(self, draw: ImageDraw.ImageDraw, robot: dict, pose: dict) -> None:
@@ -110,15 +122,19 @@ class TopView:
         x, y = pose["pos"][:2]
         heading = yaw(pose["quat"])
         color = tuple(thing["color"])
-        for part in thing["parts"] or [{"shape": thing["shape"], "size": thing["size"], "pos": [0, 0, 0], "quat": [1, 0, 0, 0]}]:
+        for part in thing["parts"] or [
+            {"shape": thing["shape"], "size": thing["size"], "pos": [0, 0, 0], "quat": [1, 0, 0, 0]}
+        ]:
             c, s = math.cos(heading), math.sin(heading)
             px, py = part["pos"][:2]
             cx, cy = x + c * px - s * py, y + s * px + c * py
             if part["shape"] == "box":
-                draw.polygon(self._footprint(cx, cy, heading + yaw(part["quat"]), part["size"][0], part["size"][1]),
-                             fill=color, outline=TEXT)
+                draw.polygon(
+                    self._footprint(cx, cy, heading + yaw(part["quat"]), part["size"][0], part["size"][1]),
+                    fill=color,
+                    outline=TEXT,
+                )
             else:
                 r = part["size"][0] * self.scale
                 u, v = self.pixel(cx, cy)
                 draw.ellipse([u - r, v - r, u + r, v + r], fill=color, outline=TEXT)
-

@@ -12,7 +12,10 @@ import numpy as np
 from eyesim.record.recording import Recording
 from eyesim.record.top_view import TopView
 
-CODECS = {".mp4": ("libx264", ["-crf", "23", "-preset", "veryfast"]), ".webm": ("libvpx-vp9", ["-b:v", "0", "-crf", "34"])}
+CODECS = {
+    ".mp4": ("libx264", ["-crf", "23", "-preset", "veryfast"]),
+    ".webm": ("libvpx-vp9", ["-b:v", "0", "-crf", "34"]),
+}
 
 
 def frame_times(start_us: int, end_us: int, fps: float, speed: float) -> list[int]:
@@ -30,12 +33,19 @@ def robot_paths(recording: Recording, until_us: int) -> dict[int, list[tuple[flo
     paths = {}
     for robot_id in recording.robot_ids:
         _, poses = recording.robot_track(robot_id)
-        paths[robot_id] = [tuple(p) for p in poses[:last + 1:step, :2].tolist()] + [tuple(poses[last, :2].tolist())]
+        paths[robot_id] = [tuple(p) for p in poses[: last + 1 : step, :2].tolist()] + [tuple(poses[last, :2].tolist())]
     return paths
 
 
-def render(recording: Recording, output: str | Path, fps: float = 30, speed: float = 1.0, size: int = 720,
-           start: float | None = None, end: float | None = None) -> int:
+def render(
+    recording: Recording,
+    output: str | Path,
+    fps: float = 30,
+    speed: float = 1.0,
+    size: int = 720,
+    start: float | None = None,
+    end: float | None = None,
+) -> int:
     """Writes the video; returns its number of frames. ValueError for bad options or file type."""
     output = Path(output)
     if output.suffix.lower() not in CODECS:
@@ -49,13 +59,23 @@ def render(recording: Recording, output: str | Path, fps: float = 30, speed: flo
     start_us = recording.start_us if start is None else round(start * 1e6)
     end_us = recording.end_us if end is None else round(end * 1e6)
     if not recording.start_us <= start_us <= end_us <= recording.end_us:
-        raise ValueError(f"--start/--end: the recording goes from {recording.start_us / 1e6:g} to "
-                         f"{recording.end_us / 1e6:g} s, and the start must come before the end")
+        raise ValueError(
+            f"--start/--end: the recording goes from {recording.start_us / 1e6:g} to "
+            f"{recording.end_us / 1e6:g} s, and the start must come before the end"
+        )
     view = TopView(recording.scene, size, recording.attachment("floor-texture"))
     trace = recording.scene["settings"].get("trace", False)
     codec, options = CODECS[output.suffix.lower()]
-    writer = imageio_ffmpeg.write_frames(str(output), view.size, fps=fps, codec=codec, pix_fmt_out="yuv420p",
-                                         output_params=options, macro_block_size=2, ffmpeg_log_level="error")
+    writer = imageio_ffmpeg.write_frames(
+        str(output),
+        view.size,
+        fps=fps,
+        codec=codec,
+        pix_fmt_out="yuv420p",
+        output_params=options,
+        macro_block_size=2,
+        ffmpeg_log_level="error",
+    )
     writer.send(None)
     times = frame_times(start_us, end_us, fps, speed)
     try:

@@ -36,8 +36,16 @@ class WheelMotor:
     parts added here. The torque exceeds what a small robot's wheels can transmit: a full-power
     step spins them up at once and they slip until the robot catches up."""
 
-    def __init__(self, spec: mujoco.MjSpec, name: str, target: str, transmission: mujoco.mjtTrn,
-                 ticks_per_rev: int, max_speed: float, torque: float):
+    def __init__(
+        self,
+        spec: mujoco.MjSpec,
+        name: str,
+        target: str,
+        transmission: mujoco.mjtTrn,
+        ticks_per_rev: int,
+        max_speed: float,
+        torque: float,
+    ):
         self.name = name
         self.transmission = transmission
         self.ticks_per_rev = ticks_per_rev

@@ -43,8 +43,9 @@ class BuildContext:
                 return component
         return None
 
-    def add_part(self, parent: mujoco.MjsBody, name: str, mass: float, shown: bool = False,
-                 **attributes) -> mujoco.MjsBody:
+    def add_part(
+        self, parent: mujoco.MjsBody, name: str, mass: float, shown: bool = False, **attributes
+    ) -> mujoco.MjsBody:
         """A body of the robot below `parent` (wheels, links, fingers): its mass counts towards the
         robot's mass, and it never collides with the robot's other parts. A `shown` part is drawn
         by the viewer from its geoms and moves there on its own (docs/viewer-channel.md)."""
@@ -94,8 +95,11 @@ def _finish_mass(spec: mujoco.MjSpec, body: mujoco.MjsBody, robot_type: RobotTyp
     body.explicitinertial = True
     body.mass = hull_mass
     body.ipos = [mm(v) for v in robot_type.center_of_mass]
-    body.inertia = [hull_mass * (width ** 2 + height ** 2) / 12, hull_mass * (length ** 2 + height ** 2) / 12,
-                    hull_mass * (length ** 2 + width ** 2) / 12]
+    body.inertia = [
+        hull_mass * (width**2 + height**2) / 12,
+        hull_mass * (length**2 + height**2) / 12,
+        hull_mass * (length**2 + width**2) / 12,
+    ]
 
 
 def _volume(geom: mujoco.MjsGeom) -> float:
@@ -103,15 +107,20 @@ def _volume(geom: mujoco.MjsGeom) -> float:
     a, b, c = geom.size
     if geom.type == mujoco.mjtGeom.mjGEOM_BOX:
         return 8 * a * b * c
-    ball = 4 / 3 * math.pi * a ** 3
+    ball = 4 / 3 * math.pi * a**3
     if geom.type == mujoco.mjtGeom.mjGEOM_SPHERE:
         return ball
     tube = math.pi * a * a * 2 * b
     return tube + ball if geom.type == mujoco.mjtGeom.mjGEOM_CAPSULE else tube
 
 
-def add_robot(spec: mujoco.MjSpec, robot_id: int, robot_type: RobotType, placement: RobotPlacement,
-              settings: Settings = Settings()) -> Robot:
+def add_robot(
+    spec: mujoco.MjSpec,
+    robot_id: int,
+    robot_type: RobotType,
+    placement: RobotPlacement,
+    settings: Settings = Settings(),
+) -> Robot:
     from eyesim.robot.components import FACTORIES
 
     name = f"robot{robot_id}"
@@ -125,6 +134,6 @@ def add_robot(spec: mujoco.MjSpec, robot_id: int, robot_type: RobotType, placeme
     # A robot's parts never collide with each other (a wheel rubbing its own hull, an arm link its base).
     bodies = [name, *robot.part_names]
     for i, first in enumerate(bodies):
-        for second in bodies[i + 1:]:
+        for second in bodies[i + 1 :]:
             spec.add_exclude(bodyname1=first, bodyname2=second)
     return robot

@@ -31,8 +31,12 @@ CELL_HEIGHT_PER_SIZE = 1.3  # cell height = ceil(1.3 * size) pixels
 FILES = {
     HELVETICA: ("DejaVuSans.ttf", "DejaVuSans-Bold.ttf", "DejaVuSans-Oblique.ttf", "DejaVuSans-BoldOblique.ttf"),
     TIMES: ("DejaVuSerif.ttf", "DejaVuSerif-Bold.ttf", "DejaVuSerif-Italic.ttf", "DejaVuSerif-BoldItalic.ttf"),
-    COURIER: ("DejaVuSansMono.ttf", "DejaVuSansMono-Bold.ttf", "DejaVuSansMono-Oblique.ttf",
-              "DejaVuSansMono-BoldOblique.ttf"),
+    COURIER: (
+        "DejaVuSansMono.ttf",
+        "DejaVuSansMono-Bold.ttf",
+        "DejaVuSansMono-Oblique.ttf",
+        "DejaVuSansMono-BoldOblique.ttf",
+    ),
 }
 
 
@@ -48,8 +52,9 @@ def cell_size(size: int) -> tuple[int, int]:
 def font_directory() -> Path:
     spec = importlib.util.find_spec("matplotlib")  # found, not imported: importing it is slow
     if spec is None or not spec.submodule_search_locations:
-        raise FontsMissing("the LCD fonts come from the matplotlib package, which is not installed "
-                           "(pip install matplotlib)")
+        raise FontsMissing(
+            "the LCD fonts come from the matplotlib package, which is not installed (pip install matplotlib)"
+        )
     return Path(next(iter(spec.submodule_search_locations))) / "mpl-data" / "fonts" / "ttf"
 
 
@@ -79,11 +84,11 @@ def glyph(font: int, variation: int, size: int, char: str) -> np.ndarray:
     cell = np.zeros((height, width), dtype=np.uint8)
     if columns.size == 0:
         return cell  # a space
-    ink = ink[:, columns[0]:columns[-1] + 1]
+    ink = ink[:, columns[0] : columns[-1] + 1]
     if ink.shape[1] > width:
         ink = np.asarray(Image.fromarray(ink).resize((width, height), Image.Resampling.LANCZOS))
     left = (width - ink.shape[1]) // 2
-    cell[:, left:left + ink.shape[1]] = ink
+    cell[:, left : left + ink.shape[1]] = ink
     return cell
 
 

@@ -24,8 +24,9 @@ class Robot:
     `shown_part_names` those the viewer draws on their own; `motors`, `encoders` and `servos` map
     RoBIOS numbers to the actuators of all components."""
 
-    def __init__(self, robot_id: int, robot_type: RobotType, placement: RobotPlacement, body_name: str,
-                 mounted: bool = False):
+    def __init__(
+        self, robot_id: int, robot_type: RobotType, placement: RobotPlacement, body_name: str, mounted: bool = False
+    ):
         self.id = robot_id
         self.type = robot_type
         self.name = robot_type.name

@@ -47,7 +47,7 @@ def _wav_seconds(data: bytes) -> float:
     for _ in range(WAV_CHUNKS):
         if offset + 8 > len(data) or (byte_rate and data_size is not None):
             break
-        chunk, size = data[offset:offset + 4], struct.unpack_from("<I", data, offset + 4)[0]
+        chunk, size = data[offset : offset + 4], struct.unpack_from("<I", data, offset + 4)[0]
         if chunk == b"fmt " and size >= 16:
             byte_rate = struct.unpack_from("<I", data, offset + 16)[0]
         elif chunk == b"data":

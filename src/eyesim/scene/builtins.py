@@ -17,9 +17,17 @@ FALLBACK_ROBOT = "S4"  # stands in for a robot whose definition file is missing
 # is missing (case-folded name -> built-in name). The EyeSim 6 examples and EyeSim VR test assets
 # name these (../shared/corpus); the built-in names stand in for themselves.
 STOCK_ROBOTS = {
-    "modelcar": "Car", "ackermann": "Car", "ackermann2": "Car",  # Ackermann cars (motor 1, servo 1)
-    "omni1": "Omni", "omni2": "Omni", "odw": "Omni",  # mecanum robots (motors 1-4 FL FR BL BR, PSDs 1-7)
-    "eve": "S4", "socbot": "S4", "s4bot": "S4", "s4y": "S4", "s4blue": "S4",  # two-wheeled EyeBots
+    "modelcar": "Car",
+    "ackermann": "Car",
+    "ackermann2": "Car",  # Ackermann cars (motor 1, servo 1)
+    "omni1": "Omni",
+    "omni2": "Omni",
+    "odw": "Omni",  # mecanum robots (motors 1-4 FL FR BL BR, PSDs 1-7)
+    "eve": "S4",
+    "socbot": "S4",
+    "s4bot": "S4",
+    "s4y": "S4",
+    "s4blue": "S4",  # two-wheeled EyeBots
     "labbot2": "LabBot",
 }
 

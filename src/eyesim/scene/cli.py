@@ -23,10 +23,12 @@ def register(subparsers) -> None:
     conv.add_argument("file", metavar="FILE")
     conv.add_argument("-o", "--output", metavar="OUT", help="output file ('-' or none: print it)")
     conv.set_defaults(func=run_convert)
-    sch = subparsers.add_parser("schema", help="print the JSON Schema of a file kind, or write them all: "
-                                "'eyesim schema export DIR'")
-    sch.add_argument("kind", metavar="KIND", help="scene, world, maze, robot or object (or sim, wld, maz, robi, esObj)"
-                     ", or export")
+    sch = subparsers.add_parser(
+        "schema", help="print the JSON Schema of a file kind, or write them all: 'eyesim schema export DIR'"
+    )
+    sch.add_argument(
+        "kind", metavar="KIND", help="scene, world, maze, robot or object (or sim, wld, maz, robi, esObj), or export"
+    )
     sch.add_argument("dir", metavar="DIR", nargs="?", help="export: the folder to write <kind>.schema.json to")
     sch.set_defaults(func=run_schema)
 
@@ -111,8 +113,10 @@ def run_schema(args) -> int:
         return 0
     kind = SCHEMA_ALIASES.get(args.kind.lower(), args.kind.lower())
     if kind not in KINDS:
-        print(f"eyesim schema: unknown kind {args.kind!r}: expected one of {', '.join(KINDS)} (or export DIR)",
-              file=sys.stderr)
+        print(
+            f"eyesim schema: unknown kind {args.kind!r}: expected one of {', '.join(KINDS)} (or export DIR)",
+            file=sys.stderr,
+        )
         return 2
     if args.dir is not None:
         print(f"eyesim schema: unexpected argument {args.dir!r} (only 'export' takes a folder)", file=sys.stderr)
@@ -122,5 +126,9 @@ def run_schema(args) -> int:
 
 
 def _internal(name: str, error: Exception) -> Diagnostic:
-    return Diagnostic("error", Location(str(name)), f"internal error while reading this file "
-                      f"({type(error).__name__}: {error}); please report it", "internal")
+    return Diagnostic(
+        "error",
+        Location(str(name)),
+        f"internal error while reading this file ({type(error).__name__}: {error}); please report it",
+        "internal",
+    )

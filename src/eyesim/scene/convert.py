@@ -13,8 +13,7 @@ from eyesim.scene.robi import write_robi
 from eyesim.scene.sim import write_sim
 from eyesim.scene.wld import write_wld
 
-TEXT_WRITERS = {"scene": write_sim, "world": write_wld, "maze": write_maz, "robot": write_robi,
-                "object": write_esobj}
+TEXT_WRITERS = {"scene": write_sim, "world": write_wld, "maze": write_maz, "robot": write_robi, "object": write_esobj}
 TEXT_SUFFIX = {"scene": ".sim", "world": ".wld", "maze": ".maz", "robot": ".robi", "object": ".esObj"}
 
 
@@ -35,7 +34,7 @@ def default_output(path: str | Path, suffix: str) -> Path:
     path = Path(path)
     if suffix == ".json":
         return path.with_name(path.name + ".json")
-    stem = path.name[:-len(".json")] if path.name.lower().endswith(".json") else path.name
+    stem = path.name[: -len(".json")] if path.name.lower().endswith(".json") else path.name
     if Path(stem).suffix.lower() == suffix.lower():
         return path.with_name(stem)
     return path.with_name(Path(stem).stem + suffix)

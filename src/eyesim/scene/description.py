@@ -165,7 +165,30 @@ class Scene:
     warnings: tuple[Diagnostic, ...] = ()
 
 
-__all__ = ["Location", "Pose", "Wall", "StartPosition", "ObjectPlacement", "Marker", "World", "Collider",
-           "ObjectType", "RobotPlacement", "Settings", "Diagnostic", "Scene", "RobotType", "ArmSpec", "GripperSpec",
-           "JointSpec", "CameraSpec", "LidarSpec", "PsdSpec", "ThrusterSpec", "BuoyancySpec", "DragSpec",
-           "SteeringSpec", "WheelSpec"]
+__all__ = [
+    "Location",
+    "Pose",
+    "Wall",
+    "StartPosition",
+    "ObjectPlacement",
+    "Marker",
+    "World",
+    "Collider",
+    "ObjectType",
+    "RobotPlacement",
+    "Settings",
+    "Diagnostic",
+    "Scene",
+    "RobotType",
+    "ArmSpec",
+    "GripperSpec",
+    "JointSpec",
+    "CameraSpec",
+    "LidarSpec",
+    "PsdSpec",
+    "ThrusterSpec",
+    "BuoyancySpec",
+    "DragSpec",
+    "SteeringSpec",
+    "WheelSpec",
+]

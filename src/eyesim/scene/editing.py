@@ -69,8 +69,11 @@ class Draft:
         world_source = Path(scene.world.source)
         world_file = world_source if world_source.is_file() and world_source.suffix.lower() != ".sim" else None
         world = scene.world
-        robot_files = tuple(t.source for name, t in scene.robot_types.items()
-                            if not _is_builtin(builtins.robot_path(name), t.source) and Path(t.source).is_file())
+        robot_files = tuple(
+            t.source
+            for name, t in scene.robot_types.items()
+            if not _is_builtin(builtins.robot_path(name), t.source) and Path(t.source).is_file()
+        )
         object_files, models = [], {}
         for name, t in scene.object_types.items():
             if _is_builtin(builtins.object_path(name), t.source):
@@ -80,27 +83,45 @@ class Draft:
             else:  # an obstacle named by its model file
                 models[name] = t.model or t.source
         robots = tuple(RobotItem(r.type_name, r.pose, r.program) for r in scene.robots)
-        own_objects = scene.objects[len(world.objects):]
+        own_objects = scene.objects[len(world.objects) :]
         objects = tuple(ObjectItem(o.type_name, o.pose, models.get(o.type_name), o.friction) for o in own_objects)
-        draft = cls(file, world, world_file, scene.settings, robot_files, tuple(object_files), robots, objects,
-                    scene.markers[len(world.markers):])
+        draft = cls(
+            file,
+            world,
+            world_file,
+            scene.settings,
+            robot_files,
+            tuple(object_files),
+            robots,
+            objects,
+            scene.markers[len(world.markers) :],
+        )
         if world_file is None:
             draft = draft.with_own_world()
         return draft
 
     def document(self) -> SimDocument:
         """The .sim document of this draft, every file by absolute path."""
-        placements = [Placement(type_name=r.type_name, x=r.pose.x, y=r.pose.y, phi=r.pose.phi, program=r.program)
-                      for r in self.robots]
+        placements = [
+            Placement(type_name=r.type_name, x=r.pose.x, y=r.pose.y, phi=r.pose.phi, program=r.program)
+            for r in self.robots
+        ]
         for o in self.objects:
             if o.model is not None:
-                placements.append(Placement(model=o.model, x=o.pose.x, y=o.pose.y, phi=o.pose.phi,
-                                            friction=o.friction or 0.0))
+                placements.append(
+                    Placement(model=o.model, x=o.pose.x, y=o.pose.y, phi=o.pose.phi, friction=o.friction or 0.0)
+                )
             else:
                 placements.append(Placement(type_name=o.type_name, x=o.pose.x, y=o.pose.y, phi=o.pose.phi))
-        return SimDocument(str(self.file), Reference(str(self.world_file)) if self.world_file else None,
-                           self.settings, tuple(Reference(p) for p in self.robot_files),
-                           tuple(Reference(p) for p in self.object_files), tuple(placements), self.markers)
+        return SimDocument(
+            str(self.file),
+            Reference(str(self.world_file)) if self.world_file else None,
+            self.settings,
+            tuple(Reference(p) for p in self.robot_files),
+            tuple(Reference(p) for p in self.object_files),
+            tuple(placements),
+            self.markers,
+        )
 
     def scene(self) -> Scene:
         """The Scene this draft describes, through the loader; SceneError when it refuses it."""
@@ -113,25 +134,44 @@ class Draft:
         if self.world_file is None and not (world.objects or world.markers or world.start_positions):
             return self
         balls = tuple(ObjectItem(o.type_name, o.pose, None, o.friction) for o in world.objects)
-        own = dataclasses.replace(world, source=str(self.file), objects=(), markers=(), start_positions=(),
-                                  start_pose=None)
-        return dataclasses.replace(self, world=own, world_file=None, objects=balls + self.objects,
-                                   markers=world.markers + self.markers)
+        own = dataclasses.replace(
+            world, source=str(self.file), objects=(), markers=(), start_positions=(), start_pose=None
+        )
+        return dataclasses.replace(
+            self, world=own, world_file=None, objects=balls + self.objects, markers=world.markers + self.markers
+        )
 
     # -- what the browser shows --------------------------------------------------------------
     def items(self) -> dict:
         """The editable things, numbered as edits name them: objects and markers counting the
         world's own first (as the simulator numbers them)."""
-        world_objects = [{"type": o.type_name, "x": o.pose.x, "y": o.pose.y, "phi": o.pose.phi, "world": True}
-                         for o in self.world.objects]
+        world_objects = [
+            {"type": o.type_name, "x": o.pose.x, "y": o.pose.y, "phi": o.pose.phi, "world": True}
+            for o in self.world.objects
+        ]
         return {
-            "robots": [{"type": r.type_name, "x": r.pose.x, "y": r.pose.y, "phi": r.pose.phi,
-                        "program": r.program} for r in self.robots],
-            "objects": world_objects + [{"type": o.type_name, "x": o.pose.x, "y": o.pose.y, "phi": o.pose.phi,
-                                         "world": False} for o in self.objects],
+            "robots": [
+                {"type": r.type_name, "x": r.pose.x, "y": r.pose.y, "phi": r.pose.phi, "program": r.program}
+                for r in self.robots
+            ],
+            "objects": world_objects
+            + [
+                {"type": o.type_name, "x": o.pose.x, "y": o.pose.y, "phi": o.pose.phi, "world": False}
+                for o in self.objects
+            ],
             "markers": [{"x": m.x, "y": m.y, "color": list(m.color)} for m in (*self.world.markers, *self.markers)],
-            "walls": [{"x1": w.x1, "y1": w.y1, "x2": w.x2, "y2": w.y2, "thickness": w.thickness, "height": w.height,
-                       "color": list(w.color)} for w in self.world.walls],
+            "walls": [
+                {
+                    "x1": w.x1,
+                    "y1": w.y1,
+                    "x2": w.x2,
+                    "y2": w.y2,
+                    "thickness": w.thickness,
+                    "height": w.height,
+                    "color": list(w.color),
+                }
+                for w in self.world.walls
+            ],
             "floor": {"width": self.world.floor_width, "height": self.world.floor_height},
         }
 
@@ -178,23 +218,27 @@ def _type_name(op: dict, locate, files: tuple[str, ...], load, builtin_path, bui
         return name, files if str(path) in files else files + (str(path),)
     if isinstance(op.get("type"), str) and builtin_path(op["type"]) is not None:
         return builtin_path(op["type"]).stem, files
-    raise EditError(f"{op.get('op')}: unknown {op.get('op', '').removeprefix('add-')} type {op.get('type')!r}: "
-                    f"expected one of {', '.join(builtin_names())} or {suffix} file")
+    raise EditError(
+        f"{op.get('op')}: unknown {op.get('op', '').removeprefix('add-')} type {op.get('type')!r}: "
+        f"expected one of {', '.join(builtin_names())} or {suffix} file"
+    )
 
 
 def add_robot(draft: Draft, op: dict, locate) -> Draft:
-    name, robot_files = _type_name(op, locate, draft.robot_files, load_robot_type, builtins.robot_path,
-                                   builtins.robot_names, "a .robi")
+    name, robot_files = _type_name(
+        op, locate, draft.robot_files, load_robot_type, builtins.robot_path, builtins.robot_names, "a .robi"
+    )
     program = str(locate(op["program"])) if isinstance(op.get("program"), dict) else None
-    return dataclasses.replace(draft, robot_files=robot_files,
-                               robots=draft.robots + (RobotItem(name, _pose(op), program),))
+    return dataclasses.replace(
+        draft, robot_files=robot_files, robots=draft.robots + (RobotItem(name, _pose(op), program),)
+    )
 
 
 def add_object(draft: Draft, op: dict, locate) -> Draft:
-    name, object_files = _type_name(op, locate, draft.object_files, load_object_type, builtins.object_path,
-                                    builtins.object_names, "an .esObj")
-    return dataclasses.replace(draft, object_files=object_files,
-                               objects=draft.objects + (ObjectItem(name, _pose(op)),))
+    name, object_files = _type_name(
+        op, locate, draft.object_files, load_object_type, builtins.object_path, builtins.object_names, "an .esObj"
+    )
+    return dataclasses.replace(draft, object_files=object_files, objects=draft.objects + (ObjectItem(name, _pose(op)),))
 
 
 def add_marker(draft: Draft, op: dict, locate) -> Draft:
@@ -232,8 +276,9 @@ def move(draft: Draft, op: dict, locate) -> Draft:
         return dataclasses.replace(draft, markers=tuple(markers))
     index = _index(op, len(draft.world.walls), "wall")
     walls = list(draft.world.walls)
-    walls[index] = dataclasses.replace(walls[index], x1=_number(op, "x1"), y1=_number(op, "y1"),
-                                       x2=_number(op, "x2"), y2=_number(op, "y2"))
+    walls[index] = dataclasses.replace(
+        walls[index], x1=_number(op, "x1"), y1=_number(op, "y1"), x2=_number(op, "x2"), y2=_number(op, "y2")
+    )
     return dataclasses.replace(draft, world=dataclasses.replace(draft.world, walls=tuple(walls)))
 
 
@@ -241,16 +286,16 @@ def delete(draft: Draft, op: dict, locate) -> Draft:
     kind = op["kind"]
     if kind == "robot":
         index = _index(op, len(draft.robots), "robot")
-        return dataclasses.replace(draft, robots=draft.robots[:index] + draft.robots[index + 1:])
+        return dataclasses.replace(draft, robots=draft.robots[:index] + draft.robots[index + 1 :])
     draft = _owning(draft, kind, op)
     if kind == "object":
         index = _index(op, len(draft.objects), "object")
-        return dataclasses.replace(draft, objects=draft.objects[:index] + draft.objects[index + 1:])
+        return dataclasses.replace(draft, objects=draft.objects[:index] + draft.objects[index + 1 :])
     if kind == "marker":
         index = _index(op, len(draft.markers), "marker")
-        return dataclasses.replace(draft, markers=draft.markers[:index] + draft.markers[index + 1:])
+        return dataclasses.replace(draft, markers=draft.markers[:index] + draft.markers[index + 1 :])
     index = _index(op, len(draft.world.walls), "wall")
-    walls = draft.world.walls[:index] + draft.world.walls[index + 1:]
+    walls = draft.world.walls[:index] + draft.world.walls[index + 1 :]
     return dataclasses.replace(draft, world=dataclasses.replace(draft.world, walls=walls))
 
 
@@ -339,9 +384,18 @@ def _definition(load, path: Path):
         raise EditError(f"cannot read {path.name}: {error.strerror}") from None
 
 
-OPERATIONS = {"add-robot": add_robot, "add-object": add_object, "add-marker": add_marker, "add-wall": add_wall,
-              "move": move, "delete": delete, "duplicate": duplicate, "set-floor": set_floor,
-              "set-program": set_program, "set-properties": set_properties}
+OPERATIONS = {
+    "add-robot": add_robot,
+    "add-object": add_object,
+    "add-marker": add_marker,
+    "add-wall": add_wall,
+    "move": move,
+    "delete": delete,
+    "duplicate": duplicate,
+    "set-floor": set_floor,
+    "set-program": set_program,
+    "set-properties": set_properties,
+}
 
 
 # -- making way ------------------------------------------------------------------------------
@@ -374,12 +428,13 @@ def make_way(draft: Draft, scene: Scene, kind: str, index: int) -> tuple[Draft, 
     pose, overlapped = clear_place(mine, robots + objects, scene.robot_types, scene.object_types, scene.world.walls)
     what = f"{kind.capitalize()} {index + 1} ({mine.type_name})"
     if pose is None:
-        raise EditError(f"{what} at ({mine.pose.x:.0f}, {mine.pose.y:.0f}) overlaps {overlapped} and there is no "
-                        "free place near it: put it somewhere with more room")
+        raise EditError(
+            f"{what} at ({mine.pose.x:.0f}, {mine.pose.y:.0f}) overlaps {overlapped} and there is no "
+            "free place near it: put it somewhere with more room"
+        )
     if not overlapped:
         return draft, ""
-    moved = move(draft, {"op": "move", "kind": kind, "index": index, "x": pose.x, "y": pose.y, "phi": pose.phi},
-                 None)
+    moved = move(draft, {"op": "move", "kind": kind, "index": index, "x": pose.x, "y": pose.y, "phi": pose.phi}, None)
     return moved, f"{what} overlapped {overlapped}: moved to ({pose.x:.0f}, {pose.y:.0f}), clear of it"
 
 
@@ -390,8 +445,18 @@ def settled(draft: Draft, scene: Scene) -> Draft:
     for kind, placed, built in (("robot", robots, scene.robots), ("object", objects, scene.objects)):
         for index, (before, after) in enumerate(zip(placed, built)):
             if (before.pose.x, before.pose.y) != (after.pose.x, after.pose.y):
-                draft = move(draft, {"op": "move", "kind": kind, "index": index, "x": after.pose.x,
-                                     "y": after.pose.y, "phi": after.pose.phi}, None)
+                draft = move(
+                    draft,
+                    {
+                        "op": "move",
+                        "kind": kind,
+                        "index": index,
+                        "x": after.pose.x,
+                        "y": after.pose.y,
+                        "phi": after.pose.phi,
+                    },
+                    None,
+                )
     return draft
 
 
@@ -404,19 +469,22 @@ def saved_files(draft: Draft, target: Path, as_json: bool) -> dict[Path, str]:
     files: dict[Path, str] = {}
     world_file = draft.world_file
     if world_file is None and (draft.world.walls or draft.world.floor_width or draft.world.floor_texture):
-        stem = target.name[:-len(".json")] if target.name.lower().endswith(".json") else target.stem
+        stem = target.name[: -len(".json")] if target.name.lower().endswith(".json") else target.stem
         stem = Path(stem).stem
         world_file = folder / (f"{stem}.world.json" if as_json else f"{stem}.wld")
         world = dataclasses.replace(draft.world, floor_texture=_relative(draft.world.floor_texture, folder))
         files[world_file] = dumps(to_json("world", world)) if as_json else write_wld(world)
     document = dataclasses.replace(
-        draft.document(), source=str(target),
+        draft.document(),
+        source=str(target),
         world=Reference(_relative(str(world_file), folder)) if world_file else None,
         robot_files=tuple(Reference(_relative(p, folder)) for p in draft.robot_files),
         object_files=tuple(Reference(_relative(p, folder)) for p in draft.object_files),
-        placements=tuple(dataclasses.replace(p, program=_relative(p.program, folder),
-                                             model=_relative(p.model, folder))
-                         for p in draft.document().placements))
+        placements=tuple(
+            dataclasses.replace(p, program=_relative(p.program, folder), model=_relative(p.model, folder))
+            for p in draft.document().placements
+        ),
+    )
     files[target] = dumps(to_json("scene", document)) if as_json else write_sim(document)
     return files
 

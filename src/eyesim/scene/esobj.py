@@ -16,16 +16,21 @@ from eyesim.scene.lexer import Line, format_number, integer, number, quote_token
 from eyesim.scene.parts.part import VR_AXIS, vr_to_robot
 
 SHAPES = {"box": 6, "sphere": 4, "capsule": 6, "cylinder": 6}
-FORMS = {"box": "<cx> <cy> <cz> <sx> <sy> <sz>", "sphere": "<cx> <cy> <cz> <r>",
-         "capsule": "<cx> <cy> <cz> <r> <h> <x|y|z>", "cylinder": "<cx> <cy> <cz> <r> <h> <x|y|z>"}
+FORMS = {
+    "box": "<cx> <cy> <cz> <sx> <sy> <sz>",
+    "sphere": "<cx> <cy> <cz> <r>",
+    "capsule": "<cx> <cy> <cz> <r> <h> <x|y|z>",
+    "cylinder": "<cx> <cy> <cz> <r> <h> <x|y|z>",
+}
 
 
 def parse_esobj(text: str, source: str, diagnostics: Diagnostics, where: dict | None = None) -> ObjectType:
     """An ObjectType from .esObj text; the model path stays as written (resolved by the loader).
     `where`, when given, receives the location of the 'model' reference."""
     lines = split_lines(text, source, diagnostics)
-    ours = any(l.keyword.lower() == "dialect" and len(l.args) == 1 and l.args[0].text.lower() == "eyesim"
-               for l in lines)
+    ours = any(
+        l.keyword.lower() == "dialect" and len(l.args) == 1 and l.args[0].text.lower() == "eyesim" for l in lines
+    )
     reader = _ObjectReader(source, diagnostics, ours)
     for line in lines:
         reader.statement(line)
@@ -80,7 +85,7 @@ class _ObjectReader(KeywordReader):
     def kw_mass(self, line: Line) -> None:
         if not self.arity(line, (1, 4), "<kg> [<x> <y> <z>]"):
             return
-        values = self.numbers(line, 1, ("mass in kg", "centre x", "centre y", "centre z")[:len(line.args)])
+        values = self.numbers(line, 1, ("mass in kg", "centre x", "centre y", "centre z")[: len(line.args)])
         if values:
             if values[0] <= 0:
                 self.error(line, f"mass: expected kg > 0, found {quoted(line.args[0].text)}", 1, "bad-value")
@@ -99,22 +104,31 @@ class _ObjectReader(KeywordReader):
             found = quoted(line.tokens[first].text) if len(line.tokens) > first else "nothing"
             self.error(line, f"collider: expected box, sphere, capsule or cylinder, found {found}", first)
             return
-        args = line.tokens[first + 1:]
+        args = line.tokens[first + 1 :]
         if len(args) != SHAPES[kind]:
             found = quoted(" ".join(t.text for t in args)) if args else "nothing"
-            self.error(line, f"{kind}: expected {SHAPES[kind]} arguments ({kind} {FORMS[kind]}), "
-                             f"found {len(args)}: {found}", first)
+            self.error(
+                line,
+                f"{kind}: expected {SHAPES[kind]} arguments ({kind} {FORMS[kind]}), found {len(args)}: {found}",
+                first,
+            )
             return
         count = 4 if kind == "sphere" else 6 if kind == "box" else 5
-        names = ("centre x", "centre y", "centre z") + {"box": ("size x", "size y", "size z"),
-                                                         "sphere": ("radius",)}.get(kind, ("radius", "height"))
+        names = ("centre x", "centre y", "centre z") + {
+            "box": ("size x", "size y", "size z"),
+            "sphere": ("radius",),
+        }.get(kind, ("radius", "height"))
         values = self.numbers(line, first + 1, names[:count])
         if not values:
             return
         for i, v in enumerate(values[3:]):
             if v <= 0:
-                self.error(line, f"{kind}: expected {names[3 + i]} > 0, found {quoted(args[3 + i].text)}",
-                           first + 4 + i, "bad-value")
+                self.error(
+                    line,
+                    f"{kind}: expected {names[3 + i]} > 0, found {quoted(args[3 + i].text)}",
+                    first + 4 + i,
+                    "bad-value",
+                )
                 return
         axis = "y" if not self.ours else "z"
         if kind in ("capsule", "cylinder"):
@@ -129,15 +143,19 @@ class _ObjectReader(KeywordReader):
             values = self.numbers(line, 1, ("volume in litres",))
             if values:
                 if values[0] < 0:
-                    self.error(line, f"buoyancy: expected a volume >= 0, found {quoted(line.args[0].text)}", 1,
-                               "bad-value")
+                    self.error(
+                        line, f"buoyancy: expected a volume >= 0, found {quoted(line.args[0].text)}", 1, "bad-value"
+                    )
                 else:
                     self.fields["buoyancy"] = values[0]
 
     def kw_fixed(self, line: Line) -> None:
         if line.args:
-            self.diagnostics.warning(self.at(line, 1), f"fixed takes no arguments, found "
-                                     f"{quoted(line.args[0].text)}; ignored", "ignored-argument")
+            self.diagnostics.warning(
+                self.at(line, 1),
+                f"fixed takes no arguments, found {quoted(line.args[0].text)}; ignored",
+                "ignored-argument",
+            )
         self.fields["fixed"] = True
 
     def kw_color(self, line: Line) -> None:
@@ -173,8 +191,12 @@ class _ObjectReader(KeywordReader):
             axis = VR_AXIS[axis]
             if kind == "box":
                 size = [size[2], size[0], size[1]]
-        return Collider(kind, tuple(v if self.ours else _scaled(v, scale) for v in size), centre,
-                        axis if kind in ("capsule", "cylinder") else "z")
+        return Collider(
+            kind,
+            tuple(v if self.ours else _scaled(v, scale) for v in size),
+            centre,
+            axis if kind in ("capsule", "cylinder") else "z",
+        )
 
 
 def _scaled(value: float, scale: float) -> float:

@@ -108,8 +108,9 @@ def _scene_json(doc: SimDocument) -> dict:
     if doc.world is not None:
         data["world"] = doc.world.path
     if doc.settings != Settings():
-        data["settings"] = {name: value for name, value in vars(doc.settings).items()
-                            if value != getattr(Settings(), name)}
+        data["settings"] = {
+            name: value for name, value in vars(doc.settings).items() if value != getattr(Settings(), name)
+        }
     if doc.robot_files:
         data["robot_files"] = [r.path for r in doc.robot_files]
     if doc.object_files:
@@ -149,8 +150,9 @@ _WRITERS = {
 
 
 # -- plain data to documents -------------------------------------------------------------------
-def parse_json(text: str, source: str, diagnostics: Diagnostics, expected: tuple[str, ...] = KINDS,
-               where: dict | None = None):
+def parse_json(
+    text: str, source: str, diagnostics: Diagnostics, expected: tuple[str, ...] = KINDS, where: dict | None = None
+):
     """(kind, document) from JSON text, or (kind or None, None) after reporting every problem.
     `where`, when given, receives the locations of the 'floor_texture' and 'model' references."""
     try:
@@ -165,12 +167,13 @@ def parse_json(text: str, source: str, diagnostics: Diagnostics, expected: tuple
         diagnostics.error(Location(source, 1, 1), "invalid JSON: nested too deeply", "json")
         return None, None
     fmt = data.get("format") if isinstance(data, dict) else None
-    kind = fmt[len("eyesim."):] if isinstance(fmt, str) and fmt.startswith("eyesim.") else None
+    kind = fmt[len("eyesim.") :] if isinstance(fmt, str) and fmt.startswith("eyesim.") else None
     if kind not in expected:
         names = ", ".join(f"eyesim.{k}" for k in expected)
         found = quoted(str(fmt)) if fmt is not None else "no format"
-        diagnostics.error(Location(source, 1, 1),
-                          f"expected a JSON object with \"format\" one of {names}, found {found}", "json")
+        diagnostics.error(
+            Location(source, 1, 1), f'expected a JSON object with "format" one of {names}, found {found}', "json"
+        )
         return None, None
     if _too_many(data, source, diagnostics):
         return kind, None
@@ -193,16 +196,26 @@ def parse_json(text: str, source: str, diagnostics: Diagnostics, expected: tuple
 def _too_many(data: dict, source: str, diagnostics: Diagnostics) -> bool:
     """Past a count limit (checked before the schema: validating 100 000 walls takes seconds)."""
     where = Location(source, 1, 1)
-    counts = [("walls", limits.MAX_WALLS, "a world"), ("placements", limits.MAX_ROBOTS + limits.MAX_OBJECTS, "a scene"),
-              ("markers", limits.MAX_MARKERS, "a scene"), ("rows", limits.MAX_LINES, "a maze")]
-    if any(isinstance(data.get(key), list) and limits.too_many(len(data[key]), limit, key, where, diagnostics, scope)
-           for key, limit, scope in counts):
+    counts = [
+        ("walls", limits.MAX_WALLS, "a world"),
+        ("placements", limits.MAX_ROBOTS + limits.MAX_OBJECTS, "a scene"),
+        ("markers", limits.MAX_MARKERS, "a scene"),
+        ("rows", limits.MAX_LINES, "a maze"),
+    ]
+    if any(
+        isinstance(data.get(key), list) and limits.too_many(len(data[key]), limit, key, where, diagnostics, scope)
+        for key, limit, scope in counts
+    ):
         return True
     rows = data.get("rows")
     longest = max((len(row) for row in rows if isinstance(row, str)), default=0) if isinstance(rows, list) else 0
     if longest > limits.MAX_LINE_CHARS:  # a maze row is a line of a .maz file
-        diagnostics.error(where, f"a maze row is {longest} characters long, more than {limits.MAX_LINE_CHARS}, the "
-                          "limit for a line of a scene file", limits.LIMIT)
+        diagnostics.error(
+            where,
+            f"a maze row is {longest} characters long, more than {limits.MAX_LINE_CHARS}, the "
+            "limit for a line of a scene file",
+            limits.LIMIT,
+        )
         return True
     return False
 
@@ -256,8 +269,11 @@ def _report(error: "jsonschema.ValidationError", positions: _Positions, diagnost
     if error.validator == "additionalProperties":
         allowed = sorted(error.schema.get("properties", {}))
         for key in sorted(k for k in error.instance if k not in error.schema.get("properties", {})):
-            _add(diagnostics, positions.key(path + [key]), f"{pointer(path + [key])}: unknown property "
-                 f"{quoted(key)}: expected one of {', '.join(allowed)}")
+            _add(
+                diagnostics,
+                positions.key(path + [key]),
+                f"{pointer(path + [key])}: unknown property {quoted(key)}: expected one of {', '.join(allowed)}",
+            )
         return
     _add(diagnostics, positions.value(path), f"{pointer(path)}: {_message(error)}")
 
@@ -302,8 +318,12 @@ def _message(error: "jsonschema.ValidationError") -> str:
             branches.setdefault(sub.relative_schema_path[0], []).append(sub)
         nearest = min(branches.values(), key=len)
         form = nearest[0].schema.get("description", "an allowed form")
-        details = "; ".join(f"{pointer(list(e.absolute_path))}: {_message(e)}" if list(e.absolute_path) !=
-                            list(error.absolute_path) else _message(e) for e in nearest)
+        details = "; ".join(
+            f"{pointer(list(e.absolute_path))}: {_message(e)}"
+            if list(e.absolute_path) != list(error.absolute_path)
+            else _message(e)
+            for e in nearest
+        )
         return f"matches none of the allowed forms; nearest is {form}: {details}"
     return error.message
 
@@ -350,14 +370,19 @@ def _body(data: dict) -> dict:
 
 def _read_world(data, source, positions, diagnostics) -> World:
     body = _body(data)
-    balls = tuple(ObjectPlacement(BALL_TYPE, Pose(float(b["x"]), float(b["y"])), positions.value(["balls", i]))
-                  for i, b in enumerate(body.pop("balls", [])))
+    balls = tuple(
+        ObjectPlacement(BALL_TYPE, Pose(float(b["x"]), float(b["y"])), positions.value(["balls", i]))
+        for i, b in enumerate(body.pop("balls", []))
+    )
     world = build(World, {**body, "source": source})
     walls = []
     for i, wall in enumerate(world.walls):
         if (wall.x1, wall.y1) == (wall.x2, wall.y2):
-            diagnostics.warning(positions.value(["walls", i]), f"{pointer(['walls', i])}: zero-length wall: start "
-                                "and end are the same point; skipped", "degenerate-wall")
+            diagnostics.warning(
+                positions.value(["walls", i]),
+                f"{pointer(['walls', i])}: zero-length wall: start and end are the same point; skipped",
+                "degenerate-wall",
+            )
         else:
             walls.append(wall)
     return dataclasses.replace(world, source=source, walls=tuple(walls), objects=balls)
@@ -365,8 +390,11 @@ def _read_world(data, source, positions, diagnostics) -> World:
 
 def _read_maze(data, source, positions, diagnostics) -> MazeDocument:
     rows = tuple(data["rows"])
-    return MazeDocument(rows, float(data["cell_size"]) if "cell_size" in data else None,
-                        tuple(positions.value(["rows", i]).line for i in range(len(rows))))
+    return MazeDocument(
+        rows,
+        float(data["cell_size"]) if "cell_size" in data else None,
+        tuple(positions.value(["rows", i]).line for i in range(len(rows))),
+    )
 
 
 def _read_robot(data, source, positions, diagnostics) -> RobotType:
@@ -384,18 +412,29 @@ def _read_object(data, source, positions, diagnostics) -> ObjectType:
 def _read_scene(data, source, positions, diagnostics) -> SimDocument:
     world = Reference(data["world"], positions.value(["world"])) if "world" in data else None
     settings = Settings(**data.get("settings", {}))
-    robot_files = tuple(Reference(p, positions.value(["robot_files", i]))
-                        for i, p in enumerate(data.get("robot_files", [])))
-    object_files = tuple(Reference(p, positions.value(["object_files", i]))
-                         for i, p in enumerate(data.get("object_files", [])))
+    robot_files = tuple(
+        Reference(p, positions.value(["robot_files", i])) for i, p in enumerate(data.get("robot_files", []))
+    )
+    object_files = tuple(
+        Reference(p, positions.value(["object_files", i])) for i, p in enumerate(data.get("object_files", []))
+    )
     placements = []
     for i, p in enumerate(data.get("placements", [])):
         has_xy = "x" in p
-        placements.append(Placement(
-            type_name=p.get("type"), x=_float(p.get("x")), y=_float(p.get("y")),
-            phi=_float(p.get("phi", 0.0 if has_xy else None)), start=p.get("start"), program=p.get("program"),
-            robi=p.get("robi"), model=p.get("model"), friction=_float(p.get("friction")),
-            location=positions.value(["placements", i])))
+        placements.append(
+            Placement(
+                type_name=p.get("type"),
+                x=_float(p.get("x")),
+                y=_float(p.get("y")),
+                phi=_float(p.get("phi", 0.0 if has_xy else None)),
+                start=p.get("start"),
+                program=p.get("program"),
+                robi=p.get("robi"),
+                model=p.get("model"),
+                friction=_float(p.get("friction")),
+                location=positions.value(["placements", i]),
+            )
+        )
     markers = tuple(build(Marker, m) for m in data.get("markers", []))
     return SimDocument(source, world, settings, robot_files, object_files, tuple(placements), markers)
 
@@ -404,5 +443,10 @@ def _float(value):
     return None if value is None else float(value) + 0.0
 
 
-_READERS = {"world": _read_world, "maze": _read_maze, "robot": _read_robot, "object": _read_object,
-            "scene": _read_scene}
+_READERS = {
+    "world": _read_world,
+    "maze": _read_maze,
+    "robot": _read_robot,
+    "object": _read_object,
+    "scene": _read_scene,
+}

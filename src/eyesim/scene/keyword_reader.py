@@ -29,8 +29,9 @@ class KeywordReader:
         handler(line)
 
     def unknown_keyword(self, line: Line) -> None:
-        self.diagnostics.warning(self.at(line), f"unknown keyword {quoted(line.keyword)}: line ignored",
-                                 "unknown-keyword")
+        self.diagnostics.warning(
+            self.at(line), f"unknown keyword {quoted(line.keyword)}: line ignored", "unknown-keyword"
+        )
 
     def arity(self, line: Line, counts: tuple[int, ...], form: str) -> bool:
         """True when the line has one of the argument counts; else reports what it should look like."""
@@ -40,8 +41,12 @@ class KeywordReader:
         found = quoted(" ".join(t.text for t in line.args)) if line.args else "nothing"
         wanted = " or ".join(str(c) for c in counts)
         index = max(counts) + 1 if n > max(counts) else 0  # the first extra argument, or the keyword
-        self.error(line, f"{line.keyword}: expected {wanted} argument{'s' if counts != (1,) else ''} "
-                         f"({line.keyword} {form}), found {n}: {found}", index)
+        self.error(
+            line,
+            f"{line.keyword}: expected {wanted} argument{'s' if counts != (1,) else ''} "
+            f"({line.keyword} {form}), found {n}: {found}",
+            index,
+        )
         return False
 
     def numbers(self, line: Line, first: int, names: tuple[str, ...]) -> list[float] | None:
@@ -51,8 +56,9 @@ class KeywordReader:
             token = line.tokens[first + offset]
             value = number(token.text)
             if value is None:
-                self.error(line, f"{line.keyword}: expected {name} (a number), found {quoted(token.text)}",
-                           first + offset)
+                self.error(
+                    line, f"{line.keyword}: expected {name} (a number), found {quoted(token.text)}", first + offset
+                )
                 ok = False
             values.append(value)
         return values if ok else None

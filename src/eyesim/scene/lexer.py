@@ -57,8 +57,9 @@ def read_text(path: Path) -> str:
     return decode(path.read_bytes())
 
 
-def split_lines(text: str, file: str, diagnostics: Diagnostics, comment_chars: str = "",
-                strict: bool = True) -> list[Line]:
+def split_lines(
+    text: str, file: str, diagnostics: Diagnostics, comment_chars: str = "", strict: bool = True
+) -> list[Line]:
     """The statements of a keyword file. Lines whose first non-blank character is '#' or ';' are
     comments in every format; `comment_chars` also start a comment after data (.wld uses ';').
     Double or single quotes group a token with spaces. An unterminated quote runs to the end of
@@ -77,8 +78,9 @@ def split_lines(text: str, file: str, diagnostics: Diagnostics, comment_chars: s
 _PLAIN_TOKEN = re.compile(r"[^ \t\f\v]+")
 
 
-def _tokens(raw: str, number: int, file: str, diagnostics: Diagnostics, comment_chars: str,
-            strict: bool) -> list[Token]:
+def _tokens(
+    raw: str, number: int, file: str, diagnostics: Diagnostics, comment_chars: str, strict: bool
+) -> list[Token]:
     if '"' not in raw and "'" not in raw and not any(c in raw for c in comment_chars):
         # most lines: no quotes, no comment; the regular expression is much faster
         return [Token(m.group(), m.start() + 1) for m in _PLAIN_TOKEN.finditer(raw)]
@@ -95,13 +97,14 @@ def _tokens(raw: str, number: int, file: str, diagnostics: Diagnostics, comment_
         if c in "\"'":
             end = raw.find(c, i + 1)
             if end < 0:
-                message = (f"unterminated quote: expected a closing {c} before the end of the line, "
-                           f"found {quoted(raw[i:])}")
+                message = (
+                    f"unterminated quote: expected a closing {c} before the end of the line, found {quoted(raw[i:])}"
+                )
                 where = Location(file, number, start + 1)
                 (diagnostics.error if strict else diagnostics.warning)(where, message)
-                tokens.append(Token(raw[i + 1:].rstrip(_WHITESPACE), start + 1, True))
+                tokens.append(Token(raw[i + 1 :].rstrip(_WHITESPACE), start + 1, True))
                 break
-            tokens.append(Token(raw[i + 1:end], start + 1, True))
+            tokens.append(Token(raw[i + 1 : end], start + 1, True))
             i = end + 1
             continue
         while i < n and raw[i] not in _WHITESPACE and raw[i] not in comment_chars:

@@ -34,8 +34,11 @@ def read_limited(path) -> bytes:
 def file_too_big(data: bytes, source: str, diagnostics: Diagnostics) -> bool:
     if len(data) <= MAX_FILE_BYTES:
         return False
-    diagnostics.error(Location(source), f"the file is larger than {MAX_FILE_BYTES // (1024 * 1024)} MB, the limit "
-                      "for a scene file: not read", LIMIT)
+    diagnostics.error(
+        Location(source),
+        f"the file is larger than {MAX_FILE_BYTES // (1024 * 1024)} MB, the limit for a scene file: not read",
+        LIMIT,
+    )
     return True
 
 
@@ -45,14 +48,21 @@ def lines_too_long(text: str, source: str, diagnostics: Diagnostics) -> bool:
     lines = text.split("\n")
     count = len(lines) - (lines[-1] == "")  # a last newline ends a line, it does not start one
     if count > MAX_LINES:
-        diagnostics.error(Location(source, MAX_LINES + 1), f"the file has {count} lines, more than "
-                          f"{MAX_LINES}, the limit for a scene file: not read", LIMIT)
+        diagnostics.error(
+            Location(source, MAX_LINES + 1),
+            f"the file has {count} lines, more than {MAX_LINES}, the limit for a scene file: not read",
+            LIMIT,
+        )
         return True
     if max(map(len, lines)) <= MAX_LINE_CHARS:  # the common case, without a Python loop
         return False
     number = next(n for n, line in enumerate(lines, start=1) if len(line) > MAX_LINE_CHARS)
-    diagnostics.error(Location(source, number), f"the line is {len(lines[number - 1])} characters long, more than "
-                      f"{MAX_LINE_CHARS}, the limit for a line of a scene file: not read", LIMIT)
+    diagnostics.error(
+        Location(source, number),
+        f"the line is {len(lines[number - 1])} characters long, more than "
+        f"{MAX_LINE_CHARS}, the limit for a line of a scene file: not read",
+        LIMIT,
+    )
     return True
 
 
@@ -64,13 +74,13 @@ def path_too_long(reference: str) -> str | None:
         return f"is {size} bytes long, more than {MAX_PATH_BYTES}, the limit for a file name"
     longest = max((len(part.encode("utf-8", "replace")) for part in reference.replace("\\", "/").split("/")))
     if longest > MAX_NAME_BYTES:
-        return (f"has a folder or file name of {longest} bytes, more than {MAX_NAME_BYTES}, the limit of "
-                "the file system")
+        return f"has a folder or file name of {longest} bytes, more than {MAX_NAME_BYTES}, the limit of the file system"
     return None
 
 
-def too_many(count: int, limit: int, what: str, where: Location, diagnostics: Diagnostics,
-             scope: str = "a scene") -> bool:
+def too_many(
+    count: int, limit: int, what: str, where: Location, diagnostics: Diagnostics, scope: str = "a scene"
+) -> bool:
     """True, after an error at `where`, when `count` things are more than `limit`."""
     if count <= limit:
         return False

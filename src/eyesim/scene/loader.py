@@ -13,8 +13,18 @@ from pathlib import Path
 
 from eyesim.paths import PROGRAM_SOURCE_SUFFIXES
 from eyesim.scene import builtins, limits, paths
-from eyesim.scene.description import (Collider, Diagnostic, Location, ObjectPlacement, ObjectType, Pose,
-                                      RobotPlacement, RobotType, Scene, World)
+from eyesim.scene.description import (
+    Collider,
+    Diagnostic,
+    Location,
+    ObjectPlacement,
+    ObjectType,
+    Pose,
+    RobotPlacement,
+    RobotType,
+    Scene,
+    World,
+)
 from eyesim.scene.diagnostics import Diagnostics, SceneError, quoted
 from eyesim.scene.drives import drive_of
 from eyesim.scene.placement import settle_placements
@@ -36,8 +46,9 @@ def kind_of(path: Path) -> str | None:
     return KIND_OF_SUFFIX.get(path.suffix.lower()) or ("json" if path.suffix.lower() == ".json" else None)
 
 
-def read_document(path: str | Path, diagnostics: Diagnostics, expected: tuple[str, ...] | None = None,
-                  where: dict | None = None):
+def read_document(
+    path: str | Path, diagnostics: Diagnostics, expected: tuple[str, ...] | None = None, where: dict | None = None
+):
     """(kind, document) of one file as written, without opening the files it names: a
     SimDocument, World, MazeDocument, RobotType or ObjectType; document None on errors.
     `where` receives the locations of the references in it ('floor_texture', 'model')."""
@@ -45,12 +56,18 @@ def read_document(path: str | Path, diagnostics: Diagnostics, expected: tuple[st
     source = str(path)
     kind = kind_of(path)
     if kind is None:
-        diagnostics.error(Location(source), f"unknown file type {quoted(path.suffix or path.name)}: expected "
-                          ".sim, .wld, .maz, .robi, .esObj or .json", "file-type")
+        diagnostics.error(
+            Location(source),
+            f"unknown file type {quoted(path.suffix or path.name)}: expected .sim, .wld, .maz, .robi, .esObj or .json",
+            "file-type",
+        )
         return None, None
     if expected is not None and kind != "json" and kind not in expected:
-        diagnostics.error(Location(source), f"expected a {' or '.join(expected)} file, found a {kind} file "
-                          f"({path.suffix})", "file-type")
+        diagnostics.error(
+            Location(source),
+            f"expected a {' or '.join(expected)} file, found a {kind} file ({path.suffix})",
+            "file-type",
+        )
         return None, None
     try:
         data = limits.read_limited(path)
@@ -97,15 +114,22 @@ class _SceneLoader:
         world = maze_world(document, str(path), self.diagnostics) if isinstance(document, MazeDocument) else document
         # A .wld file stops at the line past a limit; a maze or JSON world is judged as a whole.
         where_world = Location(str(path))
-        if (limits.too_many(len(world.walls), limits.MAX_WALLS, "walls", where_world, self.diagnostics, "a world")
-                | limits.too_many(len(world.objects), limits.MAX_OBJECTS, "objects", where_world, self.diagnostics)
-                | limits.too_many(len(world.markers), limits.MAX_MARKERS, "markers", where_world, self.diagnostics)):
+        if (
+            limits.too_many(len(world.walls), limits.MAX_WALLS, "walls", where_world, self.diagnostics, "a world")
+            | limits.too_many(len(world.objects), limits.MAX_OBJECTS, "objects", where_world, self.diagnostics)
+            | limits.too_many(len(world.markers), limits.MAX_MARKERS, "markers", where_world, self.diagnostics)
+        ):
             return World(str(path))
         if world.floor_texture is not None:
             found = self.resolve(world.floor_texture, path, where.get("floor_texture", Location(str(path))))
             if found is None:
-                self.missing(where.get("floor_texture", Location(str(path))), "floor texture", world.floor_texture,
-                             path, "the floor is drawn in its plain colour")
+                self.missing(
+                    where.get("floor_texture", Location(str(path))),
+                    "floor texture",
+                    world.floor_texture,
+                    path,
+                    "the floor is drawn in its plain colour",
+                )
             world = dataclasses.replace(world, floor_texture=str(found) if found else None)
         for placement in world.objects:
             self.object_type(placement.type_name)
@@ -125,8 +149,9 @@ class _SceneLoader:
             return None
         obj = self.with_model(obj, path, where)
         if not obj.colliders:
-            self.diagnostics.warning(Location(str(path)), f"object {quoted(obj.name)} has no collider: it gets "
-                                     "a 100 mm box", "no-collider")
+            self.diagnostics.warning(
+                Location(str(path)), f"object {quoted(obj.name)} has no collider: it gets a 100 mm box", "no-collider"
+            )
             obj = dataclasses.replace(obj, colliders=(DEFAULT_OBJECT_COLLIDER,))
         return obj
 
@@ -136,8 +161,9 @@ class _SceneLoader:
         found = self.resolve(definition.model, path, where.get("model", Location(str(path))))
         if found is None:
             shape = "its collider shapes" if definition.colliders else "a plain box"
-            self.missing(where.get("model", Location(str(path))), "3-D model", definition.model, path,
-                         f"drawn as {shape}")
+            self.missing(
+                where.get("model", Location(str(path))), "3-D model", definition.model, path, f"drawn as {shape}"
+            )
         return dataclasses.replace(definition, model=str(found) if found else None)
 
     def resolve(self, reference: str, referencing: Path, where: Location) -> Path | None:
@@ -155,9 +181,13 @@ class _SceneLoader:
             return  # its error says enough
         hint = _near_file(reference, referencing)
         also = f"; did you mean {quoted(hint)}?" if hint else ""
-        self.diagnostics.warning(where, f"{what} not found: {quoted(reference)} (looked as given, next to "
-                                 f"{Path(referencing).name}, in the folders above and in the EyeSim home{also}); "
-                                 f"{fallback}", "missing-file")
+        self.diagnostics.warning(
+            where,
+            f"{what} not found: {quoted(reference)} (looked as given, next to "
+            f"{Path(referencing).name}, in the folders above and in the EyeSim home{also}); "
+            f"{fallback}",
+            "missing-file",
+        )
 
     # -- types ---------------------------------------------------------------------------------
     def define_robot(self, reference: str, where: Location, scene_file: Path) -> RobotType:
@@ -177,8 +207,11 @@ class _SceneLoader:
         key = robot.name.casefold()
         earlier = self.robot_types.get(key)
         if earlier is not None and earlier.source != robot.source:
-            self.diagnostics.error(where, f"robot type {quoted(robot.name)} is defined twice: in {earlier.source} "
-                                   f"and in {robot.source}", "duplicate")
+            self.diagnostics.error(
+                where,
+                f"robot type {quoted(robot.name)} is defined twice: in {earlier.source} and in {robot.source}",
+                "duplicate",
+            )
         self.robot_types[key] = robot
         if builtins.robot_path(stem) is None:  # EyeSim VR 2018 named types after their files
             self.robot_types.setdefault(stem.casefold(), robot)
@@ -193,8 +226,10 @@ class _SceneLoader:
             return f"using the built-in {builtin} ({what}) as robot type {quoted(type_name)}"
         if stock[0].casefold() == builtin.casefold():
             return f"using the built-in {builtin} as robot type {quoted(type_name)}"
-        return (f"{stock[0]} is one of EyeSim's own robots: using the built-in {builtin} ({what}, numbered as "
-                f"{stock[0]}'s programs expect) as robot type {quoted(type_name)}")
+        return (
+            f"{stock[0]} is one of EyeSim's own robots: using the built-in {builtin} ({what}, numbered as "
+            f"{stock[0]}'s programs expect) as robot type {quoted(type_name)}"
+        )
 
     def define_object(self, reference: str, where: Location, scene_file: Path) -> ObjectType:
         found = self.resolve(reference, scene_file, where)
@@ -204,16 +239,20 @@ class _SceneLoader:
         stem = Path(reference.replace("\\", "/")).stem
         if obj is None:
             if found is None:
-                self.missing(where, "object file", reference, scene_file,
-                             f"object type {quoted(stem)} becomes a 100 mm grey box")
+                self.missing(
+                    where, "object file", reference, scene_file, f"object type {quoted(stem)} becomes a 100 mm grey box"
+                )
             obj = ObjectType(stem, reference, colliders=(DEFAULT_OBJECT_COLLIDER,))
         else:
             self.loaded_files[str(found)] = obj.name
         key = obj.name.casefold()
         earlier = self.object_types.get(key)
         if earlier is not None and earlier.source != obj.source:
-            self.diagnostics.error(where, f"object type {quoted(obj.name)} is defined twice: in {earlier.source} "
-                                   f"and in {obj.source}", "duplicate")
+            self.diagnostics.error(
+                where,
+                f"object type {quoted(obj.name)} is defined twice: in {earlier.source} and in {obj.source}",
+                "duplicate",
+            )
         self.object_types[key] = obj
         if builtins.object_path(stem) is None:
             self.object_types.setdefault(stem.casefold(), obj)
@@ -268,20 +307,32 @@ class _SceneLoader:
                 robots.append(RobotPlacement(robot.name, pose, program, where))
             elif placement.model is not None:
                 obj = self.model_object(placement.model, where, scene_file)
-                objects.append(ObjectPlacement(obj.name, Pose(placement.x, placement.y, placement.phi), where,
-                                               placement.friction))
+                objects.append(
+                    ObjectPlacement(obj.name, Pose(placement.x, placement.y, placement.phi), where, placement.friction)
+                )
             else:
                 self.place_type(placement, where, scene_file, starts, robots, objects)
-            if (limits.too_many(len(robots), limits.MAX_ROBOTS, "robots", where, self.diagnostics)
-                    or limits.too_many(len(objects), limits.MAX_OBJECTS, "objects", where, self.diagnostics)):
+            if limits.too_many(len(robots), limits.MAX_ROBOTS, "robots", where, self.diagnostics) or limits.too_many(
+                len(objects), limits.MAX_OBJECTS, "objects", where, self.diagnostics
+            ):
                 return self.refused(scene_file, world)
         markers = world.markers + document.markers
         if limits.too_many(len(markers), limits.MAX_MARKERS, "markers", Location(str(scene_file)), self.diagnostics):
             return self.refused(scene_file, world)
-        robots, objects = settle_placements(robots, objects, self.used_robots, self.used_objects, world.walls,
-                                            self.diagnostics, str(scene_file))
-        return Scene(str(scene_file), world, dict(self.used_robots), dict(self.used_objects), tuple(robots),
-                     tuple(objects), markers, document.settings, self.diagnostics.warnings)
+        robots, objects = settle_placements(
+            robots, objects, self.used_robots, self.used_objects, world.walls, self.diagnostics, str(scene_file)
+        )
+        return Scene(
+            str(scene_file),
+            world,
+            dict(self.used_robots),
+            dict(self.used_objects),
+            tuple(robots),
+            tuple(objects),
+            markers,
+            document.settings,
+            self.diagnostics.warnings,
+        )
 
     @staticmethod
     def refused(scene_file: Path, world: World) -> Scene:
@@ -292,8 +343,9 @@ class _SceneLoader:
         if document.world is None:
             if self.diagnostics.has_errors:
                 return World(str(scene_file))  # a broken world line was reported already
-            self.diagnostics.warning(Location(str(scene_file)), "the scene names no world or maze: it gets an empty "
-                                     "floor", "no-world")
+            self.diagnostics.warning(
+                Location(str(scene_file)), "the scene names no world or maze: it gets an empty floor", "no-world"
+            )
             return World(str(scene_file))
         where = document.world.location or Location(str(scene_file))
         found = self.resolve(document.world.path, scene_file, where)
@@ -314,13 +366,20 @@ class _SceneLoader:
         if obj is None:
             hint = difflib.get_close_matches(name, self.known_names(), n=1, cutoff=0.5)
             also = f" (did you mean {quoted(hint[0])}?)" if hint else ""
-            self.diagnostics.error(where, f"unknown robot or object type {quoted(name)}{also}: expected a built-in "
-                                   f"type ({', '.join(builtins.robot_names() + builtins.object_names())}) or one "
-                                   "defined earlier by a robi/robot or obj/object line", "unknown-type")
+            self.diagnostics.error(
+                where,
+                f"unknown robot or object type {quoted(name)}{also}: expected a built-in "
+                f"type ({', '.join(builtins.robot_names() + builtins.object_names())}) or one "
+                "defined earlier by a robi/robot or obj/object line",
+                "unknown-type",
+            )
             return
         if placement.start is not None or placement.program is not None:
-            self.diagnostics.error(where, f"{quoted(name)} is an object: expected {name} <x> <y> <phi>, "
-                                   "objects have no start letter or program", "syntax")
+            self.diagnostics.error(
+                where,
+                f"{quoted(name)} is an object: expected {name} <x> <y> <phi>, objects have no start letter or program",
+                "syntax",
+            )
             return
         objects.append(ObjectPlacement(obj.name, Pose(placement.x, placement.y, placement.phi or 0.0), where))
 
@@ -332,8 +391,9 @@ class _SceneLoader:
             found = self.resolve(model, scene_file, where)
             if found is None:
                 self.missing(where, "3-D model", model, scene_file, f"object {quoted(stem)} becomes a 100 mm grey box")
-            obj = ObjectType(stem, model, model=str(found) if found else None, colliders=(DEFAULT_OBJECT_COLLIDER,),
-                             fixed=True)
+            obj = ObjectType(
+                stem, model, model=str(found) if found else None, colliders=(DEFAULT_OBJECT_COLLIDER,), fixed=True
+            )
             self.object_types[stem.casefold()] = obj
             self.used_objects[obj.name] = obj
         return obj
@@ -343,8 +403,14 @@ class _SceneLoader:
             return None
         found = self.resolve(program, scene_file, where)
         if found is None and not Path(program).suffix:  # `drive` for drive.c, compiled when it starts
-            found = next((hit for suffix in PROGRAM_SOURCE_SUFFIXES
-                          if (hit := self.resolve(program + suffix, scene_file, where)) is not None), None)
+            found = next(
+                (
+                    hit
+                    for suffix in PROGRAM_SOURCE_SUFFIXES
+                    if (hit := self.resolve(program + suffix, scene_file, where)) is not None
+                ),
+                None,
+            )
         if found is None:
             self.missing(where, "program", program, scene_file, "the robot starts without it")
             return program
@@ -385,8 +451,11 @@ class _StartPicker:
         matches = [s for s in self.world.start_positions if s.letter.casefold() == letter.casefold()]
         if not matches:
             fallback = self.world.start_positions[0] if self.world.start_positions else None
-            instead = (f"using start {quoted(fallback.letter)} instead" if fallback else
-                       "placing the robot at the default start")
+            instead = (
+                f"using start {quoted(fallback.letter)} instead"
+                if fallback
+                else "placing the robot at the default start"
+            )
             self.diagnostics.warning(where, f"the world has no start letter {quoted(letter)}; {instead}", "no-start")
             pose = fallback.pose if fallback else self.default(where, quiet=True)
         else:
@@ -406,8 +475,11 @@ class _StartPicker:
         width, height = self.world.floor_width, self.world.floor_height
         pose = Pose(width / 2, height / 2, 0.0) if width and height else Pose(500.0, 500.0, 0.0)
         if not quiet:
-            self.diagnostics.warning(where, "no position given and the world has no start position: placing the "
-                                     f"robot at ({pose.x:g}, {pose.y:g})", "no-start")
+            self.diagnostics.warning(
+                where,
+                f"no position given and the world has no start position: placing the robot at ({pose.x:g}, {pose.y:g})",
+                "no-start",
+            )
         return pose
 
 
@@ -474,8 +546,16 @@ def _load_definition(name_or_path, builtin_path, kind: str):
         path = builtin_path(str(name_or_path))
     elif not path.suffix:
         names = builtins.robot_names() if kind == "robot" else builtins.object_names()
-        raise SceneError([_diagnostic(str(name_or_path), f"unknown built-in {kind} type {quoted(str(name_or_path))}: "
-                                      f"expected one of {', '.join(names)} or a file path", "unknown-type")])
+        raise SceneError(
+            [
+                _diagnostic(
+                    str(name_or_path),
+                    f"unknown built-in {kind} type {quoted(str(name_or_path))}: "
+                    f"expected one of {', '.join(names)} or a file path",
+                    "unknown-type",
+                )
+            ]
+        )
     builtin = path.parent.resolve() in (builtins.ROBOTS_DIR, builtins.OBJECTS_DIR)
     key = (str(path.resolve()), path.stat().st_mtime) if builtin else None
     if key in _BUILTIN_CACHE:

@@ -54,22 +54,29 @@ def parse_maz(text: str, source: str, diagnostics: Diagnostics, where: dict | No
         else:
             cell_size = value
     if len(sizes) == 2 and sizes[0][1] != sizes[1][1] and cell_size is not None:
-        diagnostics.warning(Location(source, sizes[0][0], 1), f"two cell sizes ({sizes[0][2]} on the first line, "
-                            f"{sizes[1][2]} on the last); the last one is used", "conflicting-size")
+        diagnostics.warning(
+            Location(source, sizes[0][0], 1),
+            f"two cell sizes ({sizes[0][2]} on the first line, {sizes[1][2]} on the last); the last one is used",
+            "conflicting-size",
+        )
     size_lines = {n for n, _, _ in sizes}
     body = [(n, raw) for n, raw in content if n not in size_lines]
     if not body:
-        diagnostics.error(Location(source, content[0][0], 1), "no maze rows: expected lines of '|', '_' and spaces",
-                          "empty-file")
+        diagnostics.error(
+            Location(source, content[0][0], 1), "no maze rows: expected lines of '|', '_' and spaces", "empty-file"
+        )
         return MazeDocument((), cell_size)
     first, last = body[0][0], body[-1][0]
     rows, row_lines = [], []
-    for n, raw in lines[first - 1:last]:
+    for n, raw in lines[first - 1 : last]:
         if raw.lstrip().startswith("#"):
             continue
         if raw.strip() and number(raw.strip()) is not None:
-            diagnostics.warning(Location(source, n, 1), "a cell size line between maze rows is ignored: "
-                                "put it on the first or last line", "misplaced-size")
+            diagnostics.warning(
+                Location(source, n, 1),
+                "a cell size line between maze rows is ignored: put it on the first or last line",
+                "misplaced-size",
+            )
             continue
         rows.append(raw)
         row_lines.append(n)
@@ -119,12 +126,24 @@ def maze_world(maze: MazeDocument, source: str, diagnostics: Diagnostics) -> Wor
                     objects.append(ObjectPlacement(OBJECT_TYPES[c.lower()], Pose(*pose_at, 0.0), where))
             elif c not in unknown:
                 unknown.add(c)
-                diagnostics.warning(where, f"unknown maze character {quoted(c)} ignored: expected one of "
-                                    f"'|', '_', ' ', '.', 'F' or a start (SUDLR), ball (o) or crate (x) letter",
-                                    "unknown-character")
+                diagnostics.warning(
+                    where,
+                    f"unknown maze character {quoted(c)} ignored: expected one of "
+                    f"'|', '_', ' ', '.', 'F' or a start (SUDLR), ball (o) or crate (x) letter",
+                    "unknown-character",
+                )
     walls = _merged(horizontal, s, horizontal=True) + _merged(vertical, s, horizontal=False)
-    return World(source, width, (count - 1) * s if count > 1 else s, tuple(walls), None, None,
-                 tuple(starts), tuple(objects), tuple(markers))
+    return World(
+        source,
+        width,
+        (count - 1) * s if count > 1 else s,
+        tuple(walls),
+        None,
+        None,
+        tuple(starts),
+        tuple(objects),
+        tuple(markers),
+    )
 
 
 def _merged(units: set[tuple[float, float]], s: float, horizontal: bool) -> list[Wall]:

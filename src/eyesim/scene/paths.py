@@ -25,8 +25,9 @@ def home_dirs() -> list[Path]:
     return dirs
 
 
-def resolve(reference: str, referencing_file: str | Path | None = None,
-            scene_file: str | Path | None = None) -> Path | None:
+def resolve(
+    reference: str, referencing_file: str | Path | None = None, scene_file: str | Path | None = None
+) -> Path | None:
     """The file `reference` names, or None. Order: the path as given (absolute, or relative to
     the working directory); relative to the referencing file's directory; relative to each
     EyeSim home directory. `\\` and `/` both separate; `%sim%` and a leading '/' that does not

@@ -18,7 +18,16 @@ import math
 from collections import defaultdict
 from dataclasses import replace
 
-from eyesim.scene.description import Collider, Location, ObjectPlacement, ObjectType, Pose, RobotPlacement, RobotType, Wall
+from eyesim.scene.description import (
+    Collider,
+    Location,
+    ObjectPlacement,
+    ObjectType,
+    Pose,
+    RobotPlacement,
+    RobotType,
+    Wall,
+)
 from eyesim.scene.diagnostics import Diagnostics, quoted
 from eyesim.scene.drives import drive_of
 from eyesim.scene.limits import LIMIT
@@ -118,8 +127,12 @@ def _box(corners) -> tuple[float, float, float, float]:
 
 def _wall_box(wall: Wall) -> tuple[float, float, float, float]:
     reach = wall.thickness / 2  # built lengthened by this at both ends, and this thick either side
-    return (min(wall.x1, wall.x2) - reach, min(wall.y1, wall.y2) - reach,
-            max(wall.x1, wall.x2) + reach, max(wall.y1, wall.y2) + reach)
+    return (
+        min(wall.x1, wall.x2) - reach,
+        min(wall.y1, wall.y2) - reach,
+        max(wall.x1, wall.x2) + reach,
+        max(wall.y1, wall.y2) + reach,
+    )
 
 
 class _Grid:
@@ -210,7 +223,11 @@ class _Body:
         self.kind, self.placement, self.corners, self.box = kind, placement, corners, _box(corners)
 
     def describe(self) -> str:
-        line = f" (line {self.placement.location.line})" if self.placement.location and self.placement.location.line else ""
+        line = (
+            f" (line {self.placement.location.line})"
+            if self.placement.location and self.placement.location.line
+            else ""
+        )
         return f"{self.kind} {quoted(self.placement.type_name)}{line}"
 
 
@@ -229,8 +246,12 @@ def _clear_of_walls(pose: Pose, extent, walls: _Grid) -> bool:
 
 def _ring_offsets() -> list[tuple[int, int]]:
     """Grid steps round a spot, nearest first (ties in a fixed order)."""
-    steps = [(i, j) for i in range(-SEARCH_RINGS, SEARCH_RINGS + 1) for j in range(-SEARCH_RINGS, SEARCH_RINGS + 1)
-             if (i, j) != (0, 0)]
+    steps = [
+        (i, j)
+        for i in range(-SEARCH_RINGS, SEARCH_RINGS + 1)
+        for j in range(-SEARCH_RINGS, SEARCH_RINGS + 1)
+        if (i, j) != (0, 0)
+    ]
     return sorted(steps, key=lambda s: (s[0] * s[0] + s[1] * s[1], s[1], s[0]))
 
 
@@ -242,6 +263,7 @@ def _free_place(pose: Pose, extent, other: _Body, walls: _Grid, bodies: _Grid) -
     `other` when that is clear, else the nearest place on a grid of the footprint's size round
     `pose`, at most SEARCH_RINGS steps away; None when there is none. Moved poses are whole mm
     (CLEARANCE keeps them clear)."""
+
     def free(candidate: Pose) -> bool:
         corners = _corners(candidate, extent)
         return _first_overlap(corners, bodies) is None and _clear_of_walls(candidate, extent, walls)
@@ -259,9 +281,15 @@ def _free_place(pose: Pose, extent, other: _Body, walls: _Grid, bodies: _Grid) -
     return None
 
 
-def settle_placements(robots: list[RobotPlacement], objects: list[ObjectPlacement],
-                      robot_types: dict[str, RobotType], object_types: dict[str, ObjectType],
-                      walls: tuple[Wall, ...], diagnostics: Diagnostics, scene_file: str):
+def settle_placements(
+    robots: list[RobotPlacement],
+    objects: list[ObjectPlacement],
+    robot_types: dict[str, RobotType],
+    object_types: dict[str, ObjectType],
+    walls: tuple[Wall, ...],
+    diagnostics: Diagnostics,
+    scene_file: str,
+):
     """Robots and objects moved out of walls and out of each other, with a warning for each
     move; an error (code 'limit') for a body that finds no free place nearby."""
     wall_grid, bodies = _walls_grid(walls), _Grid()
@@ -277,23 +305,34 @@ def settle_placements(robots: list[RobotPlacement], objects: list[ObjectPlacemen
             return None
         pose, wall = _settle(placement.pose, extent, wall_grid) if movable else (placement.pose, None)
         if wall is not None:
-            diagnostics.warning(where(placement), f"{kind} {quoted(placement.type_name)} at ({placement.pose.x:g}, "
-                                f"{placement.pose.y:g}) overlaps the wall from ({wall.x1:g}, {wall.y1:g}) to "
-                                f"({wall.x2:g}, {wall.y2:g}): moved to ({pose.x:.0f}, {pose.y:.0f}), clear of the "
-                                "walls", "overlap")
+            diagnostics.warning(
+                where(placement),
+                f"{kind} {quoted(placement.type_name)} at ({placement.pose.x:g}, "
+                f"{placement.pose.y:g}) overlaps the wall from ({wall.x1:g}, {wall.y1:g}) to "
+                f"({wall.x2:g}, {wall.y2:g}): moved to ({pose.x:.0f}, {pose.y:.0f}), clear of the "
+                "walls",
+                "overlap",
+            )
         other = _first_overlap(_corners(pose, extent), bodies) if movable else None
         if other is not None:
             free = _free_place(pose, extent, other, wall_grid, bodies)
             if free is None:
-                diagnostics.error(where(placement), f"{kind} {quoted(placement.type_name)} at ({pose.x:g}, "
-                                  f"{pose.y:g}) overlaps {other.describe()} and there is no free place within "
-                                  f"{SEARCH_RINGS} of its sizes: at most {len(_OFFSETS) + 1} bodies fit round one "
-                                  "spot, the limit for overlapping placements; spread them out", LIMIT)
+                diagnostics.error(
+                    where(placement),
+                    f"{kind} {quoted(placement.type_name)} at ({pose.x:g}, "
+                    f"{pose.y:g}) overlaps {other.describe()} and there is no free place within "
+                    f"{SEARCH_RINGS} of its sizes: at most {len(_OFFSETS) + 1} bodies fit round one "
+                    "spot, the limit for overlapping placements; spread them out",
+                    LIMIT,
+                )
                 refused = True
                 return None
-            diagnostics.warning(where(placement), f"{kind} {quoted(placement.type_name)} at ({pose.x:g}, {pose.y:g}) "
-                                f"overlaps {other.describe()}: moved to ({free.x:.0f}, {free.y:.0f}), clear of it",
-                                "overlap")
+            diagnostics.warning(
+                where(placement),
+                f"{kind} {quoted(placement.type_name)} at ({pose.x:g}, {pose.y:g}) "
+                f"overlaps {other.describe()}: moved to ({free.x:.0f}, {free.y:.0f}), clear of it",
+                "overlap",
+            )
             pose = free
         bodies.add(_box(_corners(pose, extent)), _Body(kind, placement, _corners(pose, extent)))
         return placement if pose == placement.pose else replace(placement, pose=pose)
@@ -302,8 +341,11 @@ def settle_placements(robots: list[RobotPlacement], objects: list[ObjectPlacemen
         return _box_extent(object_types[placement.type_name].colliders)
 
     # Fixed objects never move: the others make room for them.
-    placed_objects = {i: place(p, "object", object_extent(p), movable=False)
-                      for i, p in enumerate(objects) if object_types[p.type_name].fixed}
+    placed_objects = {
+        i: place(p, "object", object_extent(p), movable=False)
+        for i, p in enumerate(objects)
+        if object_types[p.type_name].fixed
+    }
     settled_robots = [place(p, "robot", _robot_extent(robot_types[p.type_name])) for p in robots]
     for i, p in enumerate(objects):
         if i not in placed_objects:
@@ -313,13 +355,19 @@ def settle_placements(robots: list[RobotPlacement], objects: list[ObjectPlacemen
     return [r for r in settled_robots if r is not None], [o for o in settled_objects if o is not None]
 
 
-def clear_place(placement: RobotPlacement | ObjectPlacement, others, robot_types: dict[str, RobotType],
-                object_types: dict[str, ObjectType], walls: tuple[Wall, ...]) -> tuple[Pose | None, str]:
+def clear_place(
+    placement: RobotPlacement | ObjectPlacement,
+    others,
+    robot_types: dict[str, RobotType],
+    object_types: dict[str, ObjectType],
+    walls: tuple[Wall, ...],
+) -> tuple[Pose | None, str]:
     """Where `placement` goes when it alone makes way (the scene editor's drop, an added robot):
     moved out of the walls, then to the nearest free place off the `others` (robot and object
     placements that stay where they are), as `settle_placements` moves a later placement. Returns
     the pose (whole mm when moved; None when there is no free place nearby) and what it
     overlapped ("" when it was clear)."""
+
     def extent(p):
         if isinstance(p, RobotPlacement):
             return _robot_extent(robot_types[p.type_name])

@@ -25,8 +25,7 @@ VR_ONLY = ("mass", "collider", "axel", "lidar")
 def parse_robi(text: str, source: str, diagnostics: Diagnostics, where: dict | None = None) -> RobotType:
     """A RobotType from .robi text; the model path stays as written (resolved by the loader).
     `where`, when given, receives the location of the 'model' reference."""
-    lines = [Line(line.number, _merge_parentheses(line.tokens))
-             for line in split_lines(text, source, diagnostics)]
+    lines = [Line(line.number, _merge_parentheses(line.tokens)) for line in split_lines(text, source, diagnostics)]
     reader = _RobotReader(source, diagnostics, detect_dialect(lines))
     for line in lines:
         reader.statement(line)
@@ -56,11 +55,16 @@ def detect_dialect(lines: list[Line]) -> str:
         if word == "dialect" and args:
             if args[0].text.lower() in DIALECTS:
                 return args[0].text.lower()
-        elif word == "fisheye" or (word == "psd" and len(args) >= 2 and is_integer(args[0])
-                                   and not is_integer(args[1])):
+        elif word == "fisheye" or (
+            word == "psd" and len(args) >= 2 and is_integer(args[0]) and not is_integer(args[1])
+        ):
             found.add("vr1")
-        elif word in VR_ONLY or (word == "model" and len(args) == 7) or (word == "axis" and len(args) == 2) \
-                or (word == "wheel" and args and args[0].text.lower() in ("drive", "turn")):
+        elif (
+            word in VR_ONLY
+            or (word == "model" and len(args) == 7)
+            or (word == "axis" and len(args) == 2)
+            or (word == "wheel" and args and args[0].text.lower() in ("drive", "turn"))
+        ):
             found.add("vr")
     return "vr1" if "vr1" in found else "vr" if "vr" in found else "eyesim6"
 
@@ -76,8 +80,9 @@ class _RobotReader(PartReader):
         word = line.keyword.lower()
         if word == "dialect":
             if self.arity(line, (1,), "eyesim|eyesim6|vr|vr1") and line.args[0].text.lower() not in DIALECTS:
-                self.error(line, f"dialect: expected one of {', '.join(DIALECTS)}, found "
-                                 f"{quoted(line.args[0].text)}", 1)
+                self.error(
+                    line, f"dialect: expected one of {', '.join(DIALECTS)}, found {quoted(line.args[0].text)}", 1
+                )
         elif word in KEYWORDS:
             KEYWORDS[word](self, line)
         else:

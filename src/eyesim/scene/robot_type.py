@@ -10,8 +10,9 @@ from eyesim.scene.diagnostics import Diagnostics
 from eyesim.scene.parts import PARTS
 
 
-def finish_robot_type(robot: RobotType, diagnostics: Diagnostics, where: dict[str, Location],
-                      default_location: Location) -> RobotType:
+def finish_robot_type(
+    robot: RobotType, diagnostics: Diagnostics, where: dict[str, Location], default_location: Location
+) -> RobotType:
     """Report contradictions (errors) and fill in what a usable robot needs (warnings).
     `where` maps a field name ('wheels', 'mass', 'psd:<i>', ...) to where it was written."""
     at = lambda key: where.get(key, default_location)  # noqa: E731 - short local lookup

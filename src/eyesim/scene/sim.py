@@ -17,9 +17,11 @@ from eyesim.scene.keyword_reader import KeywordReader
 from eyesim.scene.lexer import Line, format_number, integer, number, quote_token, split_lines
 
 SETTING_FLAGS = ("vis", "trace", "eyesim6psd")
-SETTING_VALUES = {"psdnoise": ("psd_noise", "a standard deviation in mm >= 0"),  # NAME=value settings
-                  "seed": ("seed", "a whole number"),
-                  "calltime": ("call_time", "a time in ms from 0 to 1000")}
+SETTING_VALUES = {
+    "psdnoise": ("psd_noise", "a standard deviation in mm >= 0"),  # NAME=value settings
+    "seed": ("seed", "a whole number"),
+    "calltime": ("call_time", "a time in ms from 0 to 1000"),
+}
 MAX_CALL_TIME_MS = 1000  # more is surely a mistake of units (a call taking seconds)
 KEYWORDS = ("world", "maze", "settings", "robi", "robot", "obj", "object", "marker")
 
@@ -85,11 +87,18 @@ class _SceneReader(KeywordReader):
         self.markers: list[Marker] = []
 
     def document(self) -> SimDocument:
-        settings = Settings("vis" in self.flags, "trace" in self.flags, eyesim6_psd="eyesim6psd" in self.flags,
-                            **self.values)
-        return SimDocument(self.source, self.world, settings,
-                           tuple(self.robot_files), tuple(self.object_files), tuple(self.placements),
-                           tuple(self.markers))
+        settings = Settings(
+            "vis" in self.flags, "trace" in self.flags, eyesim6_psd="eyesim6psd" in self.flags, **self.values
+        )
+        return SimDocument(
+            self.source,
+            self.world,
+            settings,
+            tuple(self.robot_files),
+            tuple(self.object_files),
+            tuple(self.placements),
+            tuple(self.markers),
+        )
 
     def statement(self, line: Line) -> None:
         handler = getattr(self, "kw_" + line.keyword.lower(), None) if not line.tokens[0].quoted else None
@@ -107,8 +116,11 @@ class _SceneReader(KeywordReader):
             self.usage(line, f"one world file ({line.keyword} <file.wld|file.maz>)")
             return
         if self.world is not None:
-            self.diagnostics.warning(self.at(line), f"a second world statement: {quoted(line.args[0].text)} "
-                                     f"replaces {quoted(self.world.path)}", "second-world")
+            self.diagnostics.warning(
+                self.at(line),
+                f"a second world statement: {quoted(line.args[0].text)} replaces {quoted(self.world.path)}",
+                "second-world",
+            )
         self.world = Reference(line.args[0].text, self.at(line, 1))
 
     kw_maze = kw_world
@@ -123,9 +135,12 @@ class _SceneReader(KeywordReader):
             else:
                 hint = difflib.get_close_matches(flag, [*SETTING_FLAGS, *SETTING_VALUES], n=1, cutoff=0.6)
                 also = f" (did you mean {hint[0].upper()}?)" if hint else ""
-                self.diagnostics.warning(self.at(line, i), f"unknown setting {quoted(token.text)} ignored{also}: "
-                                         "expected VIS, TRACE, EYESIM6PSD, PSDNOISE=<mm>, SEED=<n> or CALLTIME=<ms>",
-                                         "unknown-setting")
+                self.diagnostics.warning(
+                    self.at(line, i),
+                    f"unknown setting {quoted(token.text)} ignored{also}: "
+                    "expected VIS, TRACE, EYESIM6PSD, PSDNOISE=<mm>, SEED=<n> or CALLTIME=<ms>",
+                    "unknown-setting",
+                )
 
     def setting_value(self, line: Line, index: int, flag: str, text: str) -> None:
         field, expected = SETTING_VALUES[flag]
@@ -133,8 +148,11 @@ class _SceneReader(KeywordReader):
         if not text:
             self.error(line, f"settings: {flag.upper()} needs a value: {flag.upper()}=<{expected}>", index, "bad-value")
             return
-        if value is None or (field == "psd_noise" and value < 0) or \
-                (field == "call_time" and not 0 <= value <= MAX_CALL_TIME_MS):
+        if (
+            value is None
+            or (field == "psd_noise" and value < 0)
+            or (field == "call_time" and not 0 <= value <= MAX_CALL_TIME_MS)
+        ):
             self.error(line, f"settings: {flag.upper()} expects {expected}, found {quoted(text)}", index, "bad-value")
             return
         self.values[field] = value
@@ -150,8 +168,9 @@ class _SceneReader(KeywordReader):
                 if values is None:
                     return
                 x, y, phi = values
-            self.placements.append(Placement(robi=args[0].text, program=args[1].text, x=x, y=y, phi=phi,
-                                             location=self.at(line)))
+            self.placements.append(
+                Placement(robi=args[0].text, program=args[1].text, x=x, y=y, phi=phi, location=self.at(line))
+            )
         else:
             self.usage(line, f"{line.keyword} <file.robi>, or {line.keyword} <file.robi> <program> [<x> <y> <phi>]")
 
@@ -164,8 +183,16 @@ class _SceneReader(KeywordReader):
         elif len(args) == 5:
             values = self.numbers(line, 1, ("x in mm", "y in mm", "phi in degrees", "friction"))
             if values is not None:
-                self.placements.append(Placement(x=values[0], y=values[1], phi=values[2], friction=values[3],
-                                                 model=args[4].text, location=self.at(line)))
+                self.placements.append(
+                    Placement(
+                        x=values[0],
+                        y=values[1],
+                        phi=values[2],
+                        friction=values[3],
+                        model=args[4].text,
+                        location=self.at(line),
+                    )
+                )
         else:
             self.usage(line, f"{line.keyword} <file.esObj>, or {line.keyword} <x> <y> <phi> <friction> <model>")
 
@@ -191,8 +218,11 @@ class _SceneReader(KeywordReader):
         name, args = line.keyword, line.args
         form = f"{name} <x> <y> <phi> [<program>], or {name} <maze start letter> [<phi>] [<program>]"
         if not args:
-            self.error(line, f"unknown keyword {quoted(name)}: expected a keyword (world, maze, settings, robi, "
-                             f"robot, obj, object, marker) or a placement ({form})")
+            self.error(
+                line,
+                f"unknown keyword {quoted(name)}: expected a keyword (world, maze, settings, robi, "
+                f"robot, obj, object, marker) or a placement ({form})",
+            )
             return
         first = args[0].text
         if number(first) is not None:
@@ -205,24 +235,46 @@ class _SceneReader(KeywordReader):
             if rest and number(rest[0].text) is not None:
                 phi = number(rest.pop(0).text)
             if len(rest) > 1:
-                self.error(line, f"{name}: expected at most <x> <y> <phi> <program>, found extra "
-                                 f"{quoted(' '.join(t.text for t in rest[1:]))}", len(line.tokens) - len(rest) + 1)
+                self.error(
+                    line,
+                    f"{name}: expected at most <x> <y> <phi> <program>, found extra "
+                    f"{quoted(' '.join(t.text for t in rest[1:]))}",
+                    len(line.tokens) - len(rest) + 1,
+                )
                 return
             if values is not None:
-                self.placements.append(Placement(type_name=name, x=values[0], y=values[1], phi=phi,
-                                                 program=rest[0].text if rest else None, location=self.at(line)))
+                self.placements.append(
+                    Placement(
+                        type_name=name,
+                        x=values[0],
+                        y=values[1],
+                        phi=phi,
+                        program=rest[0].text if rest else None,
+                        location=self.at(line),
+                    )
+                )
         elif len(first) == 1 and first.isalpha() and not args[0].quoted:
             rest = list(args[1:])
             phi = number(rest.pop(0).text) if rest and number(rest[0].text) is not None else None
             if len(rest) > 1:
-                self.error(line, f"{name}: expected at most <letter> <phi> <program>, found extra "
-                                 f"{quoted(' '.join(t.text for t in rest[1:]))}", len(line.tokens) - len(rest) + 1)
+                self.error(
+                    line,
+                    f"{name}: expected at most <letter> <phi> <program>, found extra "
+                    f"{quoted(' '.join(t.text for t in rest[1:]))}",
+                    len(line.tokens) - len(rest) + 1,
+                )
                 return
-            self.placements.append(Placement(type_name=name, start=first, phi=phi,
-                                             program=rest[0].text if rest else None, location=self.at(line)))
+            self.placements.append(
+                Placement(
+                    type_name=name, start=first, phi=phi, program=rest[0].text if rest else None, location=self.at(line)
+                )
+            )
         else:
-            self.error(line, f"{name}: expected a position (<x> <y> <phi>) or a maze start letter, found "
-                             f"{quoted(first)} ({form})", 1)
+            self.error(
+                line,
+                f"{name}: expected a position (<x> <y> <phi>) or a maze start letter, found {quoted(first)} ({form})",
+                1,
+            )
 
 
 def write_sim(document: SimDocument) -> str:
@@ -232,8 +284,11 @@ def write_sim(document: SimDocument) -> str:
     if document.world is not None:
         out.append(f"world {quote_token(document.world.path)}")
     settings = document.settings
-    flags = [name for name, on in (("VIS", settings.vis), ("TRACE", settings.trace),
-                                   ("EYESIM6PSD", settings.eyesim6_psd)) if on]
+    flags = [
+        name
+        for name, on in (("VIS", settings.vis), ("TRACE", settings.trace), ("EYESIM6PSD", settings.eyesim6_psd))
+        if on
+    ]
     if settings.psd_noise:
         flags.append(f"PSDNOISE={f(settings.psd_noise)}")
     if settings.seed:

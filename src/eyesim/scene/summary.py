@@ -38,23 +38,35 @@ def scene_lines(scene: Scene) -> list[str]:
         lines.append(f"objects: {len(scene.objects)} (" + ", ".join(f"{n} x{c}" for n, c in counts.items()) + ")")
     if scene.markers:
         lines.append(f"markers: {len(scene.markers)}")
-    flags = [n for n, on in (("VIS", scene.settings.vis), ("TRACE", scene.settings.trace),
-                             ("EYESIM6PSD", scene.settings.eyesim6_psd)) if on]
+    flags = [
+        n
+        for n, on in (
+            ("VIS", scene.settings.vis),
+            ("TRACE", scene.settings.trace),
+            ("EYESIM6PSD", scene.settings.eyesim6_psd),
+        )
+        if on
+    ]
     if flags:
         lines.append("settings " + " ".join(flags))
     return lines
 
 
 def robot_lines(robot: RobotType) -> list[str]:
-    line = (f"robot type {robot.name}: {robot.drive} drive, {f(robot.length)} x {f(robot.width)} x "
-            f"{f(robot.height)} mm, {f(robot.mass)} kg")
+    line = (
+        f"robot type {robot.name}: {robot.drive} drive, {f(robot.length)} x {f(robot.width)} x "
+        f"{f(robot.height)} mm, {f(robot.mass)} kg"
+    )
     if robot.wheels:
         line += f", wheels {f(robot.wheels.diameter)} mm on a {f(robot.wheels.track)} mm track"
     lines = [line]
     parts = []
     if robot.psds:
-        parts.append(f"{len(robot.psds)} PSD{'s' if len(robot.psds) != 1 else ''} ("
-                     + ", ".join(f"{p.id} {p.name}" for p in robot.psds) + ")")
+        parts.append(
+            f"{len(robot.psds)} PSD{'s' if len(robot.psds) != 1 else ''} ("
+            + ", ".join(f"{p.id} {p.name}" for p in robot.psds)
+            + ")"
+        )
     if robot.camera:
         parts.append("fisheye camera" if robot.camera.fisheye else "camera")
     if robot.lidar:
@@ -71,8 +83,10 @@ def robot_lines(robot: RobotType) -> list[str]:
 def object_lines(obj: ObjectType) -> list[str]:
     model = Path(obj.model).name if obj.model else "no model"
     fixed = ", fixed" if obj.fixed else ""
-    return [f"object type {obj.name}: {f(obj.mass)} kg, {len(obj.colliders)} collider"
-            f"{'s' if len(obj.colliders) != 1 else ''}, {model}{fixed}"]
+    return [
+        f"object type {obj.name}: {f(obj.mass)} kg, {len(obj.colliders)} collider"
+        f"{'s' if len(obj.colliders) != 1 else ''}, {model}{fixed}"
+    ]
 
 
 def _pose(pose) -> str:

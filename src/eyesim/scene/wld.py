@@ -71,8 +71,9 @@ class _WorldReader:
         self.refused = False
 
     def world(self) -> World:
-        return World(self.source, self.width, self.height, tuple(self.walls), self.texture, self.start,
-                     objects=tuple(self.balls))
+        return World(
+            self.source, self.width, self.height, tuple(self.walls), self.texture, self.start, objects=tuple(self.balls)
+        )
 
     def where(self, line: Line, index: int = 0) -> Location:
         return Location(self.source, line.number, line.tokens[index].column)
@@ -90,8 +91,11 @@ class _WorldReader:
             hint = difflib.get_close_matches(word.lower(), KEYWORDS, n=1)
             also = f" (did you mean '{hint[0]}'?)" if hint else ""
             expected = ", ".join(KEYWORDS)
-            self.skip(line, f"unknown keyword {quoted(word)}{also}: expected a wall (4, 6 or 9 numbers) "
-                            f"or one of {expected}", code="unknown-keyword")
+            self.skip(
+                line,
+                f"unknown keyword {quoted(word)}{also}: expected a wall (4, 6 or 9 numbers) or one of {expected}",
+                code="unknown-keyword",
+            )
             return
         handler(line)
 
@@ -106,11 +110,15 @@ class _WorldReader:
                 return None
             values.append(value)
         if len(values) not in counts:
-            wanted = " or ".join([", ".join(str(c) for c in counts[:-1]), str(counts[-1])] if len(counts) > 1
-                                 else [str(counts[0])])
+            wanted = " or ".join(
+                [", ".join(str(c) for c in counts[:-1]), str(counts[-1])] if len(counts) > 1 else [str(counts[0])]
+            )
             found = f" ({quoted(' '.join(t.text for t in tokens))})" if tokens else ""
-            self.skip(line, f"{what}: expected {wanted} numbers, found {len(values)}{found}",
-                      min(first + len(values), len(line.tokens) - 1))
+            self.skip(
+                line,
+                f"{what}: expected {wanted} numbers, found {len(values)}{found}",
+                min(first + len(values), len(line.tokens) - 1),
+            )
             return None
         return values
 
@@ -123,16 +131,23 @@ class _WorldReader:
         thickness, height, color = DEFAULT_WALL.thickness, DEFAULT_WALL.height, DEFAULT_WALL.color
         if len(values) >= 6:
             if values[4] <= 0 or values[5] <= 0:
-                self.skip(line, f"wall thickness and height must be positive, found "
-                                f"{format_number(values[4])} and {format_number(values[5])}", 4)
+                self.skip(
+                    line,
+                    f"wall thickness and height must be positive, found "
+                    f"{format_number(values[4])} and {format_number(values[5])}",
+                    4,
+                )
                 return
             thickness, height = values[4], values[5]
         if len(values) == 9:
             rgb = values[6:9]
             if any(c < 0 or c > 255 or c != int(c) for c in rgb):
                 bad = next(i for i, c in enumerate(rgb) if c < 0 or c > 255 or c != int(c))
-                self.skip(line, f"wall colour: expected whole numbers 0..255, found "
-                                f"{quoted(line.tokens[6 + bad].text)}", 6 + bad)
+                self.skip(
+                    line,
+                    f"wall colour: expected whole numbers 0..255, found {quoted(line.tokens[6 + bad].text)}",
+                    6 + bad,
+                )
                 return
             color = (int(rgb[0]), int(rgb[1]), int(rgb[2]))
         if (x1, y1) == (x2, y2):
@@ -180,8 +195,11 @@ class _WorldReader:
 
     def kw_pop(self, line: Line) -> None:
         if len(line.tokens) > 1:
-            self.diagnostics.warning(self.where(line, 1), f"pop takes no arguments, found "
-                                     f"{quoted(line.tokens[1].text)}; ignored", "malformed-line")
+            self.diagnostics.warning(
+                self.where(line, 1),
+                f"pop takes no arguments, found {quoted(line.tokens[1].text)}; ignored",
+                "malformed-line",
+            )
         if self.stack:  # a pop on an empty stack is ignored, as EyeSim did
             self.frame = self.stack.pop()
 
@@ -205,8 +223,11 @@ class _WorldReader:
     def kw_floor_texture(self, line: Line) -> None:
         if len(line.tokens) != 2:
             found = quoted(" ".join(t.text for t in line.tokens[1:])) if len(line.tokens) > 1 else "nothing"
-            self.skip(line, f"floor_texture: expected one image path (quote it if it has spaces), "
-                            f"found {found}", min(1, len(line.tokens) - 1))
+            self.skip(
+                line,
+                f"floor_texture: expected one image path (quote it if it has spaces), found {found}",
+                min(1, len(line.tokens) - 1),
+            )
             return
         self.texture = line.tokens[1].text
         self.texture_at = self.where(line, 1)
@@ -239,5 +260,3 @@ def write_wld(world: World) -> str:
         else:
             out.append(coords)
     return "\n".join(out) + "\n"
-
-

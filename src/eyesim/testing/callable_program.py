@@ -36,8 +36,9 @@ class RobotClient:
     """A program's connection, called like the API: `client.vw_set_speed(100, 0)` or
     `client.call("VW_SET_SPEED", 100, 0)`; a reply of one value is that value."""
 
-    def __init__(self, host: str, port: int, robot: int | str, program: str = "python-callable",
-                 token: str | None = None):
+    def __init__(
+        self, host: str, port: int, robot: int | str, program: str = "python-callable", token: str | None = None
+    ):
         self._connection = ProtocolClient(port, host)
         self._lock = threading.Lock()
         _, self.robot_id, self.robot_name = self.call("HELLO", g.VERSION, str(robot), program, 0, token or "")

@@ -76,7 +76,7 @@ class ContactTracker:
         data = sim.world.data
         pairs = set()
         if data.ncon:
-            ends = self.codes[data.contact.geom[:data.ncon]]
+            ends = self.codes[data.contact.geom[: data.ncon]]
             ends = ends[(ends[:, 0] != NOTHING) & (ends[:, 1] != NOTHING) & (ends[:, 0] != ends[:, 1])]
             if len(ends):
                 pairs = {(int(min(a, b)), int(max(a, b))) for a, b in ends}
@@ -96,5 +96,6 @@ class ContactTracker:
 
     def of(self, thing: Thing, with_kind: str = "any") -> list[Contact]:
         """Episodes of `thing` touching something of a kind ('robot', 'object', 'wall' or 'any')."""
-        return [c for c in self.contacts
-                if c.involves(thing) and (with_kind == "any" or c.other(thing).kind == with_kind)]
+        return [
+            c for c in self.contacts if c.involves(thing) and (with_kind == "any" or c.other(thing).kind == with_kind)
+        ]

@@ -82,8 +82,16 @@ class Simulation:
     scene's settings. The clock is deterministic unless `clock='realtime'`. `echo` prints the
     programs' output as `eyesim run` does."""
 
-    def __init__(self, scene=None, *, seed: int | None = None, psd_noise: float | None = None,
-                 clock: str = DETERMINISTIC, host: str = g.DEFAULT_HOST, echo: bool = False):
+    def __init__(
+        self,
+        scene=None,
+        *,
+        seed: int | None = None,
+        psd_noise: float | None = None,
+        clock: str = DETERMINISTIC,
+        host: str = g.DEFAULT_HOST,
+        echo: bool = False,
+    ):
         scene = load_scene_argument(scene)
         changes = {key: value for key, value in (("seed", seed), ("psd_noise", psd_noise)) if value is not None}
         if changes:
@@ -157,9 +165,20 @@ class Simulation:
         return robot
 
     # -- programs --------------------------------------------------------------------------------
-    def program(self, robot, program, *args: str, stdin: str | bytes | None = None, cwd=None,
-                env: dict | None = None, cpu_seconds: float | None = None, memory_bytes: int | None = None,
-                own_group: bool = False, processes: int | None = None, file_bytes: int | None = None):
+    def program(
+        self,
+        robot,
+        program,
+        *args: str,
+        stdin: str | bytes | None = None,
+        cwd=None,
+        env: dict | None = None,
+        cpu_seconds: float | None = None,
+        memory_bytes: int | None = None,
+        own_group: bool = False,
+        processes: int | None = None,
+        file_bytes: int | None = None,
+    ):
         """Run a program for a robot when the simulation starts: an executable, a `.py` file
         (run with this Python) or a Python callable `program(robot_client)` (callable_program.py).
         Programs start with the first `run()`; their results are read from `robot(n)`.
@@ -175,8 +194,17 @@ class Simulation:
             path = Path(program)
             if not path.is_file():
                 raise SimulationError(f"program not found: {program}")
-            options = ProgramOptions(tuple(str(a) for a in args), stdin, cwd, dict(env or {}), cpu_seconds,
-                                     memory_bytes, own_group, processes, file_bytes)
+            options = ProgramOptions(
+                tuple(str(a) for a in args),
+                stdin,
+                cwd,
+                dict(env or {}),
+                cpu_seconds,
+                memory_bytes,
+                own_group,
+                processes,
+                file_bytes,
+            )
             self._pending_programs.append((robot_id, path, options))
         if self._started:
             self._start_programs()
@@ -260,8 +288,14 @@ class Simulation:
 
     _stop_when = None
 
-    def run(self, until: float | None = None, *, stop_when=None, end_with_programs: bool = True,
-            wall_timeout: float | None = None) -> RunEnd:
+    def run(
+        self,
+        until: float | None = None,
+        *,
+        stop_when=None,
+        end_with_programs: bool = True,
+        wall_timeout: float | None = None,
+    ) -> RunEnd:
         """Simulate until `until` seconds of simulation time, until `stop_when(sim)` holds after
         a step, or (with `end_with_programs`, the default) until every program has ended —
         whichever comes first. Without `until` and without programs, `stop_when` is needed.

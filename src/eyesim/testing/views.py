@@ -75,7 +75,7 @@ class RobotView:
     def lcd_text_at(self, row: int, column: int = 0, length: int | None = None) -> str:
         rows = self.lcd_text()
         text = rows[row] if row < len(rows) else ""
-        return text[column:] if length is None else text[column:column + length].ljust(length)
+        return text[column:] if length is None else text[column : column + length].ljust(length)
 
     def lcd_shows(self, text: str) -> bool:
         return any(text in row for row in self.lcd_text())

@@ -35,8 +35,12 @@ def mesh_message(model: mujoco.MjModel, body: int) -> dict:
         rotation = np.zeros(9)
         mujoco.mju_quat2Mat(rotation, model.geom_quat[geom])
         # MuJoCo keeps a mesh in its own (inertial) frame and the geom's pos/quat place it on the body
-        vertices = model.mesh_vert[first:first + count] @ rotation.reshape(3, 3).T + model.geom_pos[geom]
-        parts.append({"color": [round(float(c) * 255) for c in model.geom_rgba[geom][:3]],
-                      "vertices": np.round(vertices, 6).ravel().tolist(),
-                      "triangles": model.mesh_face[face_first:face_first + face_count].ravel().tolist()})
+        vertices = model.mesh_vert[first : first + count] @ rotation.reshape(3, 3).T + model.geom_pos[geom]
+        parts.append(
+            {
+                "color": [round(float(c) * 255) for c in model.geom_rgba[geom][:3]],
+                "vertices": np.round(vertices, 6).ravel().tolist(),
+                "triangles": model.mesh_face[face_first : face_first + face_count].ravel().tolist(),
+            }
+        )
     return {"parts": parts}

@@ -35,17 +35,34 @@ def scene(sim, texture_url: str | None, version: str | None = None, new_scene: b
     `new_scene`: another scene replaced the running one (the robot panels start afresh)."""
     scene = sim.scene
     query = "" if version is None else f"?v={version}"
-    walls = [{"x1": mm(w.x1), "y1": mm(w.y1), "x2": mm(w.x2), "y2": mm(w.y2), "thickness": mm(w.thickness),
-              "height": mm(w.height), "color": list(w.color)} for w in scene.world.walls]
+    walls = [
+        {
+            "x1": mm(w.x1),
+            "y1": mm(w.y1),
+            "x2": mm(w.x2),
+            "y2": mm(w.y2),
+            "thickness": mm(w.thickness),
+            "height": mm(w.height),
+            "color": list(w.color),
+        }
+        for w in scene.world.walls
+    ]
     robots = []
     for robot in sim.robots:
         t = robot.type
         wheels = t.wheels if drive_of(t).viewer_wheels else None
-        robots.append({"id": robot.id, "name": robot.name, "type": t.name,
-                       "size": [mm(t.length), mm(t.width), mm(t.height)], "color": list(t.color),
-                       # Other drives' wheels come as robot bodies of their own (below).
-                       "wheel_diameter": mm(wheels.diameter) if wheels else 0.0,
-                       "track": mm(wheels.track) if wheels else 0.0})
+        robots.append(
+            {
+                "id": robot.id,
+                "name": robot.name,
+                "type": t.name,
+                "size": [mm(t.length), mm(t.width), mm(t.height)],
+                "color": list(t.color),
+                # Other drives' wheels come as robot bodies of their own (below).
+                "wheel_diameter": mm(wheels.diameter) if wheels else 0.0,
+                "track": mm(wheels.track) if wheels else 0.0,
+            }
+        )
         if has_mesh(sim, robot.body):  # its .obj model, drawn instead of the box (mesh_message.py)
             robots[-1]["mesh"] = mesh_url("robot", robot.id) + query
     markers = [{"x": mm(m.x), "y": mm(m.y), "color": list(m.color)} for m in scene.markers]
@@ -54,26 +71,50 @@ def scene(sim, texture_url: str | None, version: str | None = None, new_scene: b
     for thing in sim.objects:
         parts = _shapes(model, thing.geoms)
         if parts:  # `shape` and `size` say what it mainly is; `parts` draw it
-            objects.append({"id": thing.id, "type": thing.type.name, "color": list(thing.type.color),
-                            "shape": parts[0]["shape"], "size": parts[0]["size"], "parts": parts})
+            objects.append(
+                {
+                    "id": thing.id,
+                    "type": thing.type.name,
+                    "color": list(thing.type.color),
+                    "shape": parts[0]["shape"],
+                    "size": parts[0]["size"],
+                    "parts": parts,
+                }
+            )
             if thing.mesh_geoms:
                 objects[-1]["mesh"] = mesh_url("object", thing.id) + query
-    bodies = [{"id": body, "robot": robot.id, "parts": _shapes(model, _geoms(model, body), colored=True)}
-              for robot in sim.robots for body in robot.shown_parts]
+    bodies = [
+        {"id": body, "robot": robot.id, "parts": _shapes(model, _geoms(model, body), colored=True)}
+        for robot in sim.robots
+        for body in robot.shown_parts
+    ]
     water = {"surface": sim.water.surface} if sim.water is not None else None
-    return {"type": "scene", "name": Path(scene.source).name, "new_scene": new_scene,
-            "floor": {"width": sim.floor.width, "height": sim.floor.height, "texture": texture_url},
-            "walls": walls, "robots": robots, "objects": objects, "markers": markers, "bodies": bodies,
-            "water": water,
-            "warnings": [_warning(d) for d in scene.warnings],
-            "settings": {"vis": scene.settings.vis, "trace": scene.settings.trace}}
+    return {
+        "type": "scene",
+        "name": Path(scene.source).name,
+        "new_scene": new_scene,
+        "floor": {"width": sim.floor.width, "height": sim.floor.height, "texture": texture_url},
+        "walls": walls,
+        "robots": robots,
+        "objects": objects,
+        "markers": markers,
+        "bodies": bodies,
+        "water": water,
+        "warnings": [_warning(d) for d in scene.warnings],
+        "settings": {"vis": scene.settings.vis, "trace": scene.settings.trace},
+    }
 
 
 def _warning(diagnostic) -> dict:
     """A loader warning as the viewer lists it (file:line and what was wrong)."""
     where = diagnostic.location
-    return {"file": where.file, "line": where.line, "column": where.column, "code": diagnostic.code,
-            "message": diagnostic.message}
+    return {
+        "file": where.file,
+        "line": where.line,
+        "column": where.column,
+        "code": diagnostic.code,
+        "message": diagnostic.message,
+    }
 
 
 def _geoms(model, body: int) -> range:
@@ -100,17 +141,27 @@ def snapshot(sim) -> dict:
     robots = []
     for r in sim.robots:
         battery = r.component(Battery)
-        robots.append(pose(r.id, data.xpos[r.body].tolist(), data.xquat[r.body].tolist(),
-                           battery.volts if battery is not None else None))
+        robots.append(
+            pose(
+                r.id,
+                data.xpos[r.body].tolist(),
+                data.xquat[r.body].tolist(),
+                battery.volts if battery is not None else None,
+            )
+        )
     objects = [pose(o.id, data.xpos[o.body].tolist(), data.xquat[o.body].tolist()) for o in sim.objects]
     # Moving parts of robots (arm links, fingers, steered wheels), by their body number.
-    bodies = [pose(body, data.xpos[body].tolist(), data.xquat[body].tolist())
-              for robot in sim.robots for body in robot.shown_parts]
+    bodies = [
+        pose(body, data.xpos[body].tolist(), data.xquat[body].tolist())
+        for robot in sim.robots
+        for body in robot.shown_parts
+    ]
     return snapshot_of(sim.time, robots, objects, bodies, sensor_rays(sim.robots) if sim.scene.settings.vis else None)
 
 
-def snapshot_of(time: float, robots: list[dict], objects: list[dict], bodies: list[dict],
-                rays: list[dict] | None = None) -> dict:
+def snapshot_of(
+    time: float, robots: list[dict], objects: list[dict], bodies: list[dict], rays: list[dict] | None = None
+) -> dict:
     """A `snapshot` from its poses (also a recording's, eyesim/record/recording.py); rays only with VIS."""
     message = {"type": "snapshot", "time": time, "robots": robots, "objects": objects, "bodies": bodies}
     if rays is not None:
@@ -134,14 +185,16 @@ def sensor_rays(robots) -> list[dict]:
         for sensor in robot.components_of(PsdSensor):
             origin, direction, hit = sensor.beam()
             end = origin + direction * (hit if hit is not None else MAX_RANGE_MM / 1000)
-            rays.append({"robot": robot.id, "kind": "psd", "psd": sensor.id, "origin": _rounded(origin),
-                         "ends": _rounded(end)})
+            rays.append(
+                {"robot": robot.id, "kind": "psd", "psd": sensor.id, "origin": _rounded(origin), "ends": _rounded(end)}
+            )
         scanner = robot.component(LidarScanner)
         if scanner is not None and scanner.last_scan is not None:
             origin, directions, distances = scanner.last_scan
             ends = origin + directions * (distances[:, None] / 1000.0)
-            rays.append({"robot": robot.id, "kind": "lidar", "origin": _rounded(origin),
-                         "ends": _rounded(ends.reshape(-1))})
+            rays.append(
+                {"robot": robot.id, "kind": "lidar", "origin": _rounded(origin), "ends": _rounded(ends.reshape(-1))}
+            )
     return rays
 
 
@@ -151,8 +204,14 @@ def _rounded(values: np.ndarray) -> list[float]:
 
 def status(sim, real_time_factor: float | None, history_start: float | None = None) -> dict:
     speed = "max" if sim.clock.speed == float("inf") else sim.clock.speed
-    message = {"type": "status", "time": sim.time, "paused": sim.clock.paused, "speed": speed,
-               "clock": sim.clock.mode, "real_time_factor": real_time_factor}
+    message = {
+        "type": "status",
+        "time": sim.time,
+        "paused": sim.clock.paused,
+        "speed": speed,
+        "clock": sim.clock.mode,
+        "real_time_factor": real_time_factor,
+    }
     if history_start is not None:
         message["history_start"] = history_start
     return message
@@ -184,8 +243,13 @@ def camera_encoded(robot_id: int, width: int, height: int, jpeg_base64: str) -> 
 
 def menu(robot) -> dict:
     screen = robot.component(Lcd)
-    return {"type": "menu", "robot": robot.id, "labels": list(screen.menu or ["", "", "", ""]),
-            "visible": screen.menu_visible, "rotated": screen.rotated}
+    return {
+        "type": "menu",
+        "robot": robot.id,
+        "labels": list(screen.menu or ["", "", "", ""]),
+        "visible": screen.menu_visible,
+        "rotated": screen.rotated,
+    }
 
 
 def console(robot_id: int, stream: str, text: str) -> dict:
@@ -210,8 +274,10 @@ def robot_io(robot) -> dict | None:
     digital, analog = robot.component(DigitalLines), robot.component(AnalogInputs)
     if digital is None or analog is None:
         return None
-    lines = [{"direction": digital.directions[k], "level": digital.read(k + 1), "driven": digital.driven[k]}
-             for k in range(LINES)]
+    lines = [
+        {"direction": digital.directions[k], "level": digital.read(k + 1), "driven": digital.driven[k]}
+        for k in range(LINES)
+    ]
     return {"type": "io", "robot": robot.id, "digital": lines, "analog": list(analog.values)}
 
 
@@ -223,12 +289,14 @@ def timeline(mode: str, name: str | None = None, start: float | None = None, end
     return message
 
 
-def frame_text(time: float, clear: list[int], message_texts: list[str], start: float | None = None,
-               end: float | None = None) -> str:
+def frame_text(
+    time: float, clear: list[int], message_texts: list[str], start: float | None = None, end: float | None = None
+) -> str:
     """A `frame` as JSON text: its messages are already JSON (cached images), so they are joined, not re-encoded."""
     span = "" if start is None else f',"start":{start!r},"end":{end!r}'
-    return (f'{{"type":"frame","time":{time!r}{span},"clear":{json.dumps(clear)},'
-            f'"messages":[{",".join(message_texts)}]}}')
+    return (
+        f'{{"type":"frame","time":{time!r}{span},"clear":{json.dumps(clear)},"messages":[{",".join(message_texts)}]}}'
+    )
 
 
 def signals(catalogue: list[dict]) -> dict:

@@ -47,8 +47,10 @@ class AccessPolicy:
         self.host = host
         self.loopback = is_loopback(host)
         if not require_token and not self.loopback:
-            raise NoTokenRefused(f"--no-token: {host} can be reached from other machines; "
-                                 f"a server without a token may only listen on loopback (127.0.0.1)")
+            raise NoTokenRefused(
+                f"--no-token: {host} can be reached from other machines; "
+                f"a server without a token may only listen on loopback (127.0.0.1)"
+            )
         self.token = (token or secrets.token_urlsafe(18)) if require_token else None
         self._names = self._allowed_names(host)
 
@@ -84,8 +86,7 @@ class AccessPolicy:
     async def middleware(self, request: web.Request, handler):
         reason = self.refusal(request)
         if reason is not None:
-            log.warning("viewer: refused %s %s from %s: %s", request.method, request.path,
-                        request.remote, reason)
+            log.warning("viewer: refused %s %s from %s: %s", request.method, request.path, request.remote, reason)
             raise web.HTTPForbidden(text=f"EyeSim viewer: {reason}\n")
         response = await handler(request)
         if self.token is not None and request.query.get("token") == self.token:
@@ -98,5 +99,5 @@ def _host_name(host_header: str) -> str:
     """The name part of a Host header, lower case: 'localhost:8080' -> 'localhost', '[::1]:80' -> '::1'."""
     header = host_header.strip().lower()
     if header.startswith("["):
-        return header[1:header.find("]")] if "]" in header else ""
+        return header[1 : header.find("]")] if "]" in header else ""
     return header.rsplit(":", 1)[0] if header.count(":") == 1 else header

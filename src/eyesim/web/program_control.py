@@ -34,8 +34,11 @@ COMPILE_SECONDS = 120  # a compiler that takes longer is stopped
 FREE_ROBOT_SECONDS = 5.0  # how long a restart waits for the old program's connection to close
 MAX_BODY = 64 * 1024
 # gcc and clang: "file:line:column: error: message" (column optional)
-DIAGNOSTIC = re.compile(r"^(?P<file>[^:\n]+):(?P<line>\d+):(?:(?P<column>\d+):)? "
-                        r"(?P<kind>fatal error|error|warning|note): (?P<message>.*)$", re.MULTILINE)
+DIAGNOSTIC = re.compile(
+    r"^(?P<file>[^:\n]+):(?P<line>\d+):(?:(?P<column>\d+):)? "
+    r"(?P<kind>fatal error|error|warning|note): (?P<message>.*)$",
+    re.MULTILINE,
+)
 
 
 class BadRequest(Exception):
@@ -71,8 +74,11 @@ class ProgramControl:
     async def overview(self, _body: dict) -> dict:
         roots = self.roots()
         files = await asyncio.get_running_loop().run_in_executor(None, program_files.list_files, roots)
-        return {"roots": [{"name": r.name, "path": str(r.path)} for r in roots], "files": files,
-                "robots": [self._robot_state(robot, roots) for robot in self.sim.robots]}
+        return {
+            "roots": [{"name": r.name, "path": str(r.path)} for r in roots],
+            "files": files,
+            "robots": [self._robot_state(robot, roots) for robot in self.sim.robots],
+        }
 
     async def start(self, body: dict) -> dict:
         robot = self.robot(body)
@@ -101,23 +107,37 @@ class ProgramControl:
         language = "cc" if program_files.kind_of(source) == "c" else "c++"
         output = toolchain.executable_name(source.with_suffix(""))
         root = roots[body["root"]].path
-        args = [toolchain.source_argument(source.relative_to(root).as_posix()), "-o",
-                toolchain.source_argument(output.relative_to(root).as_posix())]
+        args = [
+            toolchain.source_argument(source.relative_to(root).as_posix()),
+            "-o",
+            toolchain.source_argument(output.relative_to(root).as_posix()),
+        ]
         command = toolchain.compiler_command(language, args)
         result = await asyncio.get_running_loop().run_in_executor(None, _run_compiler, command, root)
         if result.returncode == 0:
             toolchain.place_library(args, cwd=root)
         text = result.stdout + result.stderr
-        return {"ok": result.returncode == 0, "output": text,
-                "diagnostics": [diagnostic(match) for match in DIAGNOSTIC.finditer(text)],
-                "program": program_files.locate(roots, output) if result.returncode == 0 else None}
+        return {
+            "ok": result.returncode == 0,
+            "output": text,
+            "diagnostics": [diagnostic(match) for match in DIAGNOSTIC.finditer(text)],
+            "program": program_files.locate(roots, output) if result.returncode == 0 else None,
+        }
 
     async def settings(self, _body: dict) -> dict:
         settings = self.sim.scene.settings
-        clock = {key: value for key, value in messages.status(self.sim, None).items()
-                 if key in ("time", "paused", "speed", "clock")}
-        return {"vis": settings.vis, "trace": settings.trace, "psd_noise": settings.psd_noise,
-                "seed": settings.seed, **clock}
+        clock = {
+            key: value
+            for key, value in messages.status(self.sim, None).items()
+            if key in ("time", "paused", "speed", "clock")
+        }
+        return {
+            "vis": settings.vis,
+            "trace": settings.trace,
+            "psd_noise": settings.psd_noise,
+            "seed": settings.seed,
+            **clock,
+        }
 
     async def change_settings(self, body: dict) -> dict:
         """Any of vis, trace, psd_noise and seed (their types and ranges are the schema's)."""
@@ -149,12 +169,14 @@ class ProgramControl:
         deadline = loop.time() + FREE_ROBOT_SECONDS
         while loop.time() < deadline:
             held = await self._on_simulation(
-                lambda sim: any(s.robot is not None and s.robot.id == robot_id and not s.closed for s in sim.sessions))
+                lambda sim: any(s.robot is not None and s.robot.id == robot_id and not s.closed for s in sim.sessions)
+            )
             if not held:
                 return
             await asyncio.sleep(0.05)
-        raise BadRequest(f"robot {robot_id} is still held by a program the simulator did not start "
-                         f"(stop it where it runs)")
+        raise BadRequest(
+            f"robot {robot_id} is still held by a program the simulator did not start (stop it where it runs)"
+        )
 
     @contextlib.asynccontextmanager
     async def _robot_busy(self, robot_id: int):
@@ -202,10 +224,16 @@ class ProgramControl:
     def _robot_state(self, robot, roots) -> dict:
         run = self.launcher.latest(robot.id)
         program = self.program_of(robot)
-        state = {"id": robot.id, "name": robot.name,
-                 "program": None if program is None else (program_files.locate(roots, program) or
-                                                          {"root": None, "path": str(program)}),
-                 "state": "none", "exit_code": None, "reason": None}
+        state = {
+            "id": robot.id,
+            "name": robot.name,
+            "program": None
+            if program is None
+            else (program_files.locate(roots, program) or {"root": None, "path": str(program)}),
+            "state": "none",
+            "exit_code": None,
+            "reason": None,
+        }
         if run is None:
             return state
         if run.error:
@@ -220,6 +248,7 @@ class ProgramControl:
 
     def json_route(self, handler, limit: int = MAX_BODY):
         """An aiohttp handler for handler(checked JSON body) -> JSON answer, refusals as {"error"}."""
+
         async def route(request: web.Request) -> web.Response:
             try:
                 body = await checked_body(request, limit) if request.method == "POST" else {}
@@ -250,21 +279,28 @@ def apply_settings(sim, **changes) -> None:
 
 def _run_compiler(command: list[str], cwd: Path) -> subprocess.CompletedProcess:
     try:
-        return subprocess.run(command, cwd=cwd, capture_output=True, text=True, errors="replace",
-                              timeout=COMPILE_SECONDS)
+        return subprocess.run(
+            command, cwd=cwd, capture_output=True, text=True, errors="replace", timeout=COMPILE_SECONDS
+        )
     except FileNotFoundError:
-        return subprocess.CompletedProcess(command, 1, "", f"compiler {command[0]!r} not found; install one "
-                                                           f"or set CC / CXX\n")
+        return subprocess.CompletedProcess(
+            command, 1, "", f"compiler {command[0]!r} not found; install one or set CC / CXX\n"
+        )
     except subprocess.TimeoutExpired:
-        return subprocess.CompletedProcess(command, 1, "", f"the compiler took longer than {COMPILE_SECONDS} s "
-                                                           f"and was stopped\n")
+        return subprocess.CompletedProcess(
+            command, 1, "", f"the compiler took longer than {COMPILE_SECONDS} s and was stopped\n"
+        )
 
 
 def diagnostic(match: re.Match) -> dict:
     """One finding of the compiler's (DIAGNOSTIC) as the page gets it."""
-    return {"file": match["file"], "line": int(match["line"]),
-            "column": int(match["column"]) if match["column"] else None,
-            "kind": "error" if match["kind"] == "fatal error" else match["kind"], "message": match["message"]}
+    return {
+        "file": match["file"],
+        "line": int(match["line"]),
+        "column": int(match["column"]) if match["column"] else None,
+        "kind": "error" if match["kind"] == "fatal error" else match["kind"],
+        "message": match["message"],
+    }
 
 
 def _error(message: str, status: int = 400) -> web.Response:

@@ -22,10 +22,35 @@ from eyesim import platform
 from eyesim.web.scene_files import FileAccessError, Root, SceneRoots, confined
 
 # Folders that hold no student's programs: build output, caches, VCS, environments, dependencies.
-SKIPPED_FOLDERS = {"__pycache__", "node_modules", ".git", ".venv", "venv", "env", ".env", "build", "dist",
-                   "_build", "cmake-build-debug", "cmake-build-release", "CMakeFiles", "site-packages",
-                   "dist-packages", ".tox", ".nox", ".mypy_cache", ".pytest_cache", ".ruff_cache", ".cache",
-                   ".eggs", "htmlcov", ".idea", ".vscode", "target", "bower_components"}
+SKIPPED_FOLDERS = {
+    "__pycache__",
+    "node_modules",
+    ".git",
+    ".venv",
+    "venv",
+    "env",
+    ".env",
+    "build",
+    "dist",
+    "_build",
+    "cmake-build-debug",
+    "cmake-build-release",
+    "CMakeFiles",
+    "site-packages",
+    "dist-packages",
+    ".tox",
+    ".nox",
+    ".mypy_cache",
+    ".pytest_cache",
+    ".ruff_cache",
+    ".cache",
+    ".eggs",
+    "htmlcov",
+    ".idea",
+    ".vscode",
+    "target",
+    "bower_components",
+}
 SKIPPED_SUFFIXES = (".egg-info", ".dist-info", ".app", ".dSYM")
 MAX_DEPTH = 4  # folders below a root that the listing looks into
 MAX_FILES = 500  # listed at most: a root holding a whole home folder must not stall the page

@@ -32,8 +32,16 @@ from eyesim.web.program_control import DIAGNOSTIC, BadRequest, ProgramControl, d
 from eyesim.web.program_files import Root, locate
 from eyesim.web.scene_files import FileAccessError, confined
 
-KINDS = {".c": "c", ".cc": "c++", ".cpp": "c++", ".cxx": "c++", ".h": "header", ".hpp": "header",
-         ".hh": "header", ".py": "python"}
+KINDS = {
+    ".c": "c",
+    ".cc": "c++",
+    ".cpp": "c++",
+    ".cxx": "c++",
+    ".h": "header",
+    ".hpp": "header",
+    ".hh": "header",
+    ".py": "python",
+}
 MAX_SOURCE = 1_000_000  # bytes of a source the editor opens or saves
 MAX_SAVE_BODY = 6 * MAX_SOURCE + 4096  # a JSON string may escape each byte (\u0001)
 CHECK_SECONDS = 60  # a Python check that takes longer is stopped
@@ -60,13 +68,19 @@ class ProgramSources:
             raise BadRequest(f"robot {robot.id} has no program: choose a source in the list and open it", 404)
         source = source_of(sources.locate(program))
         if source is None:
-            raise BadRequest(f"robot {robot.id} runs {program.name}, a program with no source beside it "
-                             f"({program.stem}.c, .cpp or .py): choose a source in the list and open it", 404)
+            raise BadRequest(
+                f"robot {robot.id} runs {program.name}, a program with no source beside it "
+                f"({program.stem}.c, .cpp or .py): choose a source in the list and open it",
+                404,
+            )
         roots = self.control.roots()
         place = locate(roots, source)
         if place is None:
-            raise BadRequest(f"robot {robot.id}'s program source {source} is outside the "
-                             f"{' and the '.join(r.name for r in roots)}: the page may not open it", 403)
+            raise BadRequest(
+                f"robot {robot.id}'s program source {source} is outside the "
+                f"{' and the '.join(r.name for r in roots)}: the page may not open it",
+                403,
+            )
         return await self.read(place)
 
     async def read(self, body: dict) -> dict:
@@ -75,27 +89,40 @@ class ProgramSources:
         try:
             text = data.decode("utf-8")
         except UnicodeDecodeError as error:
-            raise BadRequest(f"{body['path']!r} is not UTF-8 text (byte {error.start}): "
-                             f"the editor cannot show it") from None
-        return {"root": body["root"], "path": body["path"], "kind": KINDS[path.suffix.lower()], "text": text,
-                "version": _version(data)}
+            raise BadRequest(
+                f"{body['path']!r} is not UTF-8 text (byte {error.start}): the editor cannot show it"
+            ) from None
+        return {
+            "root": body["root"],
+            "path": body["path"],
+            "kind": KINDS[path.suffix.lower()],
+            "text": text,
+            "version": _version(data),
+        }
 
     async def save(self, body: dict) -> dict:
         """Replace the file's text. With `version` (what read answered), only when the file is still
         that version: a file changed meanwhile (another editor) is not overwritten unasked (409)."""
         path = self._source(body)
         if not self.control.roots()[body["root"]].writable or paths.PACKAGE_DIR in path.parents:
-            raise BadRequest(f"{body['path']!r} belongs to the installed EyeSim (an example): copy it into "
-                             f"your folder to change it", 403)
+            raise BadRequest(
+                f"{body['path']!r} belongs to the installed EyeSim (an example): copy it into your folder to change it",
+                403,
+            )
         data = body["text"].encode("utf-8")
         if len(data) > MAX_SOURCE:
             raise BadRequest(f"{len(data)} bytes: more than the editor saves ({MAX_SOURCE})", 413)
         if "version" in body and body["version"] != _version(_read(path)):
-            raise BadRequest(f"{body['path']} changed on disk since it was opened: reopen it, or save again "
-                             f"to replace it", 409)
+            raise BadRequest(
+                f"{body['path']} changed on disk since it was opened: reopen it, or save again to replace it", 409
+            )
         _replace(path, data)
-        return {"root": body["root"], "path": body["path"], "kind": KINDS[path.suffix.lower()],
-                "version": _version(data)}
+        return {
+            "root": body["root"],
+            "path": body["path"],
+            "kind": KINDS[path.suffix.lower()],
+            "version": _version(data),
+        }
 
     async def check(self, body: dict) -> dict:
         path = self._source(body)
@@ -132,8 +159,9 @@ class ProgramSources:
         except FileAccessError as error:
             raise BadRequest(str(error), 403) from None
         if path.suffix.lower() not in KINDS:
-            raise BadRequest(f"{relative!r} is not a program source: the editor opens only "
-                             f"{', '.join(KINDS)} files", 403)
+            raise BadRequest(
+                f"{relative!r} is not a program source: the editor opens only {', '.join(KINDS)} files", 403
+            )
         if not path.is_file():
             raise BadRequest(f"{relative!r}: no such file in the {root.name} {root.path}", 404)
         return path
@@ -189,8 +217,12 @@ def _check_c(path: Path) -> dict:
         ok = True
     except sources.BuildError as error:
         said, ok = str(error), False
-    return {"ok": ok, "output": said, "diagnostics": [diagnostic(match) for match in DIAGNOSTIC.finditer(said)],
-            "program": None}
+    return {
+        "ok": ok,
+        "output": said,
+        "diagnostics": [diagnostic(match) for match in DIAGNOSTIC.finditer(said)],
+        "program": None,
+    }
 
 
 def _check_python(path: Path) -> dict:
@@ -199,8 +231,12 @@ def _check_python(path: Path) -> dict:
         result = subprocess.run(command, capture_output=True, text=True, errors="replace", timeout=CHECK_SECONDS)
         found = json.loads(result.stdout)
     except subprocess.TimeoutExpired:
-        return {"ok": False, "output": f"checking took longer than {CHECK_SECONDS} s and was stopped",
-                "diagnostics": [], "program": None}
+        return {
+            "ok": False,
+            "output": f"checking took longer than {CHECK_SECONDS} s and was stopped",
+            "diagnostics": [],
+            "program": None,
+        }
     except ValueError:  # the checker itself failed: what it said is the output
         return {"ok": False, "output": result.stderr or result.stdout, "diagnostics": [], "program": None}
     diagnostics = [dict(d, file=path.name) for d in found["diagnostics"]]

@@ -27,7 +27,7 @@ class RecentFiles:
     def note(self, path: Path) -> None:
         """`path` was opened or saved: first in the list, and the list written back."""
         text = str(Path(path).resolve())
-        self.paths = [text] + [p for p in self.paths if p != text][:self.limit - 1]
+        self.paths = [text] + [p for p in self.paths if p != text][: self.limit - 1]
         self._write()
 
     def _read(self) -> list[str]:
@@ -41,7 +41,7 @@ class RecentFiles:
         if not isinstance(kept, list) or not all(isinstance(p, str) for p in kept):
             log.warning("%s: not a list of file names; starting a new list of recent scenes", self.store)
             return []
-        return kept[:self.limit]
+        return kept[: self.limit]
 
     def _write(self) -> None:
         partial = self.store.with_name(f"{self.store.name}.{os.getpid()}.tmp")

@@ -37,8 +37,15 @@ MAX_UPLOAD_BYTES = 4 * 1024**3  # a recording sent from the page (hours of camer
 
 
 class ReplayServer:
-    def __init__(self, recording, host: str = "127.0.0.1", port: int = 8080, token: str | None = None,
-                 report_dir: Path | None = None, require_token: bool = True):
+    def __init__(
+        self,
+        recording,
+        host: str = "127.0.0.1",
+        port: int = 8080,
+        token: str | None = None,
+        report_dir: Path | None = None,
+        require_token: bool = True,
+    ):
         self.recording = recording
         self.report_dir = None if report_dir is None else Path(report_dir).resolve()
         self.source = timeline.RecordingTimeline(recording, secrets.token_hex(4))
@@ -140,8 +147,11 @@ class ReplayServer:
         segment = source.segment_at(source.start_us)
         cursor.segment = segment.index
         await ws.send_str(json.dumps(source.scene_message(segment)))
-        await ws.send_str(json.dumps(messages.timeline("replay", self.recording.path.name, source.start_us / 1e6,
-                                                       source.end_us / 1e6)))
+        await ws.send_str(
+            json.dumps(
+                messages.timeline("replay", self.recording.path.name, source.start_us / 1e6, source.end_us / 1e6)
+            )
+        )
         await ws.send_str(await cursor.frame(source, source.start_us))
 
     @staticmethod
@@ -197,8 +207,10 @@ class ReplayServer:
         if problem:
             return _error(problem)
         if data["type"] not in timeline.TIMELINE_COMMANDS:
-            return _error(f"{reprlib.repr(data.get('type'))}: this is a replay of {self.recording.path.name}; "
-                          "it can be watched, not changed")
+            return _error(
+                f"{reprlib.repr(data.get('type'))}: this is a replay of {self.recording.path.name}; "
+                "it can be watched, not changed"
+            )
         try:
             return await timeline.answer(self.source, cursor, data)
         except ValueError as error:
@@ -218,8 +230,9 @@ def _image_kind(data: bytes) -> str | None:
     return None
 
 
-async def serve(recording, host: str, port: int, on_ready, report_dir: Path | None = None,
-                require_token: bool = True) -> None:
+async def serve(
+    recording, host: str, port: int, on_ready, report_dir: Path | None = None, require_token: bool = True
+) -> None:
     """Serves the replay (and the grading report in `report_dir`) until cancelled; `on_ready(server)`
     once it listens."""
     server = ReplayServer(recording, host, port, report_dir=report_dir, require_token=require_token)
@@ -231,8 +244,9 @@ async def serve(recording, host: str, port: int, on_ready, report_dir: Path | No
         await server.stop()
 
 
-def serve_until_interrupted(path: str, host: str, port: int, open_browser: bool, report: Path | None = None,
-                            require_token: bool = True) -> int:
+def serve_until_interrupted(
+    path: str, host: str, port: int, open_browser: bool, report: Path | None = None, require_token: bool = True
+) -> int:
     """`eyesim replay` (and `eyesim grade --serve`): the viewer over a recording, or over a grading
     report's recorded cases (`report`, its folder), until Ctrl-C; the command's exit status."""
     import webbrowser
@@ -242,8 +256,11 @@ def serve_until_interrupted(path: str, host: str, port: int, open_browser: bool,
     if report is not None:
         recordings = sorted(report.glob(f"cases/*/*/{RECORDING}"))
         if not recordings:
-            print(f"eyesim replay: {report} holds no recorded case (cases/*/*/{RECORDING}); grade with "
-                  f"--keep-recordings all, or failed (the default) when a case failed", file=sys.stderr)
+            print(
+                f"eyesim replay: {report} holds no recorded case (cases/*/*/{RECORDING}); grade with "
+                f"--keep-recordings all, or failed (the default) when a case failed",
+                file=sys.stderr,
+            )
             return 2
         path = str(recordings[0])
     try:
@@ -266,8 +283,9 @@ def serve_until_interrupted(path: str, host: str, port: int, open_browser: bool,
             print(f"eyesim replay: {error}", file=sys.stderr)
             return 2
         except OSError as error:
-            print(f"eyesim replay: cannot serve on port {port}: {error.strerror} (try --viewer-port 0)",
-                  file=sys.stderr)
+            print(
+                f"eyesim replay: cannot serve on port {port}: {error.strerror} (try --viewer-port 0)", file=sys.stderr
+            )
             return 2
         except KeyboardInterrupt:
             pass

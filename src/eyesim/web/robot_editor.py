@@ -130,8 +130,11 @@ def full_json(robot: RobotType) -> dict:
 
 def _plain(value):
     if dataclasses.is_dataclass(value):
-        return {f.name: _plain(getattr(value, f.name)) for f in dataclasses.fields(value)
-                if getattr(value, f.name) is not None}
+        return {
+            f.name: _plain(getattr(value, f.name))
+            for f in dataclasses.fields(value)
+            if getattr(value, f.name) is not None
+        }
     if isinstance(value, (tuple, list)):
         return [_plain(v) for v in value]
     return value
@@ -171,7 +174,7 @@ def _problems(diagnostics: Diagnostics, text: str) -> list[dict]:
         message = d.message
         pointer = json_format.pointer(list(path)) if path else ""
         if pointer and message.startswith(pointer + ": "):
-            message = message[len(pointer) + 2:]  # the field shows where; the text says what
+            message = message[len(pointer) + 2 :]  # the field shows where; the text says what
         problems.append({"kind": d.kind, "pointer": pointer, "message": message, "code": d.code})
     return problems
 
@@ -210,8 +213,9 @@ def save_robot(root: Path, robot: RobotType, relative: str, overwrite: bool, ori
     if suffix not in ROBOT_SUFFIXES:
         raise EditorError(f"{relative!r}: expected a name ending in .robi or .json")
     if not path.parent.is_dir():
-        raise EditorError(f"{relative!r}: the folder {path.parent.relative_to(root.resolve()).as_posix()!r} "
-                          "does not exist", 404)
+        raise EditorError(
+            f"{relative!r}: the folder {path.parent.relative_to(root.resolve()).as_posix()!r} does not exist", 404
+        )
     if path.exists() and not overwrite:
         raise EditorError(f"{relative!r} exists: overwrite it?", 409)
     if path.is_symlink() or (path.exists() and not path.is_file()):
@@ -257,8 +261,13 @@ def arena_size(robot: RobotType) -> float:
 def arena_walls(size: float) -> tuple[Wall, ...]:
     """A square room with an inner wall ahead of the robot, so PSDs, the lidar and the camera see something."""
     a = size
-    return (Wall(0, 0, a, 0), Wall(a, 0, a, a), Wall(a, a, 0, a), Wall(0, a, 0, 0),
-            Wall(a * 0.75, a * 0.3, a * 0.75, a * 0.7, color=(200, 60, 60)))
+    return (
+        Wall(0, 0, a, 0),
+        Wall(a, 0, a, a),
+        Wall(a, a, 0, a),
+        Wall(0, a, 0, 0),
+        Wall(a * 0.75, a * 0.3, a * 0.75, a * 0.7, color=(200, 60, 60)),
+    )
 
 
 def build(robot: RobotType, floor: float, walls=(), clock: Clock | None = None, at: float = 0.5):
@@ -286,8 +295,15 @@ def sensors(sim) -> dict:
     psds = []
     for sensor in robot.components_of(PsdSensor):
         origin, direction, hit = sensor.beam()
-        psds.append({"id": sensor.id, "name": sensor.spec.name, "origin": _list(origin),
-                     "direction": _list(direction), "hit": None if hit is None else round(float(hit), 4)})
+        psds.append(
+            {
+                "id": sensor.id,
+                "name": sensor.spec.name,
+                "origin": _list(origin),
+                "direction": _list(direction),
+                "hit": None if hit is None else round(float(hit), 4),
+            }
+        )
     lidar = None
     scanner = robot.component(LidarScanner)
     if scanner is not None and robot.type.lidar is not None:
@@ -299,8 +315,14 @@ def sensors(sim) -> dict:
     cam = robot.component(Camera)
     if cam is not None:
         view = cam.view(*CAMERA_SIZE)
-        camera = {"position": _list(view.position), "forward": _list(view.forward), "up": _list(view.up),
-                  "fov": view.fov, "aspect": CAMERA_SIZE[0] / CAMERA_SIZE[1], "fisheye": view.fisheye}
+        camera = {
+            "position": _list(view.position),
+            "forward": _list(view.forward),
+            "up": _list(view.up),
+            "fov": view.fov,
+            "aspect": CAMERA_SIZE[0] / CAMERA_SIZE[1],
+            "fisheye": view.fisheye,
+        }
     return {"snapshot": messages.snapshot(sim), "psds": psds, "lidar": lidar, "camera": camera}
 
 
@@ -372,8 +394,11 @@ class TestDrive:
     def state(self, sim) -> dict:
         self.last_seen = time.monotonic()
         robot = sim.robots[0]
-        readings = {"psd": {str(s.id): s.distance_mm() for s in robot.components_of(PsdSensor)},
-                    "servos": sorted(robot.servos), "motors": sorted(robot.motors)}
+        readings = {
+            "psd": {str(s.id): s.distance_mm() for s in robot.components_of(PsdSensor)},
+            "servos": sorted(robot.servos),
+            "motors": sorted(robot.motors),
+        }
         scanner = robot.component(LidarScanner)
         if scanner is not None and robot.type.lidar is not None:
             readings["lidar"] = scanner.scan().tolist()  # before sensors(): it draws this scan
@@ -431,17 +456,25 @@ class RobotEditor:
 
     async def _sources(self, request: web.Request) -> web.Response:
         files = await asyncio.get_running_loop().run_in_executor(None, robot_files, self.root)
-        return web.json_response({"builtins": builtins.robot_names(), "files": files,
-                                  "drives": [d.name for d in DRIVES],
-                                  "drive_parts": {d.name: list(d.parts) for d in DRIVES}})
+        return web.json_response(
+            {
+                "builtins": builtins.robot_names(),
+                "files": files,
+                "drives": [d.name for d in DRIVES],
+                "drive_parts": {d.name: list(d.parts) for d in DRIVES},
+            }
+        )
 
     async def _open(self, request: web.Request) -> web.Response:
         return await _answer(request, self._opened)
 
     async def _opened(self, body: dict) -> dict:
         robot, path, problems = await _off_loop(open_robot, self.root, body["source"])
-        origin = path.resolve().relative_to(self.root.resolve()).as_posix() \
-            if path is not None and self.root.resolve() in path.resolve().parents else None
+        origin = (
+            path.resolve().relative_to(self.root.resolve()).as_posix()
+            if path is not None and self.root.resolve() in path.resolve().parents
+            else None
+        )
         source = body["source"]
         builtin = source.partition(":")[2] if source.startswith("builtin:") else None
         return {"robot": full_json(robot), "origin": origin, "builtin": builtin, "problems": problems}
@@ -468,7 +501,12 @@ class RobotEditor:
                 self.preview.close()
             self.preview = sim
             preview = await _off_loop(preview_of, sim, f"{PREFIX}/mesh/preview")
-        return {"problems": problems, "preview": preview, "robi": write_robi(robot), "chassis": list(chassis_extent(robot))}
+        return {
+            "problems": problems,
+            "preview": preview,
+            "robi": write_robi(robot),
+            "chassis": list(chassis_extent(robot)),
+        }
 
     async def _save(self, request: web.Request) -> web.Response:
         return await _answer(request, self._saved)
@@ -476,16 +514,20 @@ class RobotEditor:
     async def _saved(self, body: dict) -> dict:
         robot, problems = check_document(body["robot"])
         if robot is None:
-            raise EditorError("the robot has errors: " + "; ".join(
-                f"{p['pointer'] or 'robot'}: {p['message']}" for p in problems if p["kind"] == "error"))
-        path = await _off_loop(save_robot, self.root, robot, body["path"], body.get("overwrite") is True,
-                               self._origin(body))
+            raise EditorError(
+                "the robot has errors: "
+                + "; ".join(f"{p['pointer'] or 'robot'}: {p['message']}" for p in problems if p["kind"] == "error")
+            )
+        path = await _off_loop(
+            save_robot, self.root, robot, body["path"], body.get("overwrite") is True, self._origin(body)
+        )
         diagnostics = Diagnostics()
         _, again = read_document(path, diagnostics, ("robot",))  # what `eyesim check` will say
-        return {"path": path.relative_to(self.root.resolve()).as_posix(),
-                "problems": [{"kind": d.kind, "pointer": "", "message": str(d), "code": d.code}
-                             for d in diagnostics.items],
-                "loads": again is not None}
+        return {
+            "path": path.relative_to(self.root.resolve()).as_posix(),
+            "problems": [{"kind": d.kind, "pointer": "", "message": str(d), "code": d.code} for d in diagnostics.items],
+            "loads": again is not None,
+        }
 
     async def _drive_start(self, request: web.Request) -> web.Response:
         return await _answer(request, self._drive_started)

@@ -52,8 +52,10 @@ def confined(base: Path, relative: object, where: str = "the scene root") -> Pat
         raise FileAccessError(f"{relative!r}: '..' is not allowed, only paths under {where}")
     longest = max(parts, key=lambda part: len(part.encode()), default="")
     if len(longest.encode()) > MAX_NAME - 5:  # room for the .sim/.json a save may add
-        raise FileAccessError(f"{longest[:40]!r}...: a folder or file name of {len(longest.encode())} bytes, "
-                              f"more than {MAX_NAME - 5} (file systems take {MAX_NAME})")
+        raise FileAccessError(
+            f"{longest[:40]!r}...: a folder or file name of {len(longest.encode())} bytes, "
+            f"more than {MAX_NAME - 5} (file systems take {MAX_NAME})"
+        )
     base = base.resolve()
     try:
         resolved = base.joinpath(*parts).resolve()
@@ -75,8 +77,9 @@ class SceneRoots:
         self.roots = roots
 
     def describe(self) -> list[dict]:
-        return [{"index": i, "name": r.name, "path": str(r.path), "writable": r.writable}
-                for i, r in enumerate(self.roots)]
+        return [
+            {"index": i, "name": r.name, "path": str(r.path), "writable": r.writable} for i, r in enumerate(self.roots)
+        ]
 
     # -- confinement ---------------------------------------------------------------------------
     def locate(self, root: object, relative: object) -> Path:
@@ -102,8 +105,10 @@ class SceneRoots:
 
     # -- listings ------------------------------------------------------------------------------
     def scene_files(self, query: str = "") -> list[dict]:
-        return self.files(lambda path, name: name.endswith(SCENE_SUFFIXES) and
-                          (not name.endswith(".json") or _is_json_scene(path)), query)
+        return self.files(
+            lambda path, name: name.endswith(SCENE_SUFFIXES) and (not name.endswith(".json") or _is_json_scene(path)),
+            query,
+        )
 
     def robot_files(self) -> list[dict]:
         return self.files(lambda path, name: name.endswith(ROBOT_SUFFIXES))
@@ -113,8 +118,11 @@ class SceneRoots:
 
     def program_files(self) -> list[dict]:
         """Programs a robot can run: .py files and executables (EyeSim's `prog.x`, a bare `drive`)."""
-        return self.files(lambda path, name: name.endswith(".py") or
-                          (Path(name).suffix in PROGRAM_SUFFIXES and os.access(path, os.X_OK)))
+        return self.files(
+            lambda path, name: (
+                name.endswith(".py") or (Path(name).suffix in PROGRAM_SUFFIXES and os.access(path, os.X_OK))
+            )
+        )
 
     def files(self, wanted, query: str = "") -> list[dict]:
         """Files under the roots for which wanted(path, lower-case name) holds and whose relative
@@ -125,8 +133,9 @@ class SceneRoots:
         for index, root in enumerate(self.roots):
             for directory, folders, files in os.walk(root.path):  # does not follow links to folders
                 depth = len(Path(directory).relative_to(root.path).parts)
-                folders[:] = sorted(f for f in folders if not f.startswith(".") and f not in SKIPPED_DIRS
-                                    and depth < MAX_DEPTH)
+                folders[:] = sorted(
+                    f for f in folders if not f.startswith(".") and f not in SKIPPED_DIRS and depth < MAX_DEPTH
+                )
                 seen += len(files) + len(folders)
                 for name in sorted(files):
                     path = Path(directory, name)

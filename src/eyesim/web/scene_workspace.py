@@ -79,9 +79,15 @@ class SceneWorkspace:
             for item in items[kind]:
                 if item["type"] in known:
                     item["footprint"] = list(footprint(known[item["type"]]))
-        return {"editing": self.editing, "browse_at_start": self.browse_at_start, "file": str(self.draft.file),
-                "place": {"root": place[0], "path": place[1]} if place else None,
-                "can_undo": bool(self.undo_stack), "can_redo": bool(self.redo_stack), "items": items}
+        return {
+            "editing": self.editing,
+            "browse_at_start": self.browse_at_start,
+            "file": str(self.draft.file),
+            "place": {"root": place[0], "path": place[1]} if place else None,
+            "can_undo": bool(self.undo_stack),
+            "can_redo": bool(self.redo_stack),
+            "items": items,
+        }
 
     async def _files(self, request: web.Request) -> web.Response:
         query = request.query.get("q", "")[:200]
@@ -91,9 +97,14 @@ class SceneWorkspace:
 
     async def _catalog(self, request: web.Request) -> web.Response:
         def catalog():
-            return {"robots": builtins.robot_names(), "objects": builtins.object_names(),
-                    "robot_files": self.roots.robot_files(), "object_files": self.roots.object_files(),
-                    "programs": self.roots.program_files()}
+            return {
+                "robots": builtins.robot_names(),
+                "objects": builtins.object_names(),
+                "robot_files": self.roots.robot_files(),
+                "object_files": self.roots.object_files(),
+                "programs": self.roots.program_files(),
+            }
+
         return web.json_response(await _in_thread(catalog))
 
     async def _state(self, request: web.Request) -> web.Response:
@@ -191,8 +202,13 @@ class SceneWorkspace:
             except OSError as error:  # a name the file system refuses
                 return _refused(f"cannot save there: {error.strerror}")
             if existing and body.get("overwrite") is not True:
-                return web.json_response({"error": f"{', '.join(p.name for p in existing)} already exist(s)",
-                                          "exists": [self._shown(p) for p in existing]}, status=409)
+                return web.json_response(
+                    {
+                        "error": f"{', '.join(p.name for p in existing)} already exist(s)",
+                        "exists": [self._shown(p) for p in existing],
+                    },
+                    status=409,
+                )
             try:
                 for path, text in files.items():
                     path.parent.mkdir(parents=True, exist_ok=True)
@@ -207,8 +223,9 @@ class SceneWorkspace:
             return web.json_response(dict(self.state(), saved=[self._shown(p) for p in files]))
 
     # -- doing it -----------------------------------------------------------------------------
-    async def _take(self, draft: Draft, stack: list[Draft], clear_redo: bool, opened: bool = False,
-                    moved: str = "") -> web.Response:
+    async def _take(
+        self, draft: Draft, stack: list[Draft], clear_redo: bool, opened: bool = False, moved: str = ""
+    ) -> web.Response:
         """Make `draft` the scene (the current one goes onto `stack`), or refuse it. `opened`: a new
         scene rather than an edit of this one (a recording goes on in another file). `moved`: what
         the edit moved clear, for the page. Bodies the loader moved (off a wall drawn across them)
@@ -263,9 +280,10 @@ class SceneWorkspace:
             raise web.HTTPServiceUnavailable(text="the simulation did not answer in time") from None
         except Exception as error:  # noqa: BLE001 - the new scene could not be built
             log.error("viewer: the new scene could not be built: %s", error)
-            raise web.HTTPUnprocessableEntity(text=json.dumps({"error": f"the physics cannot build this scene: "
-                                                                         f"{error}", "diagnostics": []}),
-                                              content_type="application/json") from None
+            raise web.HTTPUnprocessableEntity(
+                text=json.dumps({"error": f"the physics cannot build this scene: {error}", "diagnostics": []}),
+                content_type="application/json",
+            ) from None
 
     def _locate(self, place: dict) -> Path:
         """The file a {"root", "path"} object (checked by the schema) names, confined to its root."""
@@ -310,8 +328,9 @@ async def _body(request: web.Request) -> dict:
     except BadBody as error:
         text = json.dumps({"error": str(error)})
         if error.status == 413:
-            raise web.HTTPRequestEntityTooLarge(MAX_BODY, request.content_length or MAX_BODY + 1, text=text,
-                                                content_type="application/json") from None
+            raise web.HTTPRequestEntityTooLarge(
+                MAX_BODY, request.content_length or MAX_BODY + 1, text=text, content_type="application/json"
+            ) from None
         raise web.HTTPBadRequest(text=text, content_type="application/json") from None
 
 
@@ -320,5 +339,11 @@ def _refused(message: str, diagnostics=()) -> web.Response:
 
 
 def _diagnostic(d) -> dict:
-    return {"kind": d.kind, "file": d.location.file, "line": d.location.line, "column": d.location.column,
-            "message": d.message, "text": str(d)}
+    return {
+        "kind": d.kind,
+        "file": d.location.file,
+        "line": d.location.line,
+        "column": d.location.column,
+        "message": d.message,
+        "text": str(d),
+    }

@@ -135,8 +135,9 @@ class ViewerHub:
             return
         if kind in ("lcd", "camera"):  # encoded off both threads, only the latest counts
             robot, pixels = message["robot"], message["pixels"]
-            future = self.loop.run_in_executor(self.encoder, _lcd_message if kind == "lcd" else _camera_message,
-                                               robot, pixels)
+            future = self.loop.run_in_executor(
+                self.encoder, _lcd_message if kind == "lcd" else _camera_message, robot, pixels
+            )
             (self.lcd if kind == "lcd" else self.cameras)[robot] = future
             self.history.add_image(robot, kind, time_us, future)
             for browser in self._following():
@@ -362,16 +363,27 @@ async def static_file(request: web.Request) -> web.StreamResponse:
         raise web.HTTPNotFound()
     if not path.is_file():
         if relative == "index.html":
-            return web.Response(status=500, text="The viewer assets are missing from this install: "
-                                                 "run `make viewer` in the EyeSim source tree.")
+            return web.Response(
+                status=500,
+                text="The viewer assets are missing from this install: run `make viewer` in the EyeSim source tree.",
+            )
         raise web.HTTPNotFound()
     # Bundle file names are fixed: make browsers revalidate so an upgrade shows at once.
     return web.FileResponse(path, headers={"Cache-Control": "no-cache"})
 
 
 class ViewerServer:
-    def __init__(self, sim, io_thread, host: str = "127.0.0.1", port: int = 8080, token: str | None = None,
-                 launcher=None, run_folder: Path | None = None, require_token: bool = True):
+    def __init__(
+        self,
+        sim,
+        io_thread,
+        host: str = "127.0.0.1",
+        port: int = 8080,
+        token: str | None = None,
+        launcher=None,
+        run_folder: Path | None = None,
+        require_token: bool = True,
+    ):
         """`launcher` runs the programs the page starts (none: the page cannot start programs);
         `run_folder` is the first scene root (default: the current folder)."""
         self.sim = sim
@@ -439,7 +451,8 @@ class ViewerServer:
             raise web.HTTPNotFound()
         # a big model takes a moment to turn into JSON: not on the I/O loop
         text = await asyncio.get_running_loop().run_in_executor(
-            None, lambda: json.dumps(mesh_message.mesh_message(self.sim.world.model, body)))
+            None, lambda: json.dumps(mesh_message.mesh_message(self.sim.world.model, body))
+        )
         return web.Response(text=text, content_type="application/json")
 
     async def _websocket(self, request: web.Request) -> web.WebSocketResponse:

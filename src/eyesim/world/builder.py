@@ -40,10 +40,14 @@ def build_world(scene: Scene, timestep: float) -> BuiltWorld:
         add_wall(spec, index, wall)
     for index, marker in enumerate(scene.markers):
         add_marker(spec, index, marker)
-    objects = [add_object(spec, object_id, scene.object_types[p.type_name], p)
-               for object_id, p in enumerate(scene.objects, start=1)]
-    robots = [add_robot(spec, robot_id, scene.robot_types[p.type_name], p, scene.settings)
-              for robot_id, p in enumerate(scene.robots, start=1)]
+    objects = [
+        add_object(spec, object_id, scene.object_types[p.type_name], p)
+        for object_id, p in enumerate(scene.objects, start=1)
+    ]
+    robots = [
+        add_robot(spec, robot_id, scene.robot_types[p.type_name], p, scene.settings)
+        for robot_id, p in enumerate(scene.robots, start=1)
+    ]
     world = PhysicsWorld(spec, water)
     for thing in objects + robots:
         thing.bind(world)
@@ -60,8 +64,9 @@ def build_world(scene: Scene, timestep: float) -> BuiltWorld:
 def _check_triangles(scene: Scene) -> None:
     """Refuse, at the placement that passes it, a scene whose models are too detailed together."""
     total = 0
-    placements = [(p, scene.object_types[p.type_name]) for p in scene.objects] + \
-                 [(p, scene.robot_types[p.type_name]) for p in scene.robots]
+    placements = [(p, scene.object_types[p.type_name]) for p in scene.objects] + [
+        (p, scene.robot_types[p.type_name]) for p in scene.robots
+    ]
     for placement, kind in placements:
         mesh = model_mesh(kind.model)
         if mesh is None:
@@ -70,9 +75,18 @@ def _check_triangles(scene: Scene) -> None:
         if total > MAX_SCENE_TRIANGLES:
             times = sum(1 for p, k in placements if k.model == kind.model)
             where = placement.location or Location(scene.source or "the scene")
-            raise SceneError([Diagnostic("error", where, f"the scene's models have more than {MAX_SCENE_TRIANGLES} "
-                                         f"triangles together, the limit for a scene: {kind.model} is placed "
-                                         f"{times} time(s); use a simpler model or fewer of them", "limit")])
+            raise SceneError(
+                [
+                    Diagnostic(
+                        "error",
+                        where,
+                        f"the scene's models have more than {MAX_SCENE_TRIANGLES} "
+                        f"triangles together, the limit for a scene: {kind.model} is placed "
+                        f"{times} time(s); use a simpler model or fewer of them",
+                        "limit",
+                    )
+                ]
+            )
 
 
 def _floating(world: PhysicsWorld, thing: SceneObject) -> WaterForces:

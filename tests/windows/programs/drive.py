@@ -1,5 +1,6 @@
 """Windows test program (Python): writes on the LCD, drives 400 mm ahead, turns 90 degrees left and
 prints where its odometry says it is."""
+
 from eye import *
 
 LCDPrintf("Windows Python\n")

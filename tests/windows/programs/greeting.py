@@ -1,4 +1,5 @@
 """Windows test program: text beyond ASCII on the LCD and on stdout."""
+
 from eye import *
 
 LCDPrintf("Grüße 20°C\n")

@@ -1,5 +1,6 @@
 """Windows test program: starts forever.exe from its own folder, waits until it runs and until the
 test creates the file `release`, then keeps the robot busy for ever."""
+
 import os
 import subprocess
 import sys

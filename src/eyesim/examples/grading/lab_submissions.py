@@ -18,17 +18,33 @@ MODEL = Path(__file__).resolve().parents[1] / "programs" / "wall_follow.c"
 VARIANTS = {
     "good": ("wall_follow.c", []),
     "slow": ("wall_follow.c", [("#define SPEED 200", "#define SPEED 80")]),
-    "compile_error": ("wall_follow.c", [("int start = OSGetCount(), last_error = 0;",
-                                         "int start = OSGetCount(), last_error = 0")]),
-    "crash": ("wall_follow.c", [("        OSWait(PERIOD);",
-                                 "        OSWait(PERIOD);\n"
-                                 "        if (OSGetCount() - start > 5000)\n"
-                                 "            *(volatile int *)0 = 1; /* a stray pointer */")]),
-    "hang": ("wall_follow.c", [("        OSWait(PERIOD);",
-                                "        OSWait(PERIOD);\n"
-                                "        if (OSGetCount() - start > 3000)\n"
-                                "            for (volatile int spin = 0;; spin++)\n"
-                                "                ; /* computes for ever without a RoBIOS call */")]),
+    "compile_error": (
+        "wall_follow.c",
+        [("int start = OSGetCount(), last_error = 0;", "int start = OSGetCount(), last_error = 0")],
+    ),
+    "crash": (
+        "wall_follow.c",
+        [
+            (
+                "        OSWait(PERIOD);",
+                "        OSWait(PERIOD);\n"
+                "        if (OSGetCount() - start > 5000)\n"
+                "            *(volatile int *)0 = 1; /* a stray pointer */",
+            )
+        ],
+    ),
+    "hang": (
+        "wall_follow.c",
+        [
+            (
+                "        OSWait(PERIOD);",
+                "        OSWait(PERIOD);\n"
+                "        if (OSGetCount() - start > 3000)\n"
+                "            for (volatile int spin = 0;; spin++)\n"
+                "                ; /* computes for ever without a RoBIOS call */",
+            )
+        ],
+    ),
     "bumper": ("wall_follow.c", [("if (front < DISTANCE + 60)", "if (0)")]),
     "misnamed": ("wallfollow.c", []),
 }
@@ -46,8 +62,11 @@ def make_variant(variant: str) -> tuple[str, str]:
 def write_submissions(directory: Path, count: int | None = None) -> dict[str, str]:
     """Write the submissions; returns student -> variant."""
     names = list(VARIANTS)
-    students = ({f"student{n + 1:02d}": names[n % len(names)] for n in range(count)} if count
-                else {variant: variant for variant in names})
+    students = (
+        {f"student{n + 1:02d}": names[n % len(names)] for n in range(count)}
+        if count
+        else {variant: variant for variant in names}
+    )
     for student, variant in students.items():
         file, text = make_variant(variant)
         folder = directory / student

@@ -7,9 +7,9 @@ import sys
 
 from eye import *
 
-MIN_PIXELS = 20   # red pixels that count as seeing the target
-ARRIVED = 0.25    # share of the image the target fills when the robot is there
-TURN_GAIN = 0.8   # deg/s per pixel the target is off the middle
+MIN_PIXELS = 20  # red pixels that count as seeing the target
+ARRIVED = 0.25  # share of the image the target fills when the robot is there
+TURN_GAIN = 0.8  # deg/s per pixel the target is off the middle
 RUN_SECONDS = 60
 
 

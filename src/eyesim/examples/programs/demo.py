@@ -4,9 +4,9 @@
 #   eyesim run --program 1=programs/demo.py
 from eye import *
 
-CLEARANCE = 300       # mm: turn away when a wall is closer than this ahead
+CLEARANCE = 300  # mm: turn away when a wall is closer than this ahead
 SIDE_CLEARANCE = 150  # mm: steer away from a wall this close at the side
-CRUISE = 250          # mm/s
+CRUISE = 250  # mm/s
 
 
 def show_sensors():

@@ -8,11 +8,11 @@ import math
 
 from eye import *
 
-CELL = 20          # mm per map cell
-SIZE = 300         # cells per side: a 6 m square around the start
+CELL = 20  # mm per map cell
+SIZE = 300  # cells per side: a 6 m square around the start
 RUN_SECONDS = 40
-CLEARANCE = 380    # mm: turn when something is this close ahead
-SCALE = 1          # map cells per LCD pixel
+CLEARANCE = 380  # mm: turn when something is this close ahead
+SCALE = 1  # map cells per LCD pixel
 
 hits = [bytearray(SIZE) for _ in range(SIZE)]  # hits[cy][cx]: how often a beam ended in the cell
 

@@ -8,10 +8,10 @@ import sys
 
 from eye import *
 
-CELL = 360       # mm: the maze's cell size
-WALL = 250       # mm: a PSD reading below this is a wall of this cell
-GOAL = (4, 3)    # the finish, in cells east and north of the start
-MAX_MOVES = 60   # give up after this many cells
+CELL = 360  # mm: the maze's cell size
+WALL = 250  # mm: a PSD reading below this is a wall of this cell
+GOAL = (4, 3)  # the finish, in cells east and north of the start
+MAX_MOVES = 60  # give up after this many cells
 
 STEPS = [(1, 0), (0, 1), (-1, 0), (0, -1)]  # a cell east, north, west, south
 NAMES = ["east", "north", "west", "south"]
@@ -30,11 +30,11 @@ def main():
         if PSDGet(PSD_RIGHT) > WALL:
             quarters = -1  # right
         elif PSDGet(PSD_FRONT) > WALL:
-            quarters = 0   # straight on
+            quarters = 0  # straight on
         elif PSDGet(PSD_LEFT) > WALL:
-            quarters = 1   # left
+            quarters = 1  # left
         else:
-            quarters = 2   # back
+            quarters = 2  # back
         if quarters:
             VWTurn(90 * quarters, 180)
             VWWait()

@@ -24,8 +24,9 @@ def show_sensors():
     x, y, phi = VWGetPosition()
     LCDSetPrintf(4, 0, "PSD front %4d  left %4d  right %4d", front, left, right)
     LCDSetPrintf(5, 0, "Position x %5d  y %5d  phi %4d", x, y, phi)
-    LCDSetPrintf(6, 0, "Battery %d.%02d V   time %6.1f s", ANALOGVoltage() // 100, ANALOGVoltage() % 100,
-                 OSGetCount() / 1000.0)
+    LCDSetPrintf(
+        6, 0, "Battery %d.%02d V   time %6.1f s", ANALOGVoltage() // 100, ANALOGVoltage() % 100, OSGetCount() / 1000.0
+    )
     for k, (value, colour) in enumerate([(left, GREEN), (front, ORANGE), (right, CYAN)]):
         length = 100 if value > 2000 else value // 20
         LCDArea(340, 95 + 22 * k, 440, 110 + 22 * k, DARKGRAY, 1)

@@ -24,7 +24,7 @@ def leg(direction, mm):
 
 LCDPrintf("Omni square\n")
 leg([-1, -1, -1, -1], 600)  # back
-leg([1, -1, -1, 1], 600)    # right
-leg([1, 1, 1, 1], 600)      # ahead
-leg([-1, 1, 1, -1], 600)    # left
+leg([1, -1, -1, 1], 600)  # right
+leg([1, 1, 1, 1], 600)  # ahead
+leg([-1, 1, 1, -1], 600)  # left
 LCDPrintf("back at the start\n")

@@ -14,18 +14,18 @@ def servos(lift, shoulder, elbow, ms):
 
 
 LCDPrintf("Pick and place\n")
-SERVOSet(4, 255)              # open
-servos(153, 128, 128, 2000)   # lift above the can, 150 mm
-servos(153, 169, 197, 3000)   # over the can, to the left: shoulder 49, elbow 82 degrees
-servos(41, 169, 197, 2000)    # down to the can's middle
-SERVOSet(4, 0)                # grip
+SERVOSet(4, 255)  # open
+servos(153, 128, 128, 2000)  # lift above the can, 150 mm
+servos(153, 169, 197, 3000)  # over the can, to the left: shoulder 49, elbow 82 degrees
+servos(41, 169, 197, 2000)  # down to the can's middle
+SERVOSet(4, 0)  # grip
 OSWait(1500)
-servos(153, 169, 197, 2000)   # lift
-servos(153, 80, 197, 3000)    # swing round: shoulder -31 degrees, the can ahead
-servos(43, 80, 197, 2000)     # down to the floor
-SERVOSet(4, 255)              # let go
+servos(153, 169, 197, 2000)  # lift
+servos(153, 80, 197, 3000)  # swing round: shoulder -31 degrees, the can ahead
+servos(43, 80, 197, 2000)  # down to the floor
+SERVOSet(4, 255)  # let go
 OSWait(1500)
-servos(153, 80, 197, 2000)    # up and away
+servos(153, 80, 197, 2000)  # up and away
 x, y, z, phi = SIMGetObject(1)
 LCDPrintf("can at %d %d\n", x, y)
 print("can", x, y, z)

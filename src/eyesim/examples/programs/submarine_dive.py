@@ -7,7 +7,7 @@
 from eye import *
 
 SURFACE = 1500  # mm: the pool's rim
-HEIGHT = 200    # mm: Minnow's hull
+HEIGHT = 200  # mm: Minnow's hull
 
 
 def depth():
@@ -35,10 +35,10 @@ def hold_depth(target, ms, left, right):
 
 
 LCDPrintf("Going to 500 mm depth\n")
-hold_depth(500, 6000, 0, 0)     # to 0.5 m under the surface
+hold_depth(500, 6000, 0, 0)  # to 0.5 m under the surface
 LCDPrintf("depth %d mm, cruising\n", depth())
 print("dived", depth())
-hold_depth(500, 4000, 60, 60)   # ahead
+hold_depth(500, 4000, 60, 60)  # ahead
 hold_depth(500, 3000, 50, -50)  # turning right
 hold_depth(500, 1000, 0, 0)
 LCDPrintf("depth %d mm, surfacing\n", depth())

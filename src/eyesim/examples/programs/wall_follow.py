@@ -4,12 +4,12 @@
 #   eyesim run scenes/wall_follow.sim --program 1=programs/wall_follow.py
 from eye import *
 
-DISTANCE = 200    # mm between the left PSD and the wall
-SPEED = 200       # mm/s along the wall
-GAIN = 0.6        # deg/s of turn per mm of error
-DAMPING = 0.4     # deg/s of turn per mm/s the error changes by: stops the robot weaving
-PERIOD = 20       # ms between readings
-MAX_TURN = 90     # deg/s
+DISTANCE = 200  # mm between the left PSD and the wall
+SPEED = 200  # mm/s along the wall
+GAIN = 0.6  # deg/s of turn per mm of error
+DAMPING = 0.4  # deg/s of turn per mm/s the error changes by: stops the robot weaving
+PERIOD = 20  # ms between readings
+MAX_TURN = 90  # deg/s
 RUN_SECONDS = 60
 
 

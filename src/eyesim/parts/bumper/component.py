@@ -23,10 +23,16 @@ class Bumper(Component):
         self.spec = spec
         height = max(context.robot_type.height - BOTTOM_MM, 10.0)
         self.geom_name = f"{context.prefix}/bumper{spec.id}"
-        context.body.add_geom(name=self.geom_name, type=mujoco.mjtGeom.mjGEOM_BOX,
-                              size=[mm(DEPTH_MM / 2), mm(spec.width / 2), mm(height / 2)],
-                              pos=[mm(spec.x), mm(spec.y), mm(BOTTOM_MM + height / 2)],
-                              quat=yaw_quat(rad(spec.angle)), mass=0.0, friction=FRICTION, rgba=[0.1, 0.1, 0.1, 1])
+        context.body.add_geom(
+            name=self.geom_name,
+            type=mujoco.mjtGeom.mjGEOM_BOX,
+            size=[mm(DEPTH_MM / 2), mm(spec.width / 2), mm(height / 2)],
+            pos=[mm(spec.x), mm(spec.y), mm(BOTTOM_MM + height / 2)],
+            quat=yaw_quat(rad(spec.angle)),
+            mass=0.0,
+            friction=FRICTION,
+            rgba=[0.1, 0.1, 0.1, 1],
+        )
         self.robot = context.robot
 
     def bind(self, world) -> None:
@@ -41,7 +47,7 @@ class Bumper(Component):
     def pressed(self) -> bool:
         """Whether the strip touches something in the world's state of the moment."""
         data = self.world.data
-        return bool(np.any(data.contact.geom[:data.ncon] == self.geom))
+        return bool(np.any(data.contact.geom[: data.ncon] == self.geom))
 
     def level(self) -> int:
         """What its digital line reads: a switch to ground on a pulled-up line, 0 while pressed."""

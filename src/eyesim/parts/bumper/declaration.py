@@ -37,8 +37,13 @@ def read_bumper(reader: PartReader, line: Line) -> None:
     if ident is None or not values:
         return
     if ident > MAX_ID:
-        reader.error(line, f"bumper: expected bumper id 1..{MAX_ID} (digital lines {FIRST_LINE + 1}.."
-                     f"{FIRST_LINE + MAX_ID}), found {ident}", 1, "bad-value")
+        reader.error(
+            line,
+            f"bumper: expected bumper id 1..{MAX_ID} (digital lines {FIRST_LINE + 1}.."
+            f"{FIRST_LINE + MAX_ID}), found {ident}",
+            1,
+            "bad-value",
+        )
         return
     if not reader.positive(line, values[3], 5, "width"):
         return
@@ -60,8 +65,9 @@ def check(robot, diagnostics, at) -> dict:
         if bumper.id > MAX_ID:
             diagnostics.error(at(f"bumper:{i}"), f"bumper id {bumper.id} is not 1..{MAX_ID}", "bad-value")
         elif bumper.id in seen:
-            diagnostics.error(at(f"bumper:{i}"), f"bumper id {bumper.id} is already used: expected a different id",
-                              "duplicate")
+            diagnostics.error(
+                at(f"bumper:{i}"), f"bumper id {bumper.id} is already used: expected a different id", "duplicate"
+            )
         seen.add(bumper.id)
     return {}
 
@@ -79,14 +85,22 @@ PART = Part(
     write=write,
     finish=finish,
     properties={"bumpers": list_of("bumper", "Bumpers")},
-    defs={"bumper": record("Bumper", "a contact strip on the chassis edge, wired to digital input 8 + id", {
-        "id": whole(1, "Id", f"1..{MAX_ID}: digital input line 8 + id reads 0 while pressed"),
-        "x": coordinate("x", "mm forward, middle of the strip"),
-        "y": coordinate("y", "mm left, middle of the strip"),
-        "angle": coordinate("Angle", "degrees the strip faces, left positive (0 = forward)"),
-        "width": positive("Width", "mm"),
-    }, required=("id", "x", "y", "angle", "width"))},
-    json_locations=lambda robot, positions: {f"bumper:{i}": positions.value(["bumpers", i])
-                                             for i in range(len(robot.bumpers))},
+    defs={
+        "bumper": record(
+            "Bumper",
+            "a contact strip on the chassis edge, wired to digital input 8 + id",
+            {
+                "id": whole(1, "Id", f"1..{MAX_ID}: digital input line 8 + id reads 0 while pressed"),
+                "x": coordinate("x", "mm forward, middle of the strip"),
+                "y": coordinate("y", "mm left, middle of the strip"),
+                "angle": coordinate("Angle", "degrees the strip faces, left positive (0 = forward)"),
+                "width": positive("Width", "mm"),
+            },
+            required=("id", "x", "y", "angle", "width"),
+        )
+    },
+    json_locations=lambda robot, positions: {
+        f"bumper:{i}": positions.value(["bumpers", i]) for i in range(len(robot.bumpers))
+    },
     check=check,
 )

@@ -43,8 +43,9 @@ class JointServo(Servo):
         self.name = name
         revolute = joint.kind == "revolute"
         convert = math.radians if revolute else mm
-        super().__init__(joint.servo, convert(joint.min), convert(joint.max),
-                         REVOLUTE_RATE if revolute else PRISMATIC_RATE)
+        super().__init__(
+            joint.servo, convert(joint.min), convert(joint.max), REVOLUTE_RATE if revolute else PRISMATIC_RATE
+        )
 
     def neutral_raw(self) -> float:
         """A joint starts at its zero position, or the limit nearest to it."""
@@ -55,7 +56,6 @@ class JointServo(Servo):
 
 
 class Arm(Component):
-
     def __init__(self, context):
         arm = context.robot_type.arm
         prefix = context.prefix
@@ -71,17 +71,31 @@ class Arm(Component):
             link = context.add_part(parent, name, mass, shown=True, pos=pos, quat=quat, gravcomp=1.0)
             kind = joint.kind
             revolute = kind == "revolute"
-            link.add_joint(name=name, type=mujoco.mjtJoint.mjJNT_HINGE if revolute else mujoco.mjtJoint.mjJNT_SLIDE,
-                           axis=[0, 0, 1], armature=ARMATURE[kind])
-            link.add_geom(name=f"{name}/servo", type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[1.5 * LINK_RADIUS, 0, 0],
-                          mass=SERVO_MASS, rgba=[0.25, 0.25, 0.28, 1.0])
+            link.add_joint(
+                name=name,
+                type=mujoco.mjtJoint.mjJNT_HINGE if revolute else mujoco.mjtJoint.mjJNT_SLIDE,
+                axis=[0, 0, 1],
+                armature=ARMATURE[kind],
+            )
+            link.add_geom(
+                name=f"{name}/servo",
+                type=mujoco.mjtGeom.mjGEOM_SPHERE,
+                size=[1.5 * LINK_RADIUS, 0, 0],
+                mass=SERVO_MASS,
+                rgba=[0.25, 0.25, 0.28, 1.0],
+            )
             # The link as drawn and felt: a tube up z by d, then along the turned x by a.
             elbow = [a * math.cos(theta), a * math.sin(theta), d]
             for part, start, end in (("d", [0.0, 0.0, 0.0], [0.0, 0.0, d]), ("a", [0.0, 0.0, d], elbow)):
                 if start != end:
-                    link.add_geom(name=f"{name}/{part}", type=mujoco.mjtGeom.mjGEOM_CAPSULE, fromto=start + end,
-                                  size=[LINK_RADIUS, 0, 0], mass=LINK_MASS_PER_METRE * math.dist(start, end),
-                                  rgba=LINK_COLOR)
+                    link.add_geom(
+                        name=f"{name}/{part}",
+                        type=mujoco.mjtGeom.mjGEOM_CAPSULE,
+                        fromto=start + end,
+                        size=[LINK_RADIUS, 0, 0],
+                        mass=LINK_MASS_PER_METRE * math.dist(start, end),
+                        rgba=LINK_COLOR,
+                    )
             actuator = context.spec.add_actuator(name=name, target=name, trntype=mujoco.mjtTrn.mjTRN_JOINT)
             actuator.gainprm[0] = STIFFNESS[kind]
             actuator.biastype = mujoco.mjtBias.mjBIAS_AFFINE

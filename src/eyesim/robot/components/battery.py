@@ -23,8 +23,11 @@ class Battery(Component):
     def bind(self, world) -> None:
         super().bind(world)
         model = world.model
-        self.actuators = [i for i in range(model.nu)
-                          if (mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_ACTUATOR, i) or "").startswith(self.prefix)]
+        self.actuators = [
+            i
+            for i in range(model.nu)
+            if (mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_ACTUATOR, i) or "").startswith(self.prefix)
+        ]
         # The arrays themselves: `data.actuator_force` builds a new view at every access.
         self._force, self._velocity = world.data.actuator_force, world.data.actuator_velocity
 

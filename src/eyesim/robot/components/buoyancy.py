@@ -26,12 +26,16 @@ class Buoyancy(Component):
         self.afloat_draft = height * robot_type.mass / displaced if displaced > robot_type.mass else None
         self.height = height
         self.start_depth = mm(robot_type.start_depth) if robot_type.start_depth is not None else None
-        self.parameters = dict(volume=spec.volume / 1000.0, buoyancy_centre=(mm(spec.x), mm(spec.y), mm(spec.z)),
-                               hull_centre=(0.0, 0.0, height / 2), height=height,
-                               drag=(drag.x, drag.y, drag.z) if drag else (0.0, 0.0, 0.0),
-                               rotational_drag=drag.rotation if drag else 0.0,
-                               # drag acts on the hull where it is: the middle of its colliders
-                               pressure_centre=tuple(mm(v) for v in hull_centroid(robot_type)))
+        self.parameters = dict(
+            volume=spec.volume / 1000.0,
+            buoyancy_centre=(mm(spec.x), mm(spec.y), mm(spec.z)),
+            hull_centre=(0.0, 0.0, height / 2),
+            height=height,
+            drag=(drag.x, drag.y, drag.z) if drag else (0.0, 0.0, 0.0),
+            rotational_drag=drag.rotation if drag else 0.0,
+            # drag acts on the hull where it is: the middle of its colliders
+            pressure_centre=tuple(mm(v) for v in hull_centroid(robot_type)),
+        )
 
     def bind(self, world) -> None:
         super().bind(world)

@@ -25,6 +25,7 @@ class Camera(Component):
     (positive) or lowers it; both in degrees from looking straight ahead."""
 
     noun = "camera"
+
     def __init__(self, spec: CameraSpec, context):
         self.spec = spec
         self.robot = context.robot
@@ -61,10 +62,16 @@ class Camera(Component):
         pan, tilt = math.radians(self.pan), math.radians(self.tilt)
         forward = (math.cos(tilt) * math.cos(pan), math.cos(tilt) * math.sin(pan), math.sin(tilt))
         up = (-math.sin(tilt) * math.cos(pan), -math.sin(tilt) * math.sin(pan), math.cos(tilt))
-        return render.View(position=tuple(data.xpos[self.robot.body] + rotation @ self.position),
-                           forward=tuple(rotation @ forward), up=tuple(rotation @ up),
-                           width=width, height=height, fov=self.fov, fisheye=self.spec.fisheye,
-                           own_body=self.robot.body)
+        return render.View(
+            position=tuple(data.xpos[self.robot.body] + rotation @ self.position),
+            forward=tuple(rotation @ forward),
+            up=tuple(rotation @ up),
+            width=width,
+            height=height,
+            fov=self.fov,
+            fisheye=self.spec.fisheye,
+            own_body=self.robot.body,
+        )
 
     def take(self, finish) -> render_worker.Frame:
         """Start an image at the chosen resolution, of the world as it is now, drawn on the render

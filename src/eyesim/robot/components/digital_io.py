@@ -35,8 +35,10 @@ class DigitalLines(Component):
     def setup(self, line: int, direction: str) -> None:
         index = self._index(line)
         if direction not in DIRECTIONS:
-            raise ValueError(f"direction {direction!r} is not 'i' (input), 'o' (output), "
-                             f"'I' (input, pull-up) or 'J' (input, pull-down)")
+            raise ValueError(
+                f"direction {direction!r} is not 'i' (input), 'o' (output), "
+                f"'I' (input, pull-up) or 'J' (input, pull-down)"
+            )
         if direction == "o" and index in self.wired:
             raise ValueError(f"digital line {line} is wired to {self.wired[index][0]}: it can only be an input")
         self.directions[index] = direction

@@ -27,7 +27,6 @@ ARMATURE = 0.05  # kg
 
 
 class Gripper(Component):
-
     def __init__(self, context, arm: Arm):
         spec = context.robot_type.arm.gripper
         prefix = context.prefix
@@ -38,14 +37,33 @@ class Gripper(Component):
             name = f"{prefix}/finger_{side}"
             # A holder at the end effector frame carries the finger sliding along its y axis.
             holder = context.add_part(end, f"{name}/holder", 0.0, pos=arm.end_pos, quat=arm.end_quat)
-            finger = context.add_part(holder, name, FINGER_MASS, shown=True, gravcomp=1.0,
-                                      pos=[0.0, sign * (CLOSED_GAP + FINGER_THICKNESS) / 2, 0.0])
-            finger.add_joint(name=name, type=mujoco.mjtJoint.mjJNT_SLIDE, axis=[0, sign, 0], armature=ARMATURE,
-                             range=[0.0, mm(spec.opening) / 2], limited=True)
-            finger.add_geom(name=name, type=mujoco.mjtGeom.mjGEOM_BOX,
-                            size=[FINGER_LENGTH / 2, FINGER_THICKNESS / 2, FINGER_WIDTH / 2],
-                            pos=[FINGER_LENGTH / 2, 0.0, 0.0], mass=FINGER_MASS, friction=FINGER_FRICTION, condim=4,
-                            priority=2, rgba=[0.3, 0.3, 0.32, 1.0])
+            finger = context.add_part(
+                holder,
+                name,
+                FINGER_MASS,
+                shown=True,
+                gravcomp=1.0,
+                pos=[0.0, sign * (CLOSED_GAP + FINGER_THICKNESS) / 2, 0.0],
+            )
+            finger.add_joint(
+                name=name,
+                type=mujoco.mjtJoint.mjJNT_SLIDE,
+                axis=[0, sign, 0],
+                armature=ARMATURE,
+                range=[0.0, mm(spec.opening) / 2],
+                limited=True,
+            )
+            finger.add_geom(
+                name=name,
+                type=mujoco.mjtGeom.mjGEOM_BOX,
+                size=[FINGER_LENGTH / 2, FINGER_THICKNESS / 2, FINGER_WIDTH / 2],
+                pos=[FINGER_LENGTH / 2, 0.0, 0.0],
+                mass=FINGER_MASS,
+                friction=FINGER_FRICTION,
+                condim=4,
+                priority=2,
+                rgba=[0.3, 0.3, 0.32, 1.0],
+            )
             actuator = context.spec.add_actuator(name=name, target=name, trntype=mujoco.mjtTrn.mjTRN_JOINT)
             actuator.gainprm[0] = STIFFNESS
             actuator.biastype = mujoco.mjtBias.mjBIAS_AFFINE

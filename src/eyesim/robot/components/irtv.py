@@ -20,8 +20,9 @@ def code_of(text: str) -> int:
         return ord(BUTTONS[name])
     if len(text) == 1 and ord(text) in CODES:
         return ord(text)
-    raise ValueError(f"{text!r} is not an IR remote button ({', '.join(BUTTONS)}) or code "
-                     f"({''.join(sorted(BUTTONS.values()))})")
+    raise ValueError(
+        f"{text!r} is not an IR remote button ({', '.join(BUTTONS)}) or code ({''.join(sorted(BUTTONS.values()))})"
+    )
 
 
 class IrReceiver(Component):

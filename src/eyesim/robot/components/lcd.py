@@ -10,9 +10,21 @@ import math
 import numpy as np
 from PIL import Image, ImageDraw
 
-from eyesim.protocol.constants import (BLACK, BOLD, ITALICS, LCD_AUTOREFRESH, LCD_FB_ROTATE, LCD_LINEFEED,
-                                      LCD_LISTMENU, LCD_MENU_STRLENGTH, LCD_SCROLLING, LCD_SHOWMENU, MENU_HEIGHT,
-                                      NORMAL, WHITE)
+from eyesim.protocol.constants import (
+    BLACK,
+    BOLD,
+    ITALICS,
+    LCD_AUTOREFRESH,
+    LCD_FB_ROTATE,
+    LCD_LINEFEED,
+    LCD_LISTMENU,
+    LCD_MENU_STRLENGTH,
+    LCD_SCROLLING,
+    LCD_SHOWMENU,
+    MENU_HEIGHT,
+    NORMAL,
+    WHITE,
+)
 from eyesim.robot import lcd_fonts
 from eyesim.robot.component import Component
 from eyesim.robot.lcd_fonts import FONT_NAMES, cell_size
@@ -34,8 +46,14 @@ MENU_BORDER = 0x808080
 # LCDSetMode flags: each "off" flag is the "on" flag shifted 8 bits up.
 AUTOREFRESH, SCROLLING, LINEFEED = LCD_AUTOREFRESH, LCD_SCROLLING, LCD_LINEFEED
 SHOWMENU, LISTMENU, FB_ROTATE = LCD_SHOWMENU, LCD_LISTMENU, LCD_FB_ROTATE
-MODE_SETTINGS = {AUTOREFRESH: "autorefresh", SCROLLING: "scrolling", LINEFEED: "linefeed",
-                 SHOWMENU: "menu_visible", LISTMENU: "list_menu", FB_ROTATE: "rotated"}
+MODE_SETTINGS = {
+    AUTOREFRESH: "autorefresh",
+    SCROLLING: "scrolling",
+    LINEFEED: "linefeed",
+    SHOWMENU: "menu_visible",
+    LISTMENU: "list_menu",
+    FB_ROTATE: "rotated",
+}
 KNOWN_MODE_BITS = sum(MODE_SETTINGS) | (sum(MODE_SETTINGS) << 8)
 
 IMAGE_COLOR, IMAGE_GRAY, IMAGE_BINARY = 0, 1, 2
@@ -48,8 +66,9 @@ def rgb(color: int) -> tuple[int, int, int]:
 
 def check_color(color: int, what: str = "colour") -> int:
     if not 0 <= color <= 0xFFFFFF:
-        raise ValueError(f"{what} {color:#x} is not a 0xRRGGBB colour" if color >= 0 else
-                         f"{what} {color} is not a 0xRRGGBB colour")
+        raise ValueError(
+            f"{what} {color:#x} is not a 0xRRGGBB colour" if color >= 0 else f"{what} {color} is not a 0xRRGGBB colour"
+        )
     return color
 
 
@@ -164,7 +183,7 @@ class Lcd(Component):
                     break
             else:
                 self.row, self.column = self.rows - 1, 0
-                text = text[cut + 1:]
+                text = text[cut + 1 :]
         return text[-MAX_PRINT:]
 
     def _put(self, char: str) -> None:
@@ -174,8 +193,9 @@ class Lcd(Component):
             self._new_line()
         width, height = self.cell
         y, x = self.row * height, self.column * width
-        self.pixels[y:y + height, x:x + width] = _cell_pixels(self.font, self.variation, self.font_size, char,
-                                                              self.foreground, self.background)
+        self.pixels[y : y + height, x : x + width] = _cell_pixels(
+            self.font, self.variation, self.font_size, char, self.foreground, self.background
+        )
         self._put_text(y, x, char, width, height)
         self.column += 1
 
@@ -190,8 +210,11 @@ class Lcd(Component):
 
     def _erase_text(self, left: int, top: int, right: int, bottom: int) -> None:
         """Forget the characters whose cells overlap the pixels [left, right) x [top, bottom)."""
-        covered = [key for key, (_, w, h) in self.text.items()
-                   if key[1] < right and key[1] + w > left and key[0] < bottom and key[0] + h > top]
+        covered = [
+            key
+            for key, (_, w, h) in self.text.items()
+            if key[1] < right and key[1] + w > left and key[0] < bottom and key[0] + h > top
+        ]
         for key in covered:
             del self.text[key]
 
@@ -202,11 +225,14 @@ class Lcd(Component):
         elif self.scrolling:
             height = self.cell[1]
             bottom = self.rows * height
-            self.pixels[:bottom - height] = self.pixels[height:bottom]
-            self.pixels[bottom - height:bottom] = rgb(self.background)
+            self.pixels[: bottom - height] = self.pixels[height:bottom]
+            self.pixels[bottom - height : bottom] = rgb(self.background)
             # The text moves with its pixels: the top row scrolls away, rows below the text area stay.
-            self.text = {(y - height if y < bottom else y, x): cell for (y, x), cell in self.text.items()
-                         if y >= height or y >= bottom}
+            self.text = {
+                (y - height if y < bottom else y, x): cell
+                for (y, x), cell in self.text.items()
+                if y >= height or y >= bottom
+            }
         else:
             self.row = 0
 
@@ -275,7 +301,7 @@ class Lcd(Component):
             if on:
                 self._draw_menu()
             else:
-                self.pixels[HEIGHT - MENU_HEIGHT:] = 0
+                self.pixels[HEIGHT - MENU_HEIGHT :] = 0
 
     def refresh(self) -> None:
         """LCDRefresh: redraw the menu and show everything drawn so far."""
@@ -302,8 +328,10 @@ class Lcd(Component):
             rows.setdefault(y // height, {})[x // width] = char
         if not rows:
             return []
-        return ["".join(chars.get(c, " ") for c in range(max(chars) + 1)) if (chars := rows.get(r)) else ""
-                for r in range(max(rows) + 1)]
+        return [
+            "".join(chars.get(c, " ") for c in range(max(chars) + 1)) if (chars := rows.get(r)) else ""
+            for r in range(max(rows) + 1)
+        ]
 
     # -- menu --------------------------------------------------------------------------------
     def set_menu(self, labels: list[str]) -> None:
@@ -319,8 +347,9 @@ class Lcd(Component):
         (docs/api/compatibility.md#lcdmenui-positions-count-from-0)."""
         if not 0 <= position <= 3:
             raise ValueError(f"menu position {position} is not 0..3 (0 is KEY1 ... 3 is KEY4, as on EyeSim)")
-        entry = MenuEntry(label[:MENU_LABEL_LENGTH], check_color(foreground, "foreground"),
-                          check_color(background, "background"))
+        entry = MenuEntry(
+            label[:MENU_LABEL_LENGTH], check_color(foreground, "foreground"), check_color(background, "background")
+        )
         if self.menu is None:
             self.menu = ["", "", "", ""]
         self.menu[position] = entry.label
@@ -337,7 +366,9 @@ class Lcd(Component):
         width = WIDTH // 4
         for index, entry in enumerate(self.menu_entries):
             left = index * width
-            draw.rectangle([left + 1, 1, left + width - 2, MENU_HEIGHT - 2], fill=rgb(entry.bg), outline=rgb(MENU_BORDER))
+            draw.rectangle(
+                [left + 1, 1, left + width - 2, MENU_HEIGHT - 2], fill=rgb(entry.bg), outline=rgb(MENU_BORDER)
+            )
             text = entry.label.strip()
             if not text:
                 continue
@@ -349,7 +380,7 @@ class Lcd(Component):
             while draw.textlength(text, font=font) > width - 8:
                 text = text[:-1]  # still too long at the smallest size: cut it
             draw.text((left + width / 2, MENU_HEIGHT / 2), text, fill=rgb(entry.fg), font=font, anchor="mm")
-        self.pixels[HEIGHT - MENU_HEIGHT:] = np.asarray(image)
+        self.pixels[HEIGHT - MENU_HEIGHT :] = np.asarray(image)
 
     def menu_key_at(self, x: int, y: int) -> int | None:
         """The soft key (1, 2, 4, 8) whose button is at pixel (x, y) of the shown menu bar, if any."""
@@ -407,7 +438,7 @@ class Lcd(Component):
         left, right = (min(max(v, -1), WIDTH) for v in sorted((x1, x2)))
         top, bottom = (min(max(v, -1), HEIGHT) for v in sorted((y1, y2)))
         if fill:
-            self.pixels[max(top, 0):bottom + 1, max(left, 0):right + 1] = rgb(color)
+            self.pixels[max(top, 0) : bottom + 1, max(left, 0) : right + 1] = rgb(color)
             self._erase_text(left, top, right + 1, bottom + 1)
         else:
             across, down = np.arange(left, right + 1), np.arange(top, bottom + 1)
@@ -430,20 +461,30 @@ class Lcd(Component):
                 half = math.isqrt(limit - (row - cy) ** 2)
                 left, right = max(cx - half, 0), min(cx + half, WIDTH - 1)
                 if left <= right:
-                    self.pixels[row, left:right + 1] = rgb(color)
+                    self.pixels[row, left : right + 1] = rgb(color)
         else:
             offsets = [o for y in _outline_parameters(cx, cy, radius) for o in _octants(_outline_x(radius, y), y)]
             self._plot(*_on_screen([cx + dx for dx, _ in offsets], [cy + dy for _, dy in offsets]), color)
         self._changed()
 
-    def image(self, x: int, y: int, width: int, height: int, display_width: int, display_height: int,
-              image_format: int, data: bytes) -> None:
+    def image(
+        self,
+        x: int,
+        y: int,
+        width: int,
+        height: int,
+        display_width: int,
+        display_height: int,
+        image_format: int,
+        data: bytes,
+    ) -> None:
         """An image of width x height pixels, scaled (nearest pixel) to the display size at (x, y)."""
         if image_format not in IMAGE_CHANNELS:
             raise ValueError(f"image format {image_format} is not 0 (colour), 1 (gray) or 2 (binary)")
         if width <= 0 or height <= 0 or display_width <= 0 or display_height <= 0:
-            raise ValueError(f"image size {width}x{height} shown as {display_width}x{display_height}: "
-                             f"sizes must be positive")
+            raise ValueError(
+                f"image size {width}x{height} shown as {display_width}x{display_height}: sizes must be positive"
+            )
         channels = IMAGE_CHANNELS[image_format]
         if len(data) != width * height * channels:
             raise ValueError(f"a {width}x{height} image needs {width * height * channels} bytes, got {len(data)}")

@@ -58,8 +58,9 @@ class LidarScanner(Component):
         clockwise = np.radians((np.arange(points) - points // 2) * field_deg / points)
         tilt = math.radians(tilt_deg)
         # Level beam (cos a, -sin a, 0) for a clockwise angle a, then turned about y by the tilt.
-        self._local = np.stack([np.cos(clockwise) * math.cos(tilt), -np.sin(clockwise),
-                                -np.cos(clockwise) * math.sin(tilt)], axis=1)
+        self._local = np.stack(
+            [np.cos(clockwise) * math.cos(tilt), -np.sin(clockwise), -np.cos(clockwise) * math.sin(tilt)], axis=1
+        )
 
     def scan(self) -> np.ndarray:
         """Distances in mm (int32), MAX_RANGE_MM where a beam hits nothing in range."""
@@ -82,8 +83,20 @@ class LidarScanner(Component):
         directions = local @ rotation.T
         geom = np.zeros(len(local), dtype=np.int32)
         dist = np.zeros(len(local), dtype=np.float64)
-        mujoco.mj_multiRay(model, data, origin, directions.ravel(), RAY_GROUPS, 1, self.robot.body,
-                           geom, dist, None, len(local), mm(MAX_RANGE_MM))
+        mujoco.mj_multiRay(
+            model,
+            data,
+            origin,
+            directions.ravel(),
+            RAY_GROUPS,
+            1,
+            self.robot.body,
+            geom,
+            dist,
+            None,
+            len(local),
+            mm(MAX_RANGE_MM),
+        )
         self._look_past_own_parts(origin, directions, geom, dist)
         within = (dist >= 0) & (dist < mm(MAX_RANGE_MM))
         distances = np.where(within, np.rint(dist * 1000.0), MAX_RANGE_MM).astype(np.int32)
@@ -92,8 +105,9 @@ class LidarScanner(Component):
         self._cached = (self.world.state_version, local, distances)
         return distances
 
-    def _look_past_own_parts(self, origin: np.ndarray, directions: np.ndarray, geoms: np.ndarray,
-                             dists: np.ndarray) -> None:
+    def _look_past_own_parts(
+        self, origin: np.ndarray, directions: np.ndarray, geoms: np.ndarray, dists: np.ndarray
+    ) -> None:
         """Beams that hit one of the robot's own moving parts (a wheel, an arm link: bodies other
         than the chassis, which the ray cast already ignores) continue past it."""
         own = np.flatnonzero(self._own_parts[geoms])
@@ -105,8 +119,16 @@ class LidarScanner(Component):
             travelled, part, segment = 0.0, geoms[i], dists[i]
             while self._own_parts[part]:  # (-1, nothing hit, is the table's last entry: False)
                 travelled += segment + 1e-6
-                segment = mujoco.mj_ray(model, data, origin + directions[i] * travelled, directions[i], RAY_GROUPS, 1,
-                                        model.geom_bodyid[part], geom)
+                segment = mujoco.mj_ray(
+                    model,
+                    data,
+                    origin + directions[i] * travelled,
+                    directions[i],
+                    RAY_GROUPS,
+                    1,
+                    model.geom_bodyid[part],
+                    geom,
+                )
                 part = geom[0]
             geoms[i], dists[i] = part, (travelled + segment if part >= 0 else -1.0)
 

@@ -33,8 +33,13 @@ class PsdSensor(Component):
         self.spec = spec
         self.robot = context.robot
         self.site_name = f"{context.prefix}/psd{spec.id}"
-        context.body.add_site(name=self.site_name, pos=[mm(spec.x), mm(spec.y), mm(spec.z)],
-                              quat=beam_quat(spec.heading, spec.pitch), size=[0.004, 0, 0], group=4)
+        context.body.add_site(
+            name=self.site_name,
+            pos=[mm(spec.x), mm(spec.y), mm(spec.z)],
+            quat=beam_quat(spec.heading, spec.pitch),
+            size=[0.004, 0, 0],
+            group=4,
+        )
         self.noise_mm = context.settings.psd_noise
         # One generator per sensor, seeded by the scene's seed and the sensor's identity: the
         # noise a sensor sees does not depend on what other sensors or robots read.
@@ -99,8 +104,7 @@ def beam_quat(heading: float, pitch: float) -> list[float]:
     """Quaternion turning +x into a beam `heading` degrees left and `pitch` degrees up:
     a rotation about z by the heading, then about the new y by minus the pitch."""
     h, p = math.radians(heading) / 2, -math.radians(pitch) / 2
-    return [math.cos(h) * math.cos(p), -math.sin(h) * math.sin(p), math.cos(h) * math.sin(p),
-            math.sin(h) * math.cos(p)]
+    return [math.cos(h) * math.cos(p), -math.sin(h) * math.sin(p), math.cos(h) * math.sin(p), math.sin(h) * math.cos(p)]
 
 
 def eyesim6_numbering(psds: tuple[PsdSpec, ...]) -> tuple[PsdSpec, ...]:

@@ -67,7 +67,7 @@ class SerialPorts(Component):
     def deliver(self, interface: int, data: bytes) -> None:
         """Bytes arriving from outside; kept until the program reads them, even before SERInit."""
         port = self.port(interface)
-        port.received += data[:max(0, RECEIVE_BUFFER - len(port.received))]
+        port.received += data[: max(0, RECEIVE_BUFFER - len(port.received))]
 
     def receive(self, interface: int, size: int) -> bytes:
         if size < 0:

@@ -22,7 +22,7 @@ class Thruster:
     def __init__(self, spec: mujoco.MjSpec, body: mujoco.MjsBody, name: str, thruster: ThrusterSpec):
         self.name = name
         self.max_thrust = thruster.max_thrust  # N at 100 %
-        length = math.sqrt(thruster.dx ** 2 + thruster.dy ** 2 + thruster.dz ** 2)
+        length = math.sqrt(thruster.dx**2 + thruster.dy**2 + thruster.dz**2)
         body.add_site(name=name, pos=[mm(thruster.x), mm(thruster.y), mm(thruster.z)], size=[0.01, 0, 0], group=4)
         actuator = spec.add_actuator(name=name, target=name, trntype=mujoco.mjtTrn.mjTRN_SITE)
         actuator.gear = [thruster.dx / length, thruster.dy / length, thruster.dz / length, 0, 0, 0]
@@ -47,10 +47,11 @@ class Thruster:
 
 
 class Thrusters(Component):
-
     def __init__(self, context):
-        self.motors = {t.motor: Thruster(context.spec, context.body, f"{context.prefix}/thruster{t.motor}", t)
-                       for t in context.robot_type.thrusters}
+        self.motors = {
+            t.motor: Thruster(context.spec, context.body, f"{context.prefix}/thruster{t.motor}", t)
+            for t in context.robot_type.thrusters
+        }
 
     def bind(self, world) -> None:
         super().bind(world)

@@ -52,8 +52,15 @@ class Manoeuvre:
     planned on it so the wheels keep within their grip and the arc ends at its heading as well
     as its length. What the plan needs every step is worked out here once."""
 
-    def __init__(self, distance: float, rotation: float, speed: float, start: tuple, drive: Kinematics,
-                 max_turn: float = math.inf):
+    def __init__(
+        self,
+        distance: float,
+        rotation: float,
+        speed: float,
+        start: tuple,
+        drive: Kinematics,
+        max_turn: float = math.inf,
+    ):
         self.distance = distance
         self.rotation = rotation
         self.start = start  # the drive's odometer reading
@@ -83,7 +90,7 @@ class Manoeuvre:
         self.braking = 2 * BRAKE_FRACTION * LINEAR_ACCEL * scale  # speed = sqrt(braking x remaining)
         # Further than this from the end (followed unit), the plan is top speed until the next one:
         # the braking distance from top speed, plus twice what a PLAN_PERIOD at top speed covers.
-        self.cruise_beyond = self.crawl + self.top_speed ** 2 / self.braking + 2 * self.top_speed * PLAN_PERIOD
+        self.cruise_beyond = self.crawl + self.top_speed**2 / self.braking + 2 * self.top_speed * PLAN_PERIOD
         # The reference point's speed ramps so that the outer wheel's does at LINEAR_ACCEL.
         self.accel = LINEAR_ACCEL / self.factor
 
@@ -96,7 +103,6 @@ class Manoeuvre:
 
 
 class VwController(Component):
-
     def __init__(self, drive: Kinematics, max_speed: float, max_turn: float):
         self.drive = drive
         self.max_speed = max_speed  # m/s, the robot type's
@@ -189,8 +195,10 @@ class VwController(Component):
         else:
             radius = abs(distance / angle) if angle else math.inf
             if radius < self.drive.min_radius:
-                raise DriveLimitError(f"an arc of radius {to_mm(radius):.0f} mm is tighter than {self.drive.noun} can "
-                                      f"drive (at least {to_mm(self.drive.min_radius):.0f} mm)")
+                raise DriveLimitError(
+                    f"an arc of radius {to_mm(radius):.0f} mm is tighter than {self.drive.noun} can "
+                    f"drive (at least {to_mm(self.drive.min_radius):.0f} mm)"
+                )
             self._owed = None
             self._start(distance, angle, min(abs(speed), self.max_speed))
 
@@ -372,8 +380,10 @@ class VwController(Component):
                 x0, y0 = start_ground[wheel][:2]
                 over_floor = ((x - x0) * forward_x + (y - y0) * forward_y) * math.copysign(1.0, target)
                 expected_m = speed * window_time * roll
-                if abs(ticks[index] - start_ticks[index]) < STALL_FRACTION * expected \
-                        or over_floor < STALL_FRACTION * expected_m:
+                if (
+                    abs(ticks[index] - start_ticks[index]) < STALL_FRACTION * expected
+                    or over_floor < STALL_FRACTION * expected_m
+                ):
                     stalled |= bit
             self.stalled = stalled
             self._stalled_windows = self._stalled_windows + 1 if stalled and self.manoeuvre else 0

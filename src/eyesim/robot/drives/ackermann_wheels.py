@@ -71,26 +71,47 @@ class AckermannDrive(Component, Kinematics):
         for side, sign in (("left", 1.0), ("right", -1.0)):
             name = f"{prefix}/wheel_rear_{side}"
             self.rear_wheels.append(name)
-            add_wheel(context, name, [self.rear_x, sign * mm(drive_wheels.track) / 2, self.radius], self.radius,
-                      load, shown=True)
+            add_wheel(
+                context,
+                name,
+                [self.rear_x, sign * mm(drive_wheels.track) / 2, self.radius],
+                self.radius,
+                load,
+                shown=True,
+            )
             tendon.wrap_joint(name, 0.5)
-        self.motor = WheelMotor(spec, axle, axle, mujoco.mjtTrn.mjTRN_TENDON, drive_wheels.ticks_per_rev,
-                                math.radians(drive_wheels.max_speed),
-                                # the axle's torque, which the differential splits between the two wheels
-                                2 * wheel_torque(robot_type, self.radius, 4, AXLE_GRIP_FACTOR))
+        self.motor = WheelMotor(
+            spec,
+            axle,
+            axle,
+            mujoco.mjtTrn.mjTRN_TENDON,
+            drive_wheels.ticks_per_rev,
+            math.radians(drive_wheels.max_speed),
+            # the axle's torque, which the differential splits between the two wheels
+            2 * wheel_torque(robot_type, self.radius, 4, AXLE_GRIP_FACTOR),
+        )
         self.motors = {1: self.motor}
         self.encoders = {1: self.motor}
         # Front axle: each wheel turns freely on a knuckle that the steering turns about z.
         self.knuckles = []
         for side, sign in (("left", 1.0), ("right", -1.0)):
             name = f"{prefix}/knuckle_{side}"
-            knuckle = context.add_part(context.body, name, KNUCKLE_MASS,
-                                       pos=[self.front_x, sign * self.front_track / 2, front_radius])
+            knuckle = context.add_part(
+                context.body, name, KNUCKLE_MASS, pos=[self.front_x, sign * self.front_track / 2, front_radius]
+            )
             knuckle.add_joint(name=name, type=mujoco.mjtJoint.mjJNT_HINGE, axis=[0, 0, 1], armature=WHEEL_ARMATURE)
-            knuckle.add_geom(name=name, type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[0.004, front_radius / 2, 0],
-                             mass=KNUCKLE_MASS, contype=0, conaffinity=0, rgba=[0.3, 0.3, 0.3, 1.0])
-            add_wheel(context, f"{prefix}/wheel_front_{side}", [0.0, 0.0, 0.0], front_radius, load, parent=knuckle,
-                      shown=True)
+            knuckle.add_geom(
+                name=name,
+                type=mujoco.mjtGeom.mjGEOM_CYLINDER,
+                size=[0.004, front_radius / 2, 0],
+                mass=KNUCKLE_MASS,
+                contype=0,
+                conaffinity=0,
+                rgba=[0.3, 0.3, 0.3, 1.0],
+            )
+            add_wheel(
+                context, f"{prefix}/wheel_front_{side}", [0.0, 0.0, 0.0], front_radius, load, parent=knuckle, shown=True
+            )
             actuator = spec.add_actuator(name=name, target=name, trntype=mujoco.mjtTrn.mjTRN_JOINT)
             actuator.gainprm[0] = STEER_GAIN
             actuator.biastype = mujoco.mjtBias.mjBIAS_AFFINE
@@ -142,7 +163,6 @@ class AckermannDrive(Component, Kinematics):
         if self.motor.needs_update:
             self.motor.update(dt)
 
-
     # -- kinematics (the V-omega controller's interface) ----------------------------------------
     def odometer(self) -> tuple[int, float]:
         """The axle's ticks and the rotation they add up to: each increment turns the car by its
@@ -151,8 +171,9 @@ class AckermannDrive(Component, Kinematics):
         if self._odometer_ticks is None:
             self._odometer_ticks = ticks
         elif ticks != self._odometer_ticks:
-            self._turned += (ticks - self._odometer_ticks) * self.tick_travel * math.tan(self.servo.position) \
-                / self.wheelbase
+            self._turned += (
+                (ticks - self._odometer_ticks) * self.tick_travel * math.tan(self.servo.position) / self.wheelbase
+            )
             self._odometer_ticks = ticks
         return ticks, self._turned
 
@@ -182,4 +203,3 @@ class AckermannDrive(Component, Kinematics):
 
     def wheel_ground_positions(self) -> list[tuple[float, float, float, float]]:
         return ground_positions(self.world.data, self.wheel_bodies)
-

@@ -25,8 +25,9 @@ class DifferentialDrive(Component, Kinematics):
     def __init__(self, context):
         robot_type = context.robot_type
         wheels = robot_type.wheels
-        self.radius, self.track, self.ticks_per_rev, self.max_wheel_speed, self.metres_per_tick = \
-            wheel_constants(wheels)
+        self.radius, self.track, self.ticks_per_rev, self.max_wheel_speed, self.metres_per_tick = wheel_constants(
+            wheels
+        )
         self.tick_travel = self.metres_per_tick / 2  # one wheel's tick moves the axle's centre half as far
         self.spot_radius = self.track / 2
         axle_x = mm(robot_type.axis_offset)
@@ -35,19 +36,37 @@ class DifferentialDrive(Component, Kinematics):
         for side, sign in (("left", 1.0), ("right", -1.0)):
             name = f"{context.prefix}/wheel_{side}"
             self.wheel_names.append(name)
-            add_wheel(context, name, [axle_x, sign * self.track / 2, self.radius], self.radius,
-                      robot_type.mass * GRAVITY / 2)  # the casters sit above the floor
-            self.wheels.append(WheelMotor(context.spec, name, name, mujoco.mjtTrn.mjTRN_JOINT, self.ticks_per_rev,
-                                          self.max_wheel_speed, wheel_torque(robot_type, self.radius, 2)))
+            add_wheel(
+                context, name, [axle_x, sign * self.track / 2, self.radius], self.radius, robot_type.mass * GRAVITY / 2
+            )  # the casters sit above the floor
+            self.wheels.append(
+                WheelMotor(
+                    context.spec,
+                    name,
+                    name,
+                    mujoco.mjtTrn.mjTRN_JOINT,
+                    self.ticks_per_rev,
+                    self.max_wheel_speed,
+                    wheel_torque(robot_type, self.radius, 2),
+                )
+            )
         self.motors = {1: self.wheels[0], 2: self.wheels[1]}
         self.encoders = self.motors
         # A caster behind and a skid in front keep the robot level. They glide without friction:
         # their priority makes their frictionless contact win over the floor's grip.
         caster_x = mm(robot_type.length) / 2 - CASTER_RADIUS - 0.008
         for part, x in (("caster", -caster_x), ("skid", caster_x)):
-            context.body.add_geom(name=f"{context.prefix}/{part}", type=mujoco.mjtGeom.mjGEOM_SPHERE,
-                                  size=[CASTER_RADIUS, 0, 0], pos=[x, 0.0, CASTER_RADIUS + CASTER_LIFT], mass=0.0,
-                                  condim=1, priority=2, friction=[0.0, 0.0, 0.0], rgba=[0.2, 0.2, 0.2, 1.0])
+            context.body.add_geom(
+                name=f"{context.prefix}/{part}",
+                type=mujoco.mjtGeom.mjGEOM_SPHERE,
+                size=[CASTER_RADIUS, 0, 0],
+                pos=[x, 0.0, CASTER_RADIUS + CASTER_LIFT],
+                mass=0.0,
+                condim=1,
+                priority=2,
+                friction=[0.0, 0.0, 0.0],
+                rgba=[0.2, 0.2, 0.2, 1.0],
+            )
 
     def bind(self, world) -> None:
         super().bind(world)
@@ -92,4 +111,3 @@ class DifferentialDrive(Component, Kinematics):
 
     def stall_watch(self):
         return ((1, self.wheels[0], 0, self.radius), (2, self.wheels[1], 1, self.radius))
-

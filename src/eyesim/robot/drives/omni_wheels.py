@@ -17,8 +17,14 @@ from eyesim.physics.units import mm
 from eyesim.robot.actuators import WheelMotor
 from eyesim.robot.component import Component
 from eyesim.robot.drives.kinematics import Kinematics
-from eyesim.robot.drives.wheels import (WHEEL_ARMATURE, WHEEL_DAMPING, WHEEL_MASS, ground_positions, wheel_constants,
-                                         wheel_torque)
+from eyesim.robot.drives.wheels import (
+    WHEEL_ARMATURE,
+    WHEEL_DAMPING,
+    WHEEL_MASS,
+    ground_positions,
+    wheel_constants,
+    wheel_torque,
+)
 
 ROLLER_FRICTION = 0.02  # along the axle: what the rollers' bearings resist
 GRIP = 1.0  # along the rolling direction
@@ -27,8 +33,12 @@ WHEEL_WIDTH = 0.02  # m
 # (docs/api/motor.md): more makes four slipping wheels fight each other.
 MECANUM_GRIP_FACTOR = 4.0
 # (name, motor, x sign, y sign, direction its bottom roller pushes when the wheel turns forward)
-WHEELS = (("front_left", 1, 1, 1, -45.0), ("front_right", 2, 1, -1, 45.0),
-          ("back_left", 3, -1, 1, 45.0), ("back_right", 4, -1, -1, -45.0))
+WHEELS = (
+    ("front_left", 1, 1, 1, -45.0),
+    ("front_right", 2, 1, -1, 45.0),
+    ("back_left", 3, -1, 1, 45.0),
+    ("back_right", 4, -1, -1, -45.0),
+)
 
 
 class OmniDrive(Component, Kinematics):
@@ -42,8 +52,9 @@ class OmniDrive(Component, Kinematics):
     def __init__(self, context):
         robot_type = context.robot_type
         wheels = robot_type.wheels
-        self.radius, self.track, self.ticks_per_rev, self.max_wheel_speed, self.metres_per_tick = \
-            wheel_constants(wheels)
+        self.radius, self.track, self.ticks_per_rev, self.max_wheel_speed, self.metres_per_tick = wheel_constants(
+            wheels
+        )
         # The axles sit a wheel radius inside the chassis' front and back.
         self.wheelbase = max(mm(robot_type.length) - 2 * self.radius, self.radius)
         self.tick_travel = self.metres_per_tick / 4  # the robot moves by the mean of its four wheels
@@ -55,25 +66,52 @@ class OmniDrive(Component, Kinematics):
             body_name = f"{prefix}/wheel_{name}"
             self.wheel_names.append(body_name)
             half = math.radians(heading) / 2
-            wheel = context.add_part(context.body, body_name, WHEEL_MASS, shown=True,
-                                     pos=[x_sign * self.wheelbase / 2, y_sign * self.track / 2, self.radius],
-                                     quat=[math.cos(half), 0.0, 0.0, math.sin(half)])
-            wheel.add_joint(name=body_name, type=mujoco.mjtJoint.mjJNT_HINGE, axis=[0, 1, 0], damping=WHEEL_DAMPING,
-                            armature=WHEEL_ARMATURE)
+            wheel = context.add_part(
+                context.body,
+                body_name,
+                WHEEL_MASS,
+                shown=True,
+                pos=[x_sign * self.wheelbase / 2, y_sign * self.track / 2, self.radius],
+                quat=[math.cos(half), 0.0, 0.0, math.sin(half)],
+            )
+            wheel.add_joint(
+                name=body_name,
+                type=mujoco.mjtJoint.mjJNT_HINGE,
+                axis=[0, 1, 0],
+                damping=WHEEL_DAMPING,
+                armature=WHEEL_ARMATURE,
+            )
             # A capsule along the axle (MuJoCo's capsule stands along z: turn it onto y).
-            wheel.add_geom(name=body_name, type=mujoco.mjtGeom.mjGEOM_CAPSULE, size=[self.radius, WHEEL_WIDTH / 2, 0],
-                           quat=[math.cos(math.pi / 4), -math.sin(math.pi / 4), 0, 0], mass=WHEEL_MASS,
-                           contype=0, conaffinity=0, rgba=[0.15, 0.15, 0.15, 1.0])
+            wheel.add_geom(
+                name=body_name,
+                type=mujoco.mjtGeom.mjGEOM_CAPSULE,
+                size=[self.radius, WHEEL_WIDTH / 2, 0],
+                quat=[math.cos(math.pi / 4), -math.sin(math.pi / 4), 0, 0],
+                mass=WHEEL_MASS,
+                contype=0,
+                conaffinity=0,
+                rgba=[0.15, 0.15, 0.15, 1.0],
+            )
             # The capsule-floor contact frame's first direction is the capsule's axis.
-            spec.add_pair(geomname1=body_name, geomname2="floor", condim=3,
-                          friction=[ROLLER_FRICTION, GRIP, 0.005, 0.0001, 0.0001])
+            spec.add_pair(
+                geomname1=body_name,
+                geomname2="floor",
+                condim=3,
+                friction=[ROLLER_FRICTION, GRIP, 0.005, 0.0001, 0.0001],
+            )
             shaft = f"{body_name}/shaft"
             tendon = spec.add_tendon(name=shaft)
             tendon.wrap_joint(body_name, math.sqrt(2))
-            self.motors[motor] = WheelMotor(spec, shaft, shaft, mujoco.mjtTrn.mjTRN_TENDON, wheels.ticks_per_rev,
-                                            math.radians(wheels.max_speed),
-                                            # the shaft's gearing multiplies its torque by sqrt 2 at the wheel
-                                            wheel_torque(robot_type, self.radius, 4, MECANUM_GRIP_FACTOR) / math.sqrt(2))
+            self.motors[motor] = WheelMotor(
+                spec,
+                shaft,
+                shaft,
+                mujoco.mjtTrn.mjTRN_TENDON,
+                wheels.ticks_per_rev,
+                math.radians(wheels.max_speed),
+                # the shaft's gearing multiplies its torque by sqrt 2 at the wheel
+                wheel_torque(robot_type, self.radius, 4, MECANUM_GRIP_FACTOR) / math.sqrt(2),
+            )
         self.encoders = self.motors
         self.wheels = tuple(self.motors[motor] for motor in (1, 2, 3, 4))
 
@@ -126,4 +164,3 @@ class OmniDrive(Component, Kinematics):
 
     def wheel_ground_positions(self) -> list[tuple[float, float, float, float]]:
         return ground_positions(self.world.data, self.wheel_bodies)
-

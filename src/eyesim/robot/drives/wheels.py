@@ -27,8 +27,13 @@ def wheel_constants(wheels) -> tuple[float, float, int, float, float]:
     """From a `wheel` line: radius (m), track (m), encoder ticks a turn, top wheel speed (rad/s) and
     how far a wheel rolls in one tick (m)."""
     radius = mm(wheels.diameter) / 2
-    return (radius, mm(wheels.track), wheels.ticks_per_rev, math.radians(wheels.max_speed),
-            2 * math.pi * radius / wheels.ticks_per_rev)
+    return (
+        radius,
+        mm(wheels.track),
+        wheels.ticks_per_rev,
+        math.radians(wheels.max_speed),
+        2 * math.pi * radius / wheels.ticks_per_rev,
+    )
 
 
 def wheel_torque(robot_type, radius: float, wheels: int, factor: float = MOTOR_GRIP_FACTOR) -> float:
@@ -51,14 +56,29 @@ def add_wheel(context, name: str, pos, radius: float, load: float, parent=None, 
     axle, so the effective track is exactly the track (a cylinder would touch at its rims). The tyre
     cylinder is only for looks."""
     wheel = context.add_part(parent or context.body, name, WHEEL_MASS, shown=shown, pos=pos)
-    wheel.add_joint(name=name, type=mujoco.mjtJoint.mjJNT_HINGE, axis=[0, 1, 0], damping=WHEEL_DAMPING,
-                    armature=WHEEL_ARMATURE)
-    wheel.add_geom(name=name, type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[radius, 0, 0], mass=WHEEL_MASS,
-                   friction=WHEEL_FRICTION, solref=[0.004, 1.0], margin=SINK + SINK_PER_NEWTON * load,
-                   rgba=[0, 0, 0, 0])
-    wheel.add_geom(name=f"{name}/tyre", type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[radius, WHEEL_WIDTH / 2, 0],
-                   quat=[math.cos(math.pi / 4), math.sin(math.pi / 4), 0, 0], contype=0, conaffinity=0, mass=0,
-                   rgba=[0.1, 0.1, 0.1, 1.0])
+    wheel.add_joint(
+        name=name, type=mujoco.mjtJoint.mjJNT_HINGE, axis=[0, 1, 0], damping=WHEEL_DAMPING, armature=WHEEL_ARMATURE
+    )
+    wheel.add_geom(
+        name=name,
+        type=mujoco.mjtGeom.mjGEOM_SPHERE,
+        size=[radius, 0, 0],
+        mass=WHEEL_MASS,
+        friction=WHEEL_FRICTION,
+        solref=[0.004, 1.0],
+        margin=SINK + SINK_PER_NEWTON * load,
+        rgba=[0, 0, 0, 0],
+    )
+    wheel.add_geom(
+        name=f"{name}/tyre",
+        type=mujoco.mjtGeom.mjGEOM_CYLINDER,
+        size=[radius, WHEEL_WIDTH / 2, 0],
+        quat=[math.cos(math.pi / 4), math.sin(math.pi / 4), 0, 0],
+        contype=0,
+        conaffinity=0,
+        mass=0,
+        rgba=[0.1, 0.1, 0.1, 1.0],
+    )
     return wheel
 
 

@@ -6,7 +6,13 @@ from __future__ import annotations
 
 from eyesim.scene.drives.archetype import DriveArchetype
 
-DRIVE = DriveArchetype("ackermann", "ACKERMANN_DRIVE", noun="an Ackermann car", wheeled=True,
-                       parts=("wheels", "steering", "axis_offset", "axle_height", "arm"),
-                       wheel_keyword="wheel drive", wheels_outside_hull=True,
-                       component="eyesim.robot.drives.ackermann_wheels:AckermannDrive")
+DRIVE = DriveArchetype(
+    "ackermann",
+    "ACKERMANN_DRIVE",
+    noun="an Ackermann car",
+    wheeled=True,
+    parts=("wheels", "steering", "axis_offset", "axle_height", "arm"),
+    wheel_keyword="wheel drive",
+    wheels_outside_hull=True,
+    component="eyesim.robot.drives.ackermann_wheels:AckermannDrive",
+)

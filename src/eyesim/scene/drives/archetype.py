@@ -47,4 +47,3 @@ class DriveArchetype:
     # A warning (message, code) about a robot type of this drive that cannot move, else None.
     # (RobotType is assembled with make_dataclass, which mypy cannot take for a type)
     check: Callable[[RobotType], tuple[str, str] | None] = lambda robot: None  # type: ignore[valid-type]
-

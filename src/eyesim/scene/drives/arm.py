@@ -10,6 +10,13 @@ def check(robot) -> tuple[str, str] | None:
     return None
 
 
-DRIVE = DriveArchetype("arm", "ARM", noun="a manipulator arm on a fixed base", aliases=("arm_drive",),
-                       machine_type=MachineType.PLATFORM, mounted=True,
-                       parts=("arm",), check=check)
+DRIVE = DriveArchetype(
+    "arm",
+    "ARM",
+    noun="a manipulator arm on a fixed base",
+    aliases=("arm_drive",),
+    machine_type=MachineType.PLATFORM,
+    mounted=True,
+    parts=("arm",),
+    check=check,
+)

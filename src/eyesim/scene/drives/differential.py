@@ -5,7 +5,13 @@ from __future__ import annotations
 
 from eyesim.scene.drives.archetype import DriveArchetype
 
-DRIVE = DriveArchetype("differential", "DIFFERENTIAL_DRIVE", noun="a two-wheeled differential drive robot",
-                       wheeled=True, parts=("wheels", "axis_offset", "axle_height", "arm"),
-                       wheels_outside_hull=True, viewer_wheels=True,
-                       component="eyesim.robot.drives.differential_wheels:DifferentialDrive")
+DRIVE = DriveArchetype(
+    "differential",
+    "DIFFERENTIAL_DRIVE",
+    noun="a two-wheeled differential drive robot",
+    wheeled=True,
+    parts=("wheels", "axis_offset", "axle_height", "arm"),
+    wheels_outside_hull=True,
+    viewer_wheels=True,
+    component="eyesim.robot.drives.differential_wheels:DifferentialDrive",
+)

@@ -7,6 +7,11 @@ from __future__ import annotations
 
 from eyesim.scene.drives.archetype import DriveArchetype
 
-DRIVE = DriveArchetype("omni", "OMNI_DRIVE", noun="a mecanum omni-drive robot", wheeled=True,
-                       parts=("wheels", "axle_height", "arm"),
-                       component="eyesim.robot.drives.omni_wheels:OmniDrive")
+DRIVE = DriveArchetype(
+    "omni",
+    "OMNI_DRIVE",
+    noun="a mecanum omni-drive robot",
+    wheeled=True,
+    parts=("wheels", "axle_height", "arm"),
+    component="eyesim.robot.drives.omni_wheels:OmniDrive",
+)

@@ -8,5 +8,12 @@ def check(robot) -> tuple[str, str] | None:
     return None if robot.thrusters else ("a submarine without 'thruster' lines cannot move", "no-thrusters")
 
 
-DRIVE = DriveArchetype("submarine", "SUBMARINE", noun="a submarine", aliases=("submarine_drive",), swims=True,
-                       parts=("thrusters", "buoyancy", "drag", "start_depth"), check=check)
+DRIVE = DriveArchetype(
+    "submarine",
+    "SUBMARINE",
+    noun="a submarine",
+    aliases=("submarine_drive",),
+    swims=True,
+    parts=("thrusters", "buoyancy", "drag", "start_depth"),
+    check=check,
+)

@@ -44,7 +44,8 @@ RobotType = dataclasses.make_dataclass(
     "RobotType",
     [("name", str), ("source", str)]
     + [(name, kind, dataclasses.field(default=default)) for part in PARTS for name, kind, default in part.fields],
-    frozen=True)
+    frozen=True,
+)
 RobotType.__module__ = "eyesim.scene.description"  # where it has always been imported from
 RobotType.__doc__ = """A robot type: what a .robi file (or a built-in definition) says about a robot.
 
@@ -57,18 +58,25 @@ ROBOT_SCHEMA_HEAD = {
     "$id": "urn:eyesim:schema:robot:1",
     "title": "EyeSim robot type",
     "description": "A .robi robot definition as JSON. Positions are in the robot frame (x forward, y left, z up, mm), "
-                   "angles in degrees.",
+    "angles in degrees.",
 }
 
 
 def robot_schema() -> dict:
     """The published JSON Schema of a robot file (robot.schema.json), from the parts' fragments."""
-    properties = {"format": {"title": "Format", "const": "eyesim.robot",
-                             "description": "which EyeSim file format this is"},
-                  "version": {"title": "Version", "const": 1, "description": "format version"}}
+    properties = {
+        "format": {"title": "Format", "const": "eyesim.robot", "description": "which EyeSim file format this is"},
+        "version": {"title": "Version", "const": 1, "description": "format version"},
+    }
     defs: dict = {}
     for part in PARTS:
         properties.update(part.properties)
         defs.update(part.defs)
-    return {**ROBOT_SCHEMA_HEAD, "type": "object", "required": ["format", "version", "name"],
-            "additionalProperties": False, "properties": properties, "$defs": defs}
+    return {
+        **ROBOT_SCHEMA_HEAD,
+        "type": "object",
+        "required": ["format", "version", "name"],
+        "additionalProperties": False,
+        "properties": properties,
+        "$defs": defs,
+    }

@@ -53,7 +53,7 @@ class ArmSpec:
 
 def read_arm(reader: PartReader, line: Line) -> None:
     if reader.arity(line, (3, 4), "<x> <y> <z> [<heading>]"):
-        values = reader.numbers(line, 1, ("x", "y", "z", "heading")[:len(line.args)])
+        values = reader.numbers(line, 1, ("x", "y", "z", "heading")[: len(line.args)])
         if values:
             reader.collected["arm"] = tuple(v + 0.0 for v in values) + ((0.0,) if len(values) == 3 else ())
 
@@ -66,8 +66,9 @@ def read_joint(reader: PartReader, line: Line) -> None:
     if kind not in ("revolute", "prismatic"):
         reader.error(line, f"joint: expected revolute or prismatic, found {quoted(line.args[2].text)}", 3)
         return
-    values = reader.numbers(line, 4, ("d in mm", "theta in degrees", "a in mm", "alpha in degrees", "minimum",
-                                      "maximum"))
+    values = reader.numbers(
+        line, 4, ("d in mm", "theta in degrees", "a in mm", "alpha in degrees", "minimum", "maximum")
+    )
     if servo is None or not values:
         return
     joints = reader.collected.setdefault("joints", [])
@@ -99,8 +100,12 @@ def finish(reader: PartReader) -> None:
 def check(robot, diagnostics, at) -> dict:
     for i, joint in enumerate(robot.arm.joints if robot.arm is not None else ()):
         if joint.min > joint.max:
-            diagnostics.error(at(f"joint:{i}"), f"joint {joint.name}: expected min <= max, found "
-                              f"{format_number(joint.min)} > {format_number(joint.max)}", "bad-value")
+            diagnostics.error(
+                at(f"joint:{i}"),
+                f"joint {joint.name}: expected min <= max, found "
+                f"{format_number(joint.min)} > {format_number(joint.max)}",
+                "bad-value",
+            )
     return {}
 
 
@@ -120,8 +125,10 @@ def write(robot) -> list[str]:
     f = format_number
     out = [f"arm {f(a.x)} {f(a.y)} {f(a.z)} {f(a.heading)}"]
     for j in a.joints:
-        out.append(f"joint {quote_token(j.name)} {j.servo} {j.kind} " +
-                   " ".join(f(v) for v in (j.d, j.theta, j.a, j.alpha, j.min, j.max)))
+        out.append(
+            f"joint {quote_token(j.name)} {j.servo} {j.kind} "
+            + " ".join(f(v) for v in (j.d, j.theta, j.a, j.alpha, j.min, j.max))
+        )
     if a.gripper is not None:
         out.append(f"gripper {a.gripper.servo} {f(a.gripper.opening)} {f(a.gripper.force)}")
     return out
@@ -137,37 +144,54 @@ def json_locations(robot, positions) -> dict:
 
 PART = Part(
     "arm",
-    components=("eyesim.robot.components.arm:create", "eyesim.robot.components.gripper:create",),
+    components=(
+        "eyesim.robot.components.arm:create",
+        "eyesim.robot.components.gripper:create",
+    ),
     fields=(("arm", ArmSpec | None, None),),
     keywords={"arm": read_arm, "joint": read_joint, "gripper": read_gripper},
     write=write,
     finish=finish,
     properties={"arm": ref("arm")},
     defs={
-        "joint": record("Joint", "an arm joint by its Denavit-Hartenberg parameters", {
-            "name": text("Name"),
-            "servo": whole(1, "Servo"),
-            "kind": choice("Kind", ["revolute", "prismatic"]),
-            "d": coordinate("d", "mm"),
-            "theta": coordinate("theta", "degrees"),
-            "a": coordinate("a", "mm"),
-            "alpha": coordinate("alpha", "degrees"),
-            "min": coordinate("Minimum", "degrees (revolute) or mm (prismatic)"),
-            "max": coordinate("Maximum"),
-        }, required=("name", "servo", "kind", "d", "theta", "a", "alpha", "min", "max")),
-        "gripper": record("Gripper", "a two-finger gripper", {
-            "servo": whole(1, "Servo"),
-            "opening": positive("Opening", "mm"),
-            "force": positive("Force", "N"),
-        }, required=("servo", "opening", "force")),
-        "arm": record("Arm", "a manipulator arm and where it is mounted", {
-            "x": coordinate("x"),
-            "y": coordinate("y"),
-            "z": coordinate("z"),
-            "heading": coordinate("Heading"),
-            "joints": list_of("joint", "Joints"),
-            "gripper": ref("gripper"),
-        }),
+        "joint": record(
+            "Joint",
+            "an arm joint by its Denavit-Hartenberg parameters",
+            {
+                "name": text("Name"),
+                "servo": whole(1, "Servo"),
+                "kind": choice("Kind", ["revolute", "prismatic"]),
+                "d": coordinate("d", "mm"),
+                "theta": coordinate("theta", "degrees"),
+                "a": coordinate("a", "mm"),
+                "alpha": coordinate("alpha", "degrees"),
+                "min": coordinate("Minimum", "degrees (revolute) or mm (prismatic)"),
+                "max": coordinate("Maximum"),
+            },
+            required=("name", "servo", "kind", "d", "theta", "a", "alpha", "min", "max"),
+        ),
+        "gripper": record(
+            "Gripper",
+            "a two-finger gripper",
+            {
+                "servo": whole(1, "Servo"),
+                "opening": positive("Opening", "mm"),
+                "force": positive("Force", "N"),
+            },
+            required=("servo", "opening", "force"),
+        ),
+        "arm": record(
+            "Arm",
+            "a manipulator arm and where it is mounted",
+            {
+                "x": coordinate("x"),
+                "y": coordinate("y"),
+                "z": coordinate("z"),
+                "heading": coordinate("Heading"),
+                "joints": list_of("joint", "Joints"),
+                "gripper": ref("gripper"),
+            },
+        ),
     },
     json_locations=json_locations,
     check=check,

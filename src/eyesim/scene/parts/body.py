@@ -9,8 +9,18 @@ from typing import TYPE_CHECKING
 
 from eyesim.scene.diagnostics import Location, quoted
 from eyesim.scene.lexer import LARGEST, Line, format_number, quote_token
-from eyesim.scene.parts.part import (VR_AXIS, Part, PartReader, choice, coordinate, list_of, numbers, positive,
-                                     record, text)
+from eyesim.scene.parts.part import (
+    VR_AXIS,
+    Part,
+    PartReader,
+    choice,
+    coordinate,
+    list_of,
+    numbers,
+    positive,
+    record,
+    text,
+)
 
 if TYPE_CHECKING:
     from eyesim.scene.parts import RobotType
@@ -20,11 +30,18 @@ CHASSIS_CLEARANCE = 0.012  # m between the floor and the chassis bottom of a whe
 GLIDER_LIFT = 1.0  # mm a gliding hull collider stays above the floor at least (as the drives' casters)
 MAX_DENSITY = 8.0  # g/cm3: a robot heavier than solid steel of its size is a typo
 ESTIMATED_DENSITY = 0.5  # g/cm3 of a typical small robot (S4: 0.8 kg in 2.4 litres)
-COLLIDER_FORMS = {"box": ("<sx> <sy> <sz> <cx> <cy> <cz>", 6), "sphere": ("<r> <cx> <cy> <cz>", 4),
-                  "capsule": ("<r> <h> <cx> <cy> <cz> [x|y|z]", 5),
-                  "cylinder": ("<r> <h> <cx> <cy> <cz> [x|y|z]", 5)}
-COLLIDER_SIZES = {"box": ("size x", "size y", "size z"), "sphere": ("radius",), "capsule": ("radius", "height"),
-                  "cylinder": ("radius", "height")}
+COLLIDER_FORMS = {
+    "box": ("<sx> <sy> <sz> <cx> <cy> <cz>", 6),
+    "sphere": ("<r> <cx> <cy> <cz>", 4),
+    "capsule": ("<r> <h> <cx> <cy> <cz> [x|y|z]", 5),
+    "cylinder": ("<r> <h> <cx> <cy> <cz> [x|y|z]", 5),
+}
+COLLIDER_SIZES = {
+    "box": ("size x", "size y", "size z"),
+    "sphere": ("radius",),
+    "capsule": ("radius", "height"),
+    "cylinder": ("radius", "height"),
+}
 
 
 @dataclass(frozen=True)
@@ -67,8 +84,9 @@ def read_diameter(reader: PartReader, line: Line) -> None:
 def read_size(reader: PartReader, line: Line) -> None:
     if reader.arity(line, (3,), "<length> <width> <height>"):
         values = reader.numbers(line, 1, ("length in mm", "width in mm", "height in mm"))
-        if values and all(reader.positive(line, v, 1 + i, n) for i, (v, n) in
-                          enumerate(zip(values, ("length", "width", "height")))):
+        if values and all(
+            reader.positive(line, v, 1 + i, n) for i, (v, n) in enumerate(zip(values, ("length", "width", "height")))
+        ):
             reader.collected["size"] = (values[0], values[1], values[2])
 
 
@@ -77,8 +95,9 @@ def read_color(reader: PartReader, line: Line) -> None:
         rgb = [reader.whole(line, 1 + i, c + " (0..255)", 0) for i, c in enumerate(("red", "green", "blue"))]
         if None not in rgb:
             if any(c > 255 for c in rgb):
-                reader.error(line, "color: expected components 0..255, found " + " ".join(str(c) for c in rgb), 1,
-                             "bad-value")
+                reader.error(
+                    line, "color: expected components 0..255, found " + " ".join(str(c) for c in rgb), 1, "bad-value"
+                )
             else:
                 reader.fields["color"] = tuple(rgb)
 
@@ -89,8 +108,7 @@ def read_model(reader: PartReader, line: Line) -> None:
     reader.fields["model"] = line.args[0].text
     reader.where["model"] = reader.at(line, 1)
     if len(line.args) == 7:
-        values = reader.numbers(line, 2, ("x offset", "y offset", "z offset", "x rotation", "y rotation",
-                                          "z rotation"))
+        values = reader.numbers(line, 2, ("x offset", "y offset", "z offset", "x rotation", "y rotation", "z rotation"))
         if values:
             reader.fields["model_offset"] = tuple(v + 0.0 for v in values[:3])
             reader.fields["model_rotation"] = tuple(v + 0.0 for v in values[3:])
@@ -99,7 +117,7 @@ def read_model(reader: PartReader, line: Line) -> None:
 def read_mass(reader: PartReader, line: Line) -> None:
     if not reader.arity(line, (1, 4), "<kg> [<cx> <cy> <cz>]"):
         return
-    values = reader.numbers(line, 1, ("mass in kg", "centre x", "centre y", "centre z")[:len(line.args)])
+    values = reader.numbers(line, 1, ("mass in kg", "centre x", "centre y", "centre z")[: len(line.args)])
     if values and reader.positive(line, values[0], 1, "mass"):
         reader.fields["mass"] = values[0]
         reader.remember("mass", line)
@@ -132,31 +150,38 @@ def read_collider(reader: PartReader, line: Line) -> None:
     values = reader.numbers(line, 2, names + ("centre x", "centre y", "centre z"))
     if not values:
         return
-    size, centre = values[:len(names)], values[len(names):]
+    size, centre = values[: len(names)], values[len(names) :]
     if not all(reader.positive(line, v, 2 + i, n) for i, (v, n) in enumerate(zip(size, names))):
         return
     axis = "y" if reader.dialect != "eyesim" else "z"
     if len(line.args) == count + 2:
         axis = line.args[-1].text.lower()
         if axis not in ("x", "y", "z"):
-            reader.error(line, f"collider: expected axis x, y or z, found {quoted(line.args[-1].text)}",
-                         len(line.args))
+            reader.error(line, f"collider: expected axis x, y or z, found {quoted(line.args[-1].text)}", len(line.args))
             return
     if reader.dialect != "eyesim":
         axis = VR_AXIS[axis]
         if kind == "box":
             size = [size[2], size[0], size[1]]
     reader.collected.setdefault("colliders", []).append(
-        Collider(kind, tuple(v + 0.0 for v in size), reader.body_point(*centre),
-                 axis if kind in ("capsule", "cylinder") else "z"))
+        Collider(
+            kind,
+            tuple(v + 0.0 for v in size),
+            reader.body_point(*centre),
+            axis if kind in ("capsule", "cylinder") else "z",
+        )
+    )
 
 
 def finish(reader: PartReader) -> None:
     fields = reader.fields
     if "name" not in fields:
         fields["name"] = Path(reader.source).stem
-        reader.diagnostics.warning(Location(reader.source, 1, 1), f"no 'name' line: the robot type is called "
-                                   f"{quoted(fields['name'])} after its file", "no-name")
+        reader.diagnostics.warning(
+            Location(reader.source, 1, 1),
+            f"no 'name' line: the robot type is called {quoted(fields['name'])} after its file",
+            "no-name",
+        )
     fields["colliders"] = tuple(reader.collected.get("colliders", ()))
     fields["length"], fields["width"], fields["height"] = _dimensions(reader.collected)
 
@@ -189,9 +214,9 @@ def collider_volume(collider: Collider) -> float:
     if collider.kind == "box":
         return collider.size[0] * collider.size[1] * collider.size[2]
     if collider.kind == "sphere":
-        return 4 / 3 * math.pi * r ** 3
+        return 4 / 3 * math.pi * r**3
     if collider.kind == "capsule":
-        return math.pi * r * r * max(collider.size[1] - 2 * r, 0.0) + 4 / 3 * math.pi * r ** 3
+        return math.pi * r * r * max(collider.size[1] - 2 * r, 0.0) + 4 / 3 * math.pi * r**3
     return math.pi * r * r * collider.size[1]
 
 
@@ -218,18 +243,24 @@ def check(robot, diagnostics, at) -> dict:
     if volume > 0 and robot.mass * 1000.0 / volume > MAX_DENSITY:
         estimate = float(f"{volume * ESTIMATED_DENSITY / 1000.0:.2g}")  # two significant digits
         f = format_number
-        diagnostics.warning(at("mass"), f"mass {f(robot.mass)} kg is impossible for a {f(robot.length)} x "
-                            f"{f(robot.width)} x {f(robot.height)} mm robot (denser than steel); using "
-                            f"{f(estimate)} kg instead", "implausible-mass")
+        diagnostics.warning(
+            at("mass"),
+            f"mass {f(robot.mass)} kg is impossible for a {f(robot.length)} x "
+            f"{f(robot.width)} x {f(robot.height)} mm robot (denser than steel); using "
+            f"{f(estimate)} kg instead",
+            "implausible-mass",
+        )
         return {"mass": estimate}
     return {}
 
 
 def write(robot) -> list[str]:
     f = format_number
-    out = [f"name {quote_token(robot.name)}",
-           f"size {f(robot.length)} {f(robot.width)} {f(robot.height)}",
-           "color " + " ".join(str(c) for c in robot.color)]
+    out = [
+        f"name {quote_token(robot.name)}",
+        f"size {f(robot.length)} {f(robot.width)} {f(robot.height)}",
+        "color " + " ".join(str(c) for c in robot.color),
+    ]
     mass = f"mass {f(robot.mass)}"
     if robot.center_of_mass is not None:
         mass += " " + " ".join(f(v) for v in robot.center_of_mass)
@@ -271,11 +302,18 @@ PART = Part(
         ("colliders", tuple[Collider, ...], ()),
         ("center_of_mass", tuple[float, float, float] | None, None),  # mm, robot frame
     ),
-    keywords={"name": read_name, "diameter": read_diameter,
-              "speed": lambda reader, line: _single(reader, line, "max_speed", "speed in mm/s"),
-              "turn": lambda reader, line: _single(reader, line, "max_turn", "turn rate in deg/s"),
-              "size": read_size, "color": read_color, "model": read_model, "mass": read_mass, "axis": read_axis,
-              "collider": read_collider},
+    keywords={
+        "name": read_name,
+        "diameter": read_diameter,
+        "speed": lambda reader, line: _single(reader, line, "max_speed", "speed in mm/s"),
+        "turn": lambda reader, line: _single(reader, line, "max_turn", "turn rate in deg/s"),
+        "size": read_size,
+        "color": read_color,
+        "model": read_model,
+        "mass": read_mass,
+        "axis": read_axis,
+        "collider": read_collider,
+    },
     write=write,
     finish=finish,
     properties={
@@ -284,8 +322,9 @@ PART = Part(
         "length": positive("Length", "chassis mm"),
         "width": positive("Width", "chassis mm"),
         "height": positive("Height", "chassis mm"),
-        "color": numbers(3, "Colour", "colour (red, green, blue), each 0..255",
-                         {"type": "integer", "minimum": 0, "maximum": 255}),
+        "color": numbers(
+            3, "Colour", "colour (red, green, blue), each 0..255", {"type": "integer", "minimum": 0, "maximum": 255}
+        ),
         "max_speed": positive("Top speed", "mm/s"),
         "max_turn": positive("Top turn rate", "deg/s"),
         "axis_offset": coordinate("Drive axle position", "mm the drive axle sits ahead of the centre"),
@@ -296,14 +335,26 @@ PART = Part(
         "colliders": list_of("collider", "Colliders"),
         "center_of_mass": numbers(3, "Centre of mass", POINT),
     },
-    defs={"collider": record("Collider", "a collision shape (mm)", {
-        "kind": choice("Shape", ["box", "sphere", "capsule", "cylinder"]),
-        "size": {"title": "Size", "type": "array",
-                 "items": {"type": "number", "exclusiveMinimum": 0, "maximum": LARGEST}, "minItems": 1, "maxItems": 3,
-                 "description": "box: (sx, sy, sz); sphere: (r); capsule, cylinder: (r, h) in mm"},
-        "center": numbers(3, "Centre", POINT),
-        "axis": choice("Axis", ["x", "y", "z"], "capsule or cylinder axis"),
-    }, required=("kind", "size"))},
+    defs={
+        "collider": record(
+            "Collider",
+            "a collision shape (mm)",
+            {
+                "kind": choice("Shape", ["box", "sphere", "capsule", "cylinder"]),
+                "size": {
+                    "title": "Size",
+                    "type": "array",
+                    "items": {"type": "number", "exclusiveMinimum": 0, "maximum": LARGEST},
+                    "minItems": 1,
+                    "maxItems": 3,
+                    "description": "box: (sx, sy, sz); sphere: (r); capsule, cylinder: (r, h) in mm",
+                },
+                "center": numbers(3, "Centre", POINT),
+                "axis": choice("Axis", ["x", "y", "z"], "capsule or cylinder axis"),
+            },
+            required=("kind", "size"),
+        )
+    },
     json_locations=lambda robot, positions: {"mass": positions.key(["mass"])},
     check=check,
 )

@@ -51,17 +51,28 @@ def read_camera(reader: PartReader, line: Line) -> None:
     if reader.dialect == "eyesim":
         for i, v in ((6, a), (7, b)):
             if not 0 <= v <= 180:
-                reader.error(line, f"camera: expected a limit 0..180 degrees, found {quoted(line.tokens[i].text)}",
-                             i, "bad-value")
+                reader.error(
+                    line,
+                    f"camera: expected a limit 0..180 degrees, found {quoted(line.tokens[i].text)}",
+                    i,
+                    "bad-value",
+                )
                 return
         pan_range, tilt_range = (-a + 0.0, a + 0.0), (-b + 0.0, b + 0.0)
     elif reader.dialect in ("vr", "vr1") and 0 < a <= 180 and 0 < b <= 180:
         pan_range, tilt_range = (-a + 0.0, a + 0.0), (-b + 0.0, b + 0.0)
     # else: EyeSim 6's maximum image size; programs choose the size with CAMInit
     reader.collected["camera"] = CameraSpec(
-        position[0] + 0.0, position[1] + 0.0, position[2] + 0.0,
-        pan=pan[0], tilt=tilt[0], pan_servo=pan[1], tilt_servo=tilt[1],
-        pan_range=pan[2] or pan_range, tilt_range=tilt[2] or tilt_range)
+        position[0] + 0.0,
+        position[1] + 0.0,
+        position[2] + 0.0,
+        pan=pan[0],
+        tilt=tilt[0],
+        pan_servo=pan[1],
+        tilt_servo=tilt[1],
+        pan_range=pan[2] or pan_range,
+        tilt_range=tilt[2] or tilt_range,
+    )
     reader.remember("camera", line)
 
 
@@ -76,27 +87,34 @@ def _camera_axis(reader: PartReader, line: Line, index: int, what: str):
         low, high = number(match.group(2).strip()), number(match.group(3).strip())
         if low is not None and high is not None and low <= high:
             return (0.0, int(match.group(1)), (low, high))
-    reader.error(line, f"camera: expected the {what} angle (a number) or SERVO<n>(<min>,<max>), "
-                       f"found {quoted(text)}", index)
+    reader.error(
+        line, f"camera: expected the {what} angle (a number) or SERVO<n>(<min>,<max>), found {quoted(text)}", index
+    )
     return None
 
 
 def _lens(key: str):
     """The reader of `fov` or `fisheye <field of view>`."""
+
     def read(reader: PartReader, line: Line) -> None:
         if reader.arity(line, (1,), "<field of view in degrees>"):
             values = reader.numbers(line, 1, ("field of view in degrees",))
             if values and _angle_of_view(reader, line, values[0]):
                 reader.collected[key] = values[0]
                 reader.remember(key, line)
+
     return read
 
 
 def _angle_of_view(reader: PartReader, line: Line, value: float) -> bool:
     if 0 < value <= 360:
         return True
-    reader.error(line, f"{line.keyword}: expected a field of view 0..360 degrees, "
-                       f"found {quoted(line.tokens[1].text)}", 1, "bad-value")
+    reader.error(
+        line,
+        f"{line.keyword}: expected a field of view 0..360 degrees, found {quoted(line.tokens[1].text)}",
+        1,
+        "bad-value",
+    )
     return False
 
 
@@ -137,8 +155,10 @@ def write(robot) -> list[str]:
     def half(limits):
         return f(min(180.0, max(abs(limits[0]), abs(limits[1]))))
 
-    lines = [f"camera {f(c.x)} {f(c.y)} {f(c.z)} {axis(c.pan, c.pan_servo, c.pan_range)} "
-             f"{axis(c.tilt, c.tilt_servo, c.tilt_range)} {half(c.pan_range)} {half(c.tilt_range)}"]
+    lines = [
+        f"camera {f(c.x)} {f(c.y)} {f(c.z)} {axis(c.pan, c.pan_servo, c.pan_range)} "
+        f"{axis(c.tilt, c.tilt_servo, c.tilt_range)} {half(c.pan_range)} {half(c.tilt_range)}"
+    ]
     if c.fisheye:
         lines.append(f"fisheye {f(c.fov)}")
     elif c.fov != CameraSpec(0, 0, 0).fov:
@@ -154,19 +174,26 @@ PART = Part(
     write=write,
     finish=finish,
     properties={"camera": ref("camera")},
-    defs={"camera": record("Camera", "a camera (robot frame)", {
-        "x": coordinate("x", "mm forward"),
-        "y": coordinate("y", "mm left"),
-        "z": coordinate("z", "mm up"),
-        "pan": coordinate("Pan", "default pan, degrees"),
-        "tilt": coordinate("Tilt", "default tilt, degrees"),
-        "fov": between(0, 360, "Field of view", "field of view in degrees"),
-        "pan_servo": whole(1, "Pan servo", "servo driving the pan (its range is pan_range)"),
-        "tilt_servo": whole(1, "Tilt servo", "servo driving the tilt"),
-        "pan_range": numbers(2, "Pan range", "(min, max) in degrees"),
-        "tilt_range": numbers(2, "Tilt range", "(min, max) in degrees"),
-        "fisheye": flag("Fisheye lens"),
-    }, required=("x", "y", "z"))},
+    defs={
+        "camera": record(
+            "Camera",
+            "a camera (robot frame)",
+            {
+                "x": coordinate("x", "mm forward"),
+                "y": coordinate("y", "mm left"),
+                "z": coordinate("z", "mm up"),
+                "pan": coordinate("Pan", "default pan, degrees"),
+                "tilt": coordinate("Tilt", "default tilt, degrees"),
+                "fov": between(0, 360, "Field of view", "field of view in degrees"),
+                "pan_servo": whole(1, "Pan servo", "servo driving the pan (its range is pan_range)"),
+                "tilt_servo": whole(1, "Tilt servo", "servo driving the tilt"),
+                "pan_range": numbers(2, "Pan range", "(min, max) in degrees"),
+                "tilt_range": numbers(2, "Tilt range", "(min, max) in degrees"),
+                "fisheye": flag("Fisheye lens"),
+            },
+            required=("x", "y", "z"),
+        )
+    },
     json_locations=lambda robot, positions: {"camera": positions.value(["camera"])},
     servos=servos,
 )

@@ -28,8 +28,12 @@ def read_drive(reader: PartReader, line: Line) -> None:
 def check(robot, diagnostics, at) -> dict:
     drive, changes = drive_of(robot), {}
     if drive.wheeled and robot.wheels is None:
-        diagnostics.warning(at("drive"), f"a {robot.drive} robot needs a 'wheel' line; using the S4's wheels "
-                            "(54 mm, 3600 deg/s, 1100 ticks, track 90 mm)", "missing-wheels")
+        diagnostics.warning(
+            at("drive"),
+            f"a {robot.drive} robot needs a 'wheel' line; using the S4's wheels "
+            "(54 mm, 3600 deg/s, 1100 ticks, track 90 mm)",
+            "missing-wheels",
+        )
         changes["wheels"] = DEFAULT_WHEELS
     immobile = drive.check(robot)
     if immobile is not None:
@@ -48,8 +52,12 @@ PART = Part(
     write=write,
     properties={
         "drive": choice("Drive", [drive.name for drive in DRIVES], "the drive archetype that moves the robot"),
-        "drive_motors": {"title": "EyeSim 6 motor names", "type": "array", "items": {"type": "string"},
-                         "description": "EyeSim 6 motor and encoder names"},
+        "drive_motors": {
+            "title": "EyeSim 6 motor names",
+            "type": "array",
+            "items": {"type": "string"},
+            "description": "EyeSim 6 motor and encoder names",
+        },
     },
     json_locations=lambda robot, positions: {"drive": positions.key(["drive"])},
     check=check,

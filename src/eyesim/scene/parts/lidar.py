@@ -26,12 +26,19 @@ def read_lidar(reader: PartReader, line: Line) -> None:
     if points is None or not tilt:
         return
     if not -90 < tilt[0] < 90:
-        reader.error(line, f"lidar: expected a tilt between -90 and 90 degrees, found {quoted(line.tokens[2].text)}",
-                     2, "bad-value")
+        reader.error(
+            line,
+            f"lidar: expected a tilt between -90 and 90 degrees, found {quoted(line.tokens[2].text)}",
+            2,
+            "bad-value",
+        )
         return
     if len(line.args) == 3:
-        reader.diagnostics.warning(reader.at(line, 3), f"lidar: third argument {quoted(line.args[2].text)} "
-                                   "(EyeSim VR 2018) has no known meaning; ignored", "ignored-argument")
+        reader.diagnostics.warning(
+            reader.at(line, 3),
+            f"lidar: third argument {quoted(line.args[2].text)} (EyeSim VR 2018) has no known meaning; ignored",
+            "ignored-argument",
+        )
     reader.fields["lidar"] = LidarSpec(points, tilt[0])
 
 
@@ -48,8 +55,14 @@ PART = Part(
     keywords={"lidar": read_lidar},
     write=write,
     properties={"lidar": ref("lidar")},
-    defs={"lidar": record("Lidar", "a 360-degree scanning lidar", {
-        "points": whole(1, "Points"),
-        "tilt": between(-90, 90, "Tilt", "scan plane tilt in degrees", exclusive_high=True),
-    })},
+    defs={
+        "lidar": record(
+            "Lidar",
+            "a 360-degree scanning lidar",
+            {
+                "points": whole(1, "Points"),
+                "tilt": between(-90, 90, "Tilt", "scan plane tilt in degrees", exclusive_high=True),
+            },
+        )
+    },
 )

@@ -63,8 +63,12 @@ class PartReader(KeywordReader):
 
     def positive(self, line: Line, value: float, index: int, name: str) -> bool:
         if value <= 0:
-            self.error(line, f"{line.keyword}: expected {name} > 0, found {quoted(line.tokens[index].text)}",
-                       index, "bad-value")
+            self.error(
+                line,
+                f"{line.keyword}: expected {name} > 0, found {quoted(line.tokens[index].text)}",
+                index,
+                "bad-value",
+            )
             return False
         return True
 

@@ -48,8 +48,15 @@ def read_psd(reader: PartReader, line: Line) -> None:
     if not values:
         return
     heading, pitch = (values[3], 0.0) if len(args) < 8 else (values[4], values[3])
-    spec = PsdSpec(ident if ident is not None and ident > 0 else 0, line.tokens[name_index].text,
-                   values[0], values[1], values[2], heading + 0.0, pitch + 0.0)
+    spec = PsdSpec(
+        ident if ident is not None and ident > 0 else 0,
+        line.tokens[name_index].text,
+        values[0],
+        values[1],
+        values[2],
+        heading + 0.0,
+        pitch + 0.0,
+    )
     reader.collected.setdefault("psds", []).append((ident, spec, reader.at(line)))
 
 
@@ -85,13 +92,20 @@ def check(robot, diagnostics, at) -> dict:
     seen: dict[int, str] = {}
     for i, psd in enumerate(robot.psds):
         if psd.id in seen:
-            diagnostics.error(at(f"psd:{i}"), f"PSD id {psd.id} of {psd.name} is already used by {seen[psd.id]}: "
-                              "expected a different id", "duplicate")
+            diagnostics.error(
+                at(f"psd:{i}"),
+                f"PSD id {psd.id} of {psd.name} is already used by {seen[psd.id]}: expected a different id",
+                "duplicate",
+            )
         seen.setdefault(psd.id, psd.name)
     for i, psd in enumerate(robot.psds):
         if psd.z < 0:
-            diagnostics.warning(at(f"psd:{i}"), f"{psd.name} sits {format_number(-psd.z)} mm below the floor "
-                                f"(z = {format_number(psd.z)}); kept as written", "below-floor")
+            diagnostics.warning(
+                at(f"psd:{i}"),
+                f"{psd.name} sits {format_number(-psd.z)} mm below the floor "
+                f"(z = {format_number(psd.z)}); kept as written",
+                "below-floor",
+            )
     return {}
 
 
@@ -114,16 +128,22 @@ PART = Part(
     write=write,
     finish=finish,
     properties={"psds": list_of("psd", "PSD sensors")},
-    defs={"psd": record("PSD sensor", "a PSD distance sensor (robot frame)", {
-        "id": whole(1, "RoBIOS id", f"RoBIOS id ({ID_NAMES})"),
-        "name": text("Name"),
-        "x": coordinate("x", "mm forward"),
-        "y": coordinate("y", "mm left"),
-        "z": coordinate("z", "mm up"),
-        "heading": coordinate("Heading", "degrees, left positive"),
-        "pitch": coordinate("Pitch", "degrees, up positive"),
-    }, required=("id", "name", "x", "y", "z", "heading"))},
-    json_locations=lambda robot, positions: {f"psd:{i}": positions.value(["psds", i])
-                                             for i in range(len(robot.psds))},
+    defs={
+        "psd": record(
+            "PSD sensor",
+            "a PSD distance sensor (robot frame)",
+            {
+                "id": whole(1, "RoBIOS id", f"RoBIOS id ({ID_NAMES})"),
+                "name": text("Name"),
+                "x": coordinate("x", "mm forward"),
+                "y": coordinate("y", "mm left"),
+                "z": coordinate("z", "mm up"),
+                "heading": coordinate("Heading", "degrees, left positive"),
+                "pitch": coordinate("Pitch", "degrees, up positive"),
+            },
+            required=("id", "name", "x", "y", "z", "heading"),
+        )
+    },
+    json_locations=lambda robot, positions: {f"psd:{i}": positions.value(["psds", i]) for i in range(len(robot.psds))},
     check=check,
 )

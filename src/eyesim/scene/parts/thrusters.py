@@ -28,8 +28,9 @@ def read_thruster(reader: PartReader, line: Line) -> None:
     if not reader.arity(line, (9,), "<NAME> <motor> <x> <y> <z> <dx> <dy> <dz> <max thrust N>"):
         return
     motor = reader.whole(line, 2, "motor number", 1)
-    values = reader.numbers(line, 3, ("x", "y", "z", "direction x", "direction y", "direction z",
-                                      "maximum thrust in N"))
+    values = reader.numbers(
+        line, 3, ("x", "y", "z", "direction x", "direction y", "direction z", "maximum thrust in N")
+    )
     if motor is None or not values or not reader.positive(line, values[6], 9, "maximum thrust"):
         return
     thrusters = reader.fields.setdefault("thrusters", ())
@@ -41,22 +42,31 @@ def check(robot, diagnostics, at) -> dict:
     seen: dict[int, str] = {}
     for i, thruster in enumerate(robot.thrusters):
         if thruster.motor < 1:
-            diagnostics.error(at(f"thruster:{i}"), f"thruster {thruster.name}: expected a motor number from 1, "
-                              f"found {thruster.motor}", "bad-value")
+            diagnostics.error(
+                at(f"thruster:{i}"),
+                f"thruster {thruster.name}: expected a motor number from 1, found {thruster.motor}",
+                "bad-value",
+            )
         elif thruster.motor in seen:
-            diagnostics.error(at(f"thruster:{i}"), f"motor {thruster.motor} of thruster {thruster.name} is "
-                              f"already used by {seen[thruster.motor]}", "duplicate")
+            diagnostics.error(
+                at(f"thruster:{i}"),
+                f"motor {thruster.motor} of thruster {thruster.name} is already used by {seen[thruster.motor]}",
+                "duplicate",
+            )
         if (thruster.dx, thruster.dy, thruster.dz) == (0, 0, 0):
-            diagnostics.error(at(f"thruster:{i}"), f"thruster {thruster.name}: expected a direction, found 0 0 0",
-                              "bad-value")
+            diagnostics.error(
+                at(f"thruster:{i}"), f"thruster {thruster.name}: expected a direction, found 0 0 0", "bad-value"
+            )
         seen.setdefault(thruster.motor, thruster.name)
     return {}
 
 
 def write(robot) -> list[str]:
-    return [f"thruster {quote_token(t.name)} {t.motor} " +
-            " ".join(format_number(v) for v in (t.x, t.y, t.z, t.dx, t.dy, t.dz, t.max_thrust))
-            for t in robot.thrusters]
+    return [
+        f"thruster {quote_token(t.name)} {t.motor} "
+        + " ".join(format_number(v) for v in (t.x, t.y, t.z, t.dx, t.dy, t.dz, t.max_thrust))
+        for t in robot.thrusters
+    ]
 
 
 PART = Part(
@@ -66,18 +76,26 @@ PART = Part(
     keywords={"thruster": read_thruster},
     write=write,
     properties={"thrusters": list_of("thruster", "Thrusters")},
-    defs={"thruster": record("Thruster", "a thruster", {
-        "name": text("Name"),
-        "motor": whole(1, "Motor", "RoBIOS motor number"),
-        "x": coordinate("x", "mm forward"),
-        "y": coordinate("y", "mm left"),
-        "z": coordinate("z", "mm up"),
-        "dx": coordinate("Direction x"),
-        "dy": coordinate("Direction y"),
-        "dz": coordinate("Direction z"),
-        "max_thrust": positive("Thrust", "newtons at motor speed 100"),
-    }, required=("name", "motor", "x", "y", "z", "dx", "dy", "dz", "max_thrust"))},
-    json_locations=lambda robot, positions: {f"thruster:{i}": positions.value(["thrusters", i])
-                                             for i in range(len(robot.thrusters))},
+    defs={
+        "thruster": record(
+            "Thruster",
+            "a thruster",
+            {
+                "name": text("Name"),
+                "motor": whole(1, "Motor", "RoBIOS motor number"),
+                "x": coordinate("x", "mm forward"),
+                "y": coordinate("y", "mm left"),
+                "z": coordinate("z", "mm up"),
+                "dx": coordinate("Direction x"),
+                "dy": coordinate("Direction y"),
+                "dz": coordinate("Direction z"),
+                "max_thrust": positive("Thrust", "newtons at motor speed 100"),
+            },
+            required=("name", "motor", "x", "y", "z", "dx", "dy", "dz", "max_thrust"),
+        )
+    },
+    json_locations=lambda robot, positions: {
+        f"thruster:{i}": positions.value(["thrusters", i]) for i in range(len(robot.thrusters))
+    },
     check=check,
 )

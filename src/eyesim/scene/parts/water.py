@@ -35,11 +35,10 @@ class DragSpec:
 def read_buoyancy(reader: PartReader, line: Line) -> None:
     if not reader.arity(line, (1, 4), "<volume in litres> [<x> <y> <z>]"):
         return
-    values = reader.numbers(line, 1, ("volume in litres", "centre x", "centre y", "centre z")[:len(line.args)])
+    values = reader.numbers(line, 1, ("volume in litres", "centre x", "centre y", "centre z")[: len(line.args)])
     if values:
         if values[0] < 0:
-            reader.error(line, f"buoyancy: expected a volume >= 0, found {quoted(line.tokens[1].text)}", 1,
-                         "bad-value")
+            reader.error(line, f"buoyancy: expected a volume >= 0, found {quoted(line.tokens[1].text)}", 1, "bad-value")
             return
         reader.fields["buoyancy"] = BuoyancySpec(*(v + 0.0 for v in values))
 
@@ -48,7 +47,7 @@ def read_drag(reader: PartReader, line: Line) -> None:
     if not reader.arity(line, (3, 4), "<x> <y> <z> [<rotation>]"):
         return
     names = ("drag along x", "drag along y", "drag along z", "rotational drag")
-    values = reader.numbers(line, 1, names[:len(line.args)])
+    values = reader.numbers(line, 1, names[: len(line.args)])
     if values:
         if any(v < 0 for v in values):
             reader.error(line, "drag: expected coefficients >= 0", 1, "bad-value")
@@ -62,8 +61,9 @@ def read_depth(reader: PartReader, line: Line) -> None:
     values = reader.numbers(line, 1, ("depth in mm",))
     if values:
         if values[0] < 0:
-            reader.error(line, f"depth: expected mm >= 0 below the surface, found {quoted(line.tokens[1].text)}",
-                         1, "bad-value")
+            reader.error(
+                line, f"depth: expected mm >= 0 below the surface, found {quoted(line.tokens[1].text)}", 1, "bad-value"
+            )
             return
         reader.fields["start_depth"] = values[0] + 0.0
 
@@ -85,26 +85,46 @@ def write(robot) -> list[str]:
 PART = Part(
     "water",
     components=("eyesim.robot.components.buoyancy:create",),
-    fields=(("buoyancy", BuoyancySpec | None, None), ("drag", DragSpec | None, None),
-            ("start_depth", float | None, None)),  # mm the hull's top starts below the surface
+    fields=(
+        ("buoyancy", BuoyancySpec | None, None),
+        ("drag", DragSpec | None, None),
+        ("start_depth", float | None, None),
+    ),  # mm the hull's top starts below the surface
     keywords={"buoyancy": read_buoyancy, "drag": read_drag, "depth": read_depth},
     write=write,
-    properties={"buoyancy": ref("buoyancy"), "drag": ref("drag"),
-                "start_depth": at_least(0, "Start depth", "mm the hull's top starts below the water's surface "
-                                        "(a robot placed in a scene under water; else it starts afloat if it "
-                                        "floats, on the pool floor if not)")},
+    properties={
+        "buoyancy": ref("buoyancy"),
+        "drag": ref("drag"),
+        "start_depth": at_least(
+            0,
+            "Start depth",
+            "mm the hull's top starts below the water's surface "
+            "(a robot placed in a scene under water; else it starts afloat if it "
+            "floats, on the pool floor if not)",
+        ),
+    },
     defs={
-        "buoyancy": record("Buoyancy", "buoyancy and its centre (mm)", {
-            "volume": at_least(0, "Volume", "displaced litres"),
-            "x": coordinate("x"),
-            "y": coordinate("y"),
-            "z": coordinate("z"),
-        }, required=("volume",)),
-        "drag": record("Drag", "linear drag in water", {
-            "x": at_least(0, "Drag along x", "N/(m/s) along x"),
-            "y": at_least(0, "Drag along y", "N/(m/s) along y"),
-            "z": at_least(0, "Drag along z", "N/(m/s) along z"),
-            "rotation": at_least(0, "Rotational drag", "N*m/(rad/s)"),
-        }, required=("x", "y", "z")),
+        "buoyancy": record(
+            "Buoyancy",
+            "buoyancy and its centre (mm)",
+            {
+                "volume": at_least(0, "Volume", "displaced litres"),
+                "x": coordinate("x"),
+                "y": coordinate("y"),
+                "z": coordinate("z"),
+            },
+            required=("volume",),
+        ),
+        "drag": record(
+            "Drag",
+            "linear drag in water",
+            {
+                "x": at_least(0, "Drag along x", "N/(m/s) along x"),
+                "y": at_least(0, "Drag along y", "N/(m/s) along y"),
+                "z": at_least(0, "Drag along z", "N/(m/s) along z"),
+                "rotation": at_least(0, "Rotational drag", "N*m/(rad/s)"),
+            },
+            required=("x", "y", "z"),
+        ),
     },
 )

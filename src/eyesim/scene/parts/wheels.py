@@ -60,16 +60,20 @@ def read_wheel(reader: PartReader, line: Line) -> None:
     if line.args and line.args[0].text.lower() in ("drive", "turn"):
         which = line.args[0].text.lower()
     first = 2 if which else 1
-    if not reader.arity(line, (first + 3,), ("drive|turn " if which else "") +
-                        "<diameter> <max deg/s> <ticks/rev> <distance>"):
+    if not reader.arity(
+        line, (first + 3,), ("drive|turn " if which else "") + "<diameter> <max deg/s> <ticks/rev> <distance>"
+    ):
         return
-    values = reader.numbers(line, first, ("diameter in mm", "maximum speed in deg/s", "ticks per revolution",
-                                          "wheel distance in mm"))
+    values = reader.numbers(
+        line, first, ("diameter in mm", "maximum speed in deg/s", "ticks per revolution", "wheel distance in mm")
+    )
     if not values:
         return
     ticks = reader.whole(line, first + 2, "ticks per revolution", 1)
-    if ticks is None or not all(reader.positive(line, values[i], first + i, n) for i, n in
-                                ((0, "diameter"), (1, "maximum speed"), (3, "wheel distance"))):
+    if ticks is None or not all(
+        reader.positive(line, values[i], first + i, n)
+        for i, n in ((0, "diameter"), (1, "maximum speed"), (3, "wheel distance"))
+    ):
         return
     # EyeSim VR gives the distance of each wheel from the robot's middle, EyeSim 6 the track.
     track = values[3] * 2 if reader.dialect in ("vr", "vr1") else values[3]
@@ -84,8 +88,9 @@ def read_wheel(reader: PartReader, line: Line) -> None:
 def finish(reader: PartReader) -> None:
     steering = reader.collected.get("steering")
     if steering:
-        reader.fields["steering"] = SteeringSpec(steering.get("offset", 0.0), steering.get("height"),
-                                                 steering.get("wheels"))
+        reader.fields["steering"] = SteeringSpec(
+            steering.get("offset", 0.0), steering.get("height"), steering.get("wheels")
+        )
 
 
 def write(robot) -> list[str]:
@@ -113,16 +118,26 @@ PART = Part(
     finish=finish,
     properties={"wheels": ref("wheels"), "steering": ref("steering")},
     defs={
-        "wheels": record("Wheels", "wheels", {
-            "diameter": positive("Diameter", "mm"),
-            "max_speed": positive("Top speed", "deg/s"),
-            "ticks_per_rev": whole(1, "Encoder ticks", "encoder ticks per revolution"),
-            "track": positive("Track", "full distance between the left and right wheels in mm"),
-        }, required=("diameter", "max_speed", "ticks_per_rev", "track")),
-        "steering": record("Steering", "the steered axle (Ackermann)", {
-            "offset": coordinate("Position", "mm ahead of the robot centre"),
-            "height": positive("Height", "axle height in mm"),
-            "wheels": ref("wheels"),
-        }, required=("offset",)),
+        "wheels": record(
+            "Wheels",
+            "wheels",
+            {
+                "diameter": positive("Diameter", "mm"),
+                "max_speed": positive("Top speed", "deg/s"),
+                "ticks_per_rev": whole(1, "Encoder ticks", "encoder ticks per revolution"),
+                "track": positive("Track", "full distance between the left and right wheels in mm"),
+            },
+            required=("diameter", "max_speed", "ticks_per_rev", "track"),
+        ),
+        "steering": record(
+            "Steering",
+            "the steered axle (Ackermann)",
+            {
+                "offset": coordinate("Position", "mm ahead of the robot centre"),
+                "height": positive("Height", "axle height in mm"),
+                "wheels": ref("wheels"),
+            },
+            required=("offset",),
+        ),
     },
 )
