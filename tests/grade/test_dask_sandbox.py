@@ -10,12 +10,9 @@ its temporary folders) must not help a case."""
 from __future__ import annotations
 
 import json
-import os
 import subprocess
-import uuid
-from pathlib import Path
 
-from grade.test_sandbox import HONEST, HOSTILE, SPEC, case_of, lcd, write_submission
+from grade.test_sandbox import HONEST, SPEC, case_of, lcd, write_hostile, write_submission
 from support.grading import grade
 
 from eyesim.grade import sandbox
@@ -26,20 +23,7 @@ def test_the_sandbox_attacks_fail_on_dask_workers_as_they_do_locally(tmp_path):
     (tmp_path / "spec.toml").write_text(SPEC)
     submissions, out = tmp_path / "class", tmp_path / "out"
     write_submission(submissions, "alice", HONEST % ("SECRET_ALICE", 250))
-    host_tmp = Path("/tmp") / f"eyesim-attack-{uuid.uuid4().hex}"
-    marker = f"{os.getpid() % 1000}.{uuid.uuid4().int % 100000:05d}"
-    values = {
-        "alice": str(submissions / "alice" / "prog.c"),
-        "alice_dir": str(submissions / "alice"),
-        "out": str(out),
-        "grader": str(os.getpid()),
-        "host_tmp": str(host_tmp),
-        "marker": marker,
-    }
-    for name, source in HOSTILE.items():
-        for key, value in values.items():
-            source = source.replace("{" + key + "}", value)
-        write_submission(submissions, f"hostile_{name}", source)
+    host_tmp, marker = write_hostile(submissions, out)
 
     done = grade(str(tmp_path / "spec.toml"), str(submissions), "--out", str(out), "--cluster", "local:2", cwd=tmp_path)
     assert done.returncode == 0, done.stdout + done.stderr

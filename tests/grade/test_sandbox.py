@@ -128,20 +128,7 @@ def classes(tmp_path_factory):
         write_submission(alone, name, source)
         write_submission(mixed, name, source)
     out_alone, out_mixed = root / "out-alone", root / "out-mixed"
-    host_tmp = Path("/tmp") / f"eyesim-attack-{uuid.uuid4().hex}"
-    marker = f"{os.getpid() % 1000}.{uuid.uuid4().int % 100000:05d}"
-    values = {
-        "alice": str(mixed / "alice" / "prog.c"),
-        "alice_dir": str(mixed / "alice"),
-        "out": str(out_mixed),
-        "grader": str(os.getpid()),
-        "host_tmp": str(host_tmp),
-        "marker": marker,
-    }
-    for name, source in HOSTILE.items():
-        for key, value in values.items():
-            source = source.replace("{" + key + "}", value)
-        write_submission(mixed, f"hostile_{name}", source)
+    host_tmp, marker = write_hostile(mixed, out_mixed)
     for submissions, out in ((alone, out_alone), (mixed, out_mixed)):
         done = grade(str(root / "spec.toml"), str(submissions), "--out", str(out), "--workers", "2", cwd=root)
         assert done.returncode == 0, done.stdout + done.stderr
@@ -153,6 +140,27 @@ def classes(tmp_path_factory):
         "host_tmp": host_tmp,
         "marker": marker,
     }
+
+
+def write_hostile(submissions: Path, out: Path) -> tuple[Path, str]:
+    """The six hostile submissions beside alice's in `submissions`, aimed at her files and at the
+    grader writing `out`; returns the file outside the sandbox the writer tries and the lingerer's
+    marker (what must not exist, or run, afterwards)."""
+    host_tmp = Path("/tmp") / f"eyesim-attack-{uuid.uuid4().hex}"
+    marker = f"{os.getpid() % 1000}.{uuid.uuid4().int % 100000:05d}"
+    values = {
+        "alice": str(submissions / "alice" / "prog.c"),
+        "alice_dir": str(submissions / "alice"),
+        "out": str(out),
+        "grader": str(os.getpid()),
+        "host_tmp": str(host_tmp),
+        "marker": marker,
+    }
+    for name, source in HOSTILE.items():
+        for key, value in values.items():
+            source = source.replace("{" + key + "}", value)
+        write_submission(submissions, f"hostile_{name}", source)
+    return host_tmp, marker
 
 
 def case_of(report: dict, student: str) -> dict:

@@ -125,7 +125,10 @@ class Requests:
             result.work.when_done(lambda: self.sim.call(lambda sim: sim.requests.wake_pending()))
             return
         if isinstance(result, Pending):
-            session.pending.append((request, result))
+            if result.background:  # the timer thread's wait is looked at first (wake_session)
+                session.pending.insert(0, (request, result))
+            else:
+                session.pending.append((request, result))
             session.local_time_us = request.time_us
             if result.background and session.timer_running:  # the callbacks are done: the rest goes on
                 session.timer_running = False
@@ -230,11 +233,11 @@ class Requests:
 
     def wake_session(self, session: Session, at_us: int) -> bool:
         """Complete the session's pending replies whose condition holds at time `at_us`; whether any did.
-        The timer thread's wait first; the schedule may hold a reply back (deterministic timers'
+        The timer thread's wait, kept first, is looked at first; the schedule may hold a reply back (deterministic timers'
         callbacks run alone, Session.held)."""
         timing = self.sim.timing
         still = []
-        for request, pending in sorted(session.pending, key=lambda waiting: not waiting[1].background):
+        for request, pending in session.pending:
             values = None if timing.holds(session, request, pending) else pending.poll(at_us)
             if values is None:
                 still.append((request, pending))

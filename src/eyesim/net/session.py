@@ -7,6 +7,7 @@ from collections import deque
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Callable, Protocol
 
+from eyesim.protocol import generated as g
 from eyesim.protocol.ops import OpSpec
 
 if TYPE_CHECKING:
@@ -14,7 +15,7 @@ if TYPE_CHECKING:
 
 log = logging.getLogger("eyesim")
 BUSY_WAIT_GRACE = 0.5  # s of wall time; see Session.blocked
-TIMER_LOCKING = ("TIMER_ATTACH", "TIMER_DETACH")  # see Session.timers_locked
+TIMER_LOCKING = (g.OP_TIMER_ATTACH, g.OP_TIMER_DETACH)  # see Session.timers_locked
 
 
 class Connection(Protocol):
@@ -125,7 +126,7 @@ class Session:
         if self.timer_running:
             request.by_timer = True
             self.timer_queued.append(request)
-        elif self.timer_starting and request.op.name == "TIMER_WAIT":
+        elif self.timer_starting and request.op.code == g.OP_TIMER_WAIT:
             self.timer_starting = False
             request.by_timer = True
             self.queued.appendleft(request)
@@ -144,7 +145,7 @@ class Session:
     def timers_locked(self) -> bool:
         """Deterministic: the main thread waits in OSAttachTimer or OSDetachTimer, which hold the
         library's timer lock, so no callback can run before that call is answered."""
-        return any(request.op.name in TIMER_LOCKING for request in self.queued)
+        return any(request.op.code in TIMER_LOCKING for request in self.queued)
 
     def note_request(self, now_wall: float) -> None:
         self.last_request_wall = now_wall
