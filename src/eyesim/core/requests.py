@@ -177,7 +177,8 @@ class Requests:
         if session.robot is not None:
             raise commands.CommandError("handshake sent twice", g.ERR_BAD_PAYLOAD)
         if sim.program_token is not None and not secrets.compare_digest(token.encode(), sim.program_token.encode()):
-            log.warning(
+            sim.network.warnings.warn(
+                "refused: a wrong or missing program token",
                 "refused a program from %s (%s, pid %d): %s program token",
                 session.peer,
                 reprlib.repr(program),

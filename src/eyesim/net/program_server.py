@@ -23,7 +23,8 @@ program close it (the end of the stream waits behind unread requests): on Linux 
 state shows it, looked at once a second, so a program that pipelined blocking calls and left
 frees its robot and descriptor; and one that sends more while MAX_QUEUED of its calls wait (keys,
 times) is closed with an error: those calls could wait for ever, and the requests behind them
-would hide its close."""
+would hide its close. Warnings about single connections, which a client can cause by the thousand,
+are logged in full once a second per reason and otherwise counted (repeated_warnings.py)."""
 
 from __future__ import annotations
 
@@ -36,6 +37,7 @@ import time
 
 from eyesim.net import program_token
 from eyesim.net.backlog import Backlog
+from eyesim.net.repeated_warnings import RepeatedWarnings
 from eyesim.net.session import Deferred, Request, Session
 from eyesim.protocol import FrameDecoder, ProtocolError, decode_payload, encode_error, generated as g
 
@@ -107,7 +109,8 @@ class ProgramConnection:
                 return
             data = memoryview(data)[sent:]
         if self.backlog.size + len(data) > MAX_BACKLOG:
-            log.warning(
+            self.sockets.warnings.warn(
+                "closed: too many replies unread",
                 "%s: %d bytes of replies unread; closing the connection (the program stopped reading its replies)",
                 self.session.name,
                 self.backlog.size + len(data),
@@ -151,7 +154,9 @@ class ProgramConnection:
         try:
             messages = self.decoder.feed(data, limit=MAX_QUEUED - self.held())
         except ProtocolError as error:
-            log.warning("%s: %s; closing the connection", self.session.peer, error)
+            self.sockets.warnings.warn(
+                "closed: a malformed frame", "%s: %s; closing the connection", self.session.peer, error
+            )
             self.send(encode_error(0, 0, error.code, str(error)))
             self.close(flush=True)
             return
@@ -219,7 +224,9 @@ class ProgramConnection:
             f"more than {MAX_QUEUED} calls waiting at once (a program makes one call at a time per "
             f"thread); closing the connection"
         )
-        log.warning("%s: %s", self.session.name, text)
+        self.sockets.warnings.warn(
+            f"closed: more than {MAX_QUEUED} calls waiting at once", "%s: %s", self.session.name, text
+        )
         self.send(encode_error(0, 0, g.ERR_NOT_SUPPORTED, text))
         self.close(flush=True)
 
@@ -295,7 +302,7 @@ class ProgramSockets:
         self.handshake_timeout = HANDSHAKE_TIMEOUT
         self._listeners: set[socket.socket] = set()
         self._resting_until = 0.0  # the listeners are unregistered until then (no descriptors left)
-        self._refused = 0  # connections refused since the last log line about it
+        self.warnings = RepeatedWarnings(log)  # per-connection warnings, summed up once a second
 
     def wake(self) -> None:
         """Any thread: make a waiting `poll` return."""
@@ -345,18 +352,13 @@ class ProgramSockets:
             self._last_stall_check = now
             self._drop_stalled(now)
             self._end_rest(now)
-            if self._refused > 1:
-                log.warning(
-                    "refused %d more program connection(s): %d are open, the most a run takes",
-                    self._refused - 1,
-                    self.max_connections,
-                )
-            self._refused = 0
+            self.warnings.summarize(now)
 
     def _drop_stalled(self, now: float) -> None:
         for connection in list(self.connections):
             if connection.backlog.size and now - connection.backlog_progress > STALL_TIMEOUT:
-                log.warning(
+                self.warnings.warn(
+                    "closed: replies not read",
                     "%s: has not read its replies for %.0f s (%d bytes waiting); closing the connection",
                     connection.session.name,
                     now - connection.backlog_progress,
@@ -364,14 +366,16 @@ class ProgramSockets:
                 )
                 connection.close()
             elif connection.session.robot is None and now - connection.connected_at > self.handshake_timeout:
-                log.warning(
+                self.warnings.warn(
+                    f"closed: no handshake within {self.handshake_timeout:g} s",
                     "%s: sent no handshake within %g s; closing the connection",
                     connection.session.peer,
                     self.handshake_timeout,
                 )
                 connection.close()
             elif not connection.reading() and peer_closed(connection.sock):
-                log.warning(
+                self.warnings.warn(
+                    "closed: the program left while its calls waited",
                     "%s: closed its connection while %d of its calls waited; closing it here too",
                     connection.session.name,
                     connection.held(),
@@ -385,7 +389,8 @@ class ProgramSockets:
         if not silent:
             return False
         oldest = min(silent, key=lambda c: c.connected_at)
-        log.warning(
+        self.warnings.warn(
+            "closed without a handshake to make room",
             "%s: closed without a handshake to make room (%d connections open, the most a run takes)",
             oldest.session.peer,
             self.max_connections,
@@ -429,14 +434,13 @@ class ProgramSockets:
                 self._rest()
             return
         if len(self.connections) >= self.max_connections and not self._evict_silent():
-            self._refused += 1
-            if self._refused == 1:  # the first of a burst now, the rest counted once a second
-                log.warning(
-                    "refused a program connection from %s:%s: %d are open, the most a run takes",
-                    address[0],
-                    address[1],
-                    self.max_connections,
-                )
+            self.warnings.warn(
+                f"refused: at the cap of {self.max_connections} connections",
+                "refused a program connection from %s:%s: %d are open, the most a run takes",
+                address[0],
+                address[1],
+                self.max_connections,
+            )
             sock.close()
             return
         sock.setblocking(False)
