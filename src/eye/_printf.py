@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 import re
+from typing import Any, Iterator
 
 # %[flags][width][.precision][length]conversion
 _SPEC = re.compile(
@@ -37,13 +38,14 @@ def printf(function: str, format: object, args: tuple) -> str:
     return "".join(out)
 
 
-def _convert(function: str, spec: re.Match, supply) -> str:
+def _convert(function: str, spec: re.Match, supply: Iterator[Any]) -> str:
     conversion, flags = spec["conversion"], spec["flags"]
     if conversion == "%":
         return "%"
     if conversion == "n":
         raise ValueError(f"{function}: %n is not supported (it would store into a C variable)")
-    width, precision = spec["width"], spec["precision"]
+    width: Any = spec["width"]
+    precision: Any = spec["precision"]
     if width == "*":
         width = next(supply, _MISSING)
         if width is _MISSING:
@@ -59,7 +61,7 @@ def _convert(function: str, spec: re.Match, supply) -> str:
         precision = int(precision) if int(precision) >= 0 else None  # negative: as if none
     elif precision is not None:
         precision = int(precision or 0)  # "%.f" is precision 0
-    value = next(supply, _MISSING)
+    value: Any = next(supply, _MISSING)
     if value is _MISSING:
         return spec.group(0)
     if conversion in "diouxXeEfFgGaA" and isinstance(value, (str, bytes)):  # C would print garbage
@@ -93,7 +95,7 @@ def _convert(function: str, spec: re.Match, supply) -> str:
 
 def _integer(value, conversion: str, flags: str, width: int, precision: int | None, length: str | None) -> str:
     number = int(value)
-    bits = _BITS.get(length, 32)
+    bits = _BITS.get(length or "", 32)
     if conversion in "di":
         if length in ("hh", "h"):  # C converts to signed char / short
             number = (number + (1 << (bits - 1))) % (1 << bits) - (1 << (bits - 1))

@@ -43,5 +43,6 @@ def sleep(secs: float) -> None:
         _system_sleep(secs)
 
 
-sleep.__wrapped__ = _system_sleep
-time.sleep = sleep
+# Monkey-patching the standard library, which its types do not foresee.
+sleep.__wrapped__ = _system_sleep  # type: ignore[attr-defined]
+time.sleep = sleep  # type: ignore[assignment]

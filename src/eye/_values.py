@@ -4,12 +4,12 @@ from __future__ import annotations
 
 import ctypes
 import os
-from typing import Any, Sequence, Union
+from typing import Any
 
 # An image or data buffer: what CAMGet and the IP functions return (a ctypes array of c_ubyte), or
 # any other bytes-like object (bytes, bytearray, memoryview, a numpy uint8 array, a c_byte array),
-# or a sequence of ints 0..255.
-Buffer = Union[ctypes.Array, bytes, bytearray, memoryview, Sequence[int], Any]
+# or a sequence of ints 0..255. Which one is checked when it is used, so to the type checker it is Any.
+Buffer = Any
 
 
 class CInt(int):

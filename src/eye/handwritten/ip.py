@@ -19,6 +19,7 @@ __all__ = ["IPReadFile", "IPWriteFile", "IPWriteFileGray", "IPLaplace", "IPSobel
 def _size() -> tuple[int, int, str]:
     """Pixels and colour bytes of the current IP size, and words saying what it is."""
     width, height = library_int("IP_WIDTH"), library_int("IP_HEIGHT")
+    assert width is not None and height is not None, "libeyesim exports IP_WIDTH and IP_HEIGHT"
     return width * height, 3 * width * height, f"the IP size is {width} x {height}"
 
 

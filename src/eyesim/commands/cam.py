@@ -24,11 +24,12 @@ def _camera(robot) -> Camera:
     return component_of(robot, Camera)
 
 
-def _started(robot) -> Camera:
+def _started(robot) -> tuple[Camera, tuple[int, int]]:
+    """The camera and its (width, height), once CAMInit chose them."""
     camera = _camera(robot)
     if camera.size is None:
         raise CommandError("the camera is not initialised; call CAMInit first")
-    return camera
+    return camera, camera.size
 
 
 def cam_init(sim, robot, request):
@@ -52,8 +53,7 @@ def cam_get_gray(sim, robot, request):
 
 
 def _image(robot, request, gray: bool) -> Deferred:
-    camera = _started(robot)
-    width, height = camera.size
+    camera, (width, height) = _started(robot)
 
     def reply(image):  # on the render thread
         pixels = to_gray(image) if gray else image

@@ -23,8 +23,8 @@ class TimerWait(Pending):
     def __init__(self, timers: ProgramTimers, session):  # no Pending.__init__: wake_us is computed
         self.timers, self.session = timers, session
 
-    @property
-    def wake_us(self):
+    @property  # read-only here: the engine never sets a timer wait's wake time
+    def wake_us(self):  # type: ignore[override]
         return self.timers.next_due_us(self.session)
 
     def poll(self, at_us):

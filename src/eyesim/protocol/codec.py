@@ -49,7 +49,7 @@ def _scalar_structs(layout: Sequence[tuple[str, str]]) -> tuple[struct.Struct | 
         if None in codes:
             known = (layout, None, None)
         else:
-            fields = "".join(codes)
+            fields = "".join(code for code in codes if code)
             known = (layout, struct.Struct("<" + fields), struct.Struct("<IHHI" + fields))
         _scalar_layouts[id(layout)] = known
     return known[1], known[2]
@@ -199,7 +199,7 @@ class FrameDecoder:
                 # received bytes are the frame, and they never change, so nothing is copied.
                 return [decode_body(memoryview(data)[4:])]
         self._buffer += data
-        messages = []
+        messages: list[Message] = []
         buf = self._buffer
         pos = 0
         while len(buf) - pos >= 4 and (limit is None or len(messages) < limit):
@@ -234,7 +234,7 @@ def encode_image_reply(op: int, request_id: int, values: Sequence, image: np.nda
     head = encode_message(op, g.KIND_REPLY, request_id, (*values, b""))
     frame = np.empty(len(head) + image.nbytes, dtype=np.uint8)
     frame[: len(head)] = np.frombuffer(head, dtype=np.uint8)
-    _LEN.pack_into(frame, 0, len(frame) - _LEN.size)
-    _U32.pack_into(frame, len(head) - _U32.size, image.nbytes)
+    _LEN.pack_into(frame.data, 0, len(frame) - _LEN.size)
+    _U32.pack_into(frame.data, len(head) - _U32.size, image.nbytes)
     np.copyto(frame[len(head) :].reshape(image.shape), image)
-    return memoryview(frame)
+    return frame.data
