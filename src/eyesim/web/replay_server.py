@@ -120,6 +120,8 @@ class ReplayServer:
 
     def _in_report(self, relative: str) -> Path:
         """A file of the report folder (404 for anything outside it or missing)."""
+        if self.report_dir is None:  # the report routes exist only with a report folder
+            raise web.HTTPNotFound()
         path = (self.report_dir / (relative or "index.html")).resolve()
         if not path.is_relative_to(self.report_dir) or not path.is_file():
             raise web.HTTPNotFound()

@@ -24,7 +24,8 @@ class BadBody(Exception):
 
 def route_of(request: web.Request) -> str:
     """The route as the schema names it: "POST /scenes/open"."""
-    return f"{request.method} {request.match_info.route.resource.canonical}"
+    resource = request.match_info.route.resource
+    return f"{request.method} {resource.canonical if resource is not None else request.path}"
 
 
 async def checked_body(request: web.Request, limit: int) -> dict:

@@ -302,7 +302,11 @@ class SceneWorkspace:
         return place[0] if place else None
 
     def _shown(self, path: Path) -> dict:
-        root, relative = self.roots.place_of(path)
+        """Where a file under the roots is, as the page names it."""
+        place = self.roots.place_of(path)
+        if place is None:
+            raise ValueError(f"{path} is outside the scene roots")  # callers pass files found under them
+        root, relative = place
         return {"root": root, "path": relative}
 
 

@@ -344,7 +344,10 @@ async def serve_app(app: web.Application, host: str, port: int) -> tuple[web.App
     await runner.setup()
     site = web.TCPSite(runner, host, port)
     await site.start()
-    return runner, site._server.sockets[0].getsockname()[1]
+    server = site._server
+    if not isinstance(server, asyncio.Server):
+        raise RuntimeError(f"the viewer could not listen on {host}:{port}")
+    return runner, server.sockets[0].getsockname()[1]
 
 
 def viewer_url(host: str, port: int, access: AccessPolicy) -> str:
@@ -404,18 +407,19 @@ class ViewerServer:
         return viewer_url(self.host, self.port, self.access)
 
     def start(self) -> None:
-        self.io.run(self._start())
-        self.sim.events.subscribe(self.hub)
-        self.sim.call(lambda sim: sim.request_observers.append(self.hub.on_request))
+        hub = self.io.run(self._start())
+        self.sim.events.subscribe(hub)
+        self.sim.call(lambda sim: sim.request_observers.append(hub.on_request))
 
-    async def _start(self) -> None:
-        self.hub = ViewerHub(self.sim, asyncio.get_running_loop())
+    async def _start(self) -> ViewerHub:
+        """Serve the page; returns the hub it made (on the I/O loop, which the hub lives on)."""
+        hub = self.hub = ViewerHub(self.sim, asyncio.get_running_loop())
         app = web.Application(middlewares=[self.access.middleware])
         app.router.add_get("/ws", self._websocket)
         app.router.add_get("/scene/floor-texture", self._floor_texture)
         app.router.add_get("/scene/mesh/{kind}/{id}", self._mesh)
         if self.launcher is not None:
-            programs = ProgramControl(self.sim, self.launcher, self.run_folder, self.hub.resend_scene)
+            programs = ProgramControl(self.sim, self.launcher, self.run_folder, hub.resend_scene)
             programs.add_routes(app.router)
             ProgramSources(programs).add_routes(app.router)
         self.robot_editor.add_routes(app)
@@ -423,6 +427,7 @@ class ViewerServer:
             self.workspace.add_routes(app)
         app.router.add_get("/{path:.*}", static_file)
         self._runner, self.port = await serve_app(app, self.host, self.port)
+        return hub
 
     def stop(self) -> None:
         if self.hub is not None and self.hub in self.sim.events.listeners:
@@ -459,12 +464,14 @@ class ViewerServer:
         ws = web.WebSocketResponse(heartbeat=20, max_msg_size=MAX_COMMAND_BYTES)
         await ws.prepare(request)
         browser = Browser(ws)
-        await self.hub.attach(browser)
+        hub = self.hub
+        assert hub is not None, "the WebSocket route is served only once _start made the hub"
+        await hub.attach(browser)
         pump = asyncio.get_running_loop().create_task(browser.pump())
         try:
             async for message in ws:
                 if message.type == WSMsgType.TEXT:
-                    error = self.hub.command_text(message.data, browser)
+                    error = hub.command_text(message.data, browser)
                 elif message.type == WSMsgType.BINARY:
                     error = "binary messages are not understood: send JSON text"
                 else:
@@ -472,6 +479,6 @@ class ViewerServer:
                 if error:
                     browser.add_event(json.dumps(messages.error(error)))
         finally:
-            self.hub.detach(browser)
+            hub.detach(browser)
             pump.cancel()
         return ws
