@@ -5,12 +5,13 @@ Each geom is tested only against the rays of the pixels it can cover (the screen
 bounding box, or for a fisheye the cone around it), so the cost follows what is in view, not the
 number of geoms times the number of pixels. A surface is seen from outside only, as OpenGL culls
 back faces. Geom types without a shape here (meshes, height fields) fall back to MuJoCo's ray
-cast for the whole image. Colours come from each geom's rgba (or its material's); textured planes
+cast for every pixel. The image is drawn in bands of rows, other threads running between them. Colours come from each geom's rgba (or its material's); textured planes
 (a floor texture) are sampled where the ray meets them; the lights are the ones in render.py."""
 
 from __future__ import annotations
 
-from typing import cast
+import time
+from typing import NamedTuple, cast
 
 import mujoco
 import numpy as np
@@ -28,56 +29,103 @@ SHOWN_GROUPS = np.array(
 EPSILON = 1e-9
 G = mujoco.mjtGeom
 CORNERS = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=np.float64)
+SLICE_PIXELS = 1 << 17  # pixels drawn in one go (whole rows): each numpy step over them takes ~2 ms
+
+
+class Rect(NamedTuple):
+    """Rows r0..r1 and columns c0..c1 (ends excluded) of the image where a geom can show."""
+
+    r0: int
+    r1: int
+    c0: int
+    c1: int
+
+
+class Cone(NamedTuple):
+    """A fisheye's rays that may meet a geom: those within the cone around `axis` (unit, world)."""
+
+    axis: np.ndarray
+    cosine: float
+
+
+class Band(NamedTuple):
+    """Rows top..bottom (bottom excluded) of an image `width` pixels wide."""
+
+    top: int
+    bottom: int
+    width: int
+
+
+NOWHERE = Rect(0, 0, 0, 0)
 
 
 class RayCastRenderer:
+    """Draws an image in bands of whole rows of at most `slice_pixels` pixels, and lets other
+    threads run between them: a numpy step holds the interpreter's lock for as long as it works,
+    and over a whole 5-megapixel image one step took up to 66 ms, during which the simulation
+    thread could serve no program. Every pixel is computed on its own, so the image is the same
+    in any bands."""
+
     name = "raycast"
+
+    def __init__(self, slice_pixels: int = SLICE_PIXELS):
+        self.slice_pixels = slice_pixels
 
     def render(self, world, view: render.View, data=None) -> np.ndarray:
         """The view's image, (height, width, 3) uint8, top row first; `data`: the physics state to
         draw (a copy of the world's), else the world's own."""
         model, data = world.model, world.data if data is None else data
-        inside = render.camera_ray_axes(view.width, view.height, view.fov, view.fisheye)[3]
+        axes = render.camera_ray_axes(view.width, view.height, view.fov, view.fisheye)
         forward = np.asarray(view.forward, dtype=np.float64)
         basis = np.stack([view.right, np.asarray(view.up, dtype=np.float64), forward])
-        # The rays in the world, one array per axis (camera frame: x right, y up, z forward); an array
-        # each, though sum() is typed as 0 for no terms.
-        columns = [
-            cast(np.ndarray, sum(_ray_axis(view, k) * float(basis[k, axis]) for k in range(3))) for axis in range(3)
-        ]
         origin = np.asarray(view.position, dtype=np.float64)
-
         geoms = _visible_geoms(model, view.own_body)
-        if np.isin(model.geom_type[geoms], SHAPES).all():
-            geom_ids, distances, normals = _cast(model, data, geoms, origin, columns, view, basis)
-        else:
-            geom_ids, distances, normals = _mujoco_cast(model, data, origin, np.stack(columns, axis=1), view.own_body)
-
-        hit = np.flatnonzero((geom_ids >= 0) & inside)
-        hit_geoms = geom_ids[hit]
-        colours = render.shade(_geom_colours(model)[hit_geoms], normals[hit], forward)
-        if model.ntex:  # as in OpenGL, the texture modulates the lit colour
-            points = np.stack([origin[axis] + columns[axis][hit] * distances[hit] for axis in range(3)], axis=1)
-            _apply_textures(model, data, hit_geoms, points, colours)
-        image = np.empty((len(inside), 3), dtype=np.uint8)
-        image[:] = render.BACKGROUND
-        image[hit] = np.rint(colours * 255.0)
+        analytic = bool(np.isin(model.geom_type[geoms], SHAPES).all())
+        reaches = [_reach(model, data, geom, origin, view, basis) for geom in geoms] if analytic else []
+        geom_colours = _geom_colours(model)
+        image = np.empty((view.width * view.height, 3), dtype=np.uint8)
+        rows = max(1, self.slice_pixels // view.width)
+        for top in range(0, view.height, rows):
+            bottom = min(view.height, top + rows)
+            pixels = slice(top * view.width, bottom * view.width)
+            # The band's rays in the world, one array per axis (camera frame: x right, y up, z
+            # forward); an array each, though sum() is typed as 0 for no terms.
+            columns = [
+                cast(np.ndarray, sum(axes[k][pixels] * float(basis[k, axis]) for k in range(3))) for axis in range(3)
+            ]
+            if analytic:
+                band = Band(top, bottom, view.width)
+                geom_ids, distances, normals = _cast(model, data, geoms, reaches, origin, columns, band)
+            else:
+                geom_ids, distances, normals = _mujoco_cast(
+                    model, data, origin, np.stack(columns, axis=1), view.own_body
+                )
+            hit = np.flatnonzero((geom_ids >= 0) & axes[3][pixels])
+            hit_geoms = geom_ids[hit]
+            colours = render.shade(geom_colours[hit_geoms], normals[hit], forward)
+            if model.ntex:  # as in OpenGL, the texture modulates the lit colour
+                points = np.stack([origin[axis] + columns[axis][hit] * distances[hit] for axis in range(3)], axis=1)
+                _apply_textures(model, data, hit_geoms, points, colours)
+            drawn = image[pixels]
+            drawn[:] = render.BACKGROUND
+            drawn[hit] = np.rint(colours * 255.0)
+            self.between_slices()
         return image.reshape(view.height, view.width, 3)
 
+    def between_slices(self) -> None:
+        """Give the interpreter's lock to a thread that waits for it (the simulation's)."""
+        time.sleep(0)
 
-def _ray_axis(view: render.View, axis: int) -> np.ndarray:
-    """One axis of the camera-frame rays of every pixel, as a contiguous array."""
-    return render.camera_ray_axes(view.width, view.height, view.fov, view.fisheye)[axis]
 
-
-def _cast(model, data, geoms, origin, columns, view, basis):
-    """Nearest geom, distance and world normal of every ray (geom -1 where it hits nothing).
-    Distances first, geom by geom over the pixels each can cover; normals only where it won."""
+def _cast(model, data, geoms, reaches, origin, columns, band: Band):
+    """Nearest geom, distance and world normal of every ray of the band (geom -1 where it hits
+    nothing). Distances first, geom by geom over the pixels each can cover; normals only where it
+    won."""
     n = len(columns[0])
     nearest = np.full(n, -1, dtype=np.int32)
     distance = np.full(n, np.inf, dtype=np.float32)
-    for geom in geoms:
-        pixels = _candidates(model, data, geom, origin, view, columns, basis)
+    for geom, reach in zip(geoms, reaches):
+        pixels = _pixels_in(reach, columns, band)
         if pixels is not None and not len(pixels):
             continue
         o, d = _local_rays(data, geom, origin, columns, pixels)
@@ -122,13 +170,11 @@ def _half_extent(model, geom: int) -> np.ndarray:
     return size.copy()  # box, ellipsoid
 
 
-def _candidates(
-    model, data, geom: int, origin: np.ndarray, view: render.View, columns: list[np.ndarray], basis: np.ndarray
-):
-    """Indices of the pixels whose rays may meet the geom; None for every pixel. `basis`: the
-    camera's right, up and forward vectors as rows."""
+def _reach(model, data, geom: int, origin: np.ndarray, view: render.View, basis: np.ndarray) -> Rect | Cone | None:
+    """Where on the image the geom can show: a screen rectangle (NOWHERE: not at all), for a
+    fisheye the cone from the camera around it, or None for anywhere. `basis`: the camera's
+    right, up and forward vectors as rows."""
     width, height = view.width, view.height
-    nothing = np.zeros(0, dtype=np.intp)
     if model.geom_type[geom] == G.mjGEOM_PLANE:
         return None
     rotation = data.geom_xmat[geom].reshape(3, 3)
@@ -139,13 +185,11 @@ def _candidates(
         distance, radius = np.linalg.norm(offset), np.linalg.norm(half)
         if distance <= radius:
             return None
-        axis = offset / distance
-        cosine = np.sqrt(1.0 - (radius / distance) ** 2)
-        return np.flatnonzero(columns[0] * axis[0] + columns[1] * axis[1] + columns[2] * axis[2] >= cosine - 1e-9)
+        return Cone(offset / distance, np.sqrt(1.0 - (radius / distance) ** 2))
     corners = centre + render.times(CORNERS * half, rotation.T)
     local = render.times(corners - origin, basis.T)
     if (local[:, 2] <= render.NEAR).all():
-        return nothing  # behind the camera
+        return NOWHERE  # behind the camera
     if (local[:, 2] <= render.NEAR).any():
         return None  # reaches behind the camera: any pixel may see it
     focal = (width / 2) / np.tan(np.radians(view.fov) / 2)
@@ -153,9 +197,23 @@ def _candidates(
     ys = (height - 1) / 2 - focal * local[:, 1] / local[:, 2]
     c0, c1 = max(0, int(np.floor(xs.min())) - 1), min(width, int(np.ceil(xs.max())) + 2)
     r0, r1 = max(0, int(np.floor(ys.min())) - 1), min(height, int(np.ceil(ys.max())) + 2)
-    if c0 >= c1 or r0 >= r1:
-        return nothing
-    return (np.arange(r0, r1)[:, None] * width + np.arange(c0, c1)[None, :]).ravel()
+    return Rect(r0, r1, c0, c1)
+
+
+def _pixels_in(reach: Rect | Cone | None, columns: list[np.ndarray], band: Band):
+    """Indices, within the band, of the pixels whose rays may meet a geom that reaches so far;
+    None for every pixel. `columns`: the band's rays."""
+    if reach is None:
+        return None
+    if isinstance(reach, Cone):
+        axis = reach.axis
+        return np.flatnonzero(columns[0] * axis[0] + columns[1] * axis[1] + columns[2] * axis[2] >= reach.cosine - 1e-9)
+    r0, r1 = max(reach.r0, band.top), min(reach.r1, band.bottom)
+    if reach.c0 >= reach.c1 or r0 >= r1:
+        return np.zeros(0, dtype=np.intp)
+    return (
+        np.arange(r0 - band.top, r1 - band.top)[:, None] * band.width + np.arange(reach.c0, reach.c1)[None, :]
+    ).ravel()
 
 
 def _local_rays(data, geom: int, origin: np.ndarray, columns: list[np.ndarray], pixels):
