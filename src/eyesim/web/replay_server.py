@@ -54,7 +54,9 @@ class ReplayServer:
         self.access = AccessPolicy(host, token, require_token)
         self._runner: web.AppRunner | None = None
         self._pages: dict[web.WebSocketResponse, timeline.FrameCursor] = {}
-        self._uploads = tempfile.TemporaryDirectory(prefix="eyesim-replay-")
+        # Made at the first upload: a server ended without its cleanup (a closed console window on
+        # Windows, a terminal's hangup) then leaves no empty folder behind.
+        self._uploads: tempfile.TemporaryDirectory | None = None
         self._uploaded = 0
         self._owned = False  # the recording shown was opened here (an upload or a report's case), not given
 
@@ -79,7 +81,8 @@ class ReplayServer:
             await self._runner.cleanup()
         if self._owned:
             self.recording.close()
-        self._uploads.cleanup()
+        if self._uploads is not None:
+            self._uploads.cleanup()
 
     @property
     def report_url(self) -> str:
@@ -89,6 +92,8 @@ class ReplayServer:
         """Another recording, sent by the page: checked, then shown on every open page. Only the one
         shown is kept: a rejected upload, and the one it replaces, are deleted at once."""
         name = Path(request.query.get("name", "recording.mcap")).name or "recording.mcap"
+        if self._uploads is None:
+            self._uploads = tempfile.TemporaryDirectory(prefix="eyesim-replay-")
         self._uploaded += 1
         folder = Path(self._uploads.name) / str(self._uploaded)
         folder.mkdir()
@@ -112,7 +117,7 @@ class ReplayServer:
         self.source = timeline.RecordingTimeline(recording, secrets.token_hex(4))
         if previous_owned:
             previous.close()
-            if previous.path.parent.parent == Path(self._uploads.name):
+            if self._uploads is not None and previous.path.parent.parent == Path(self._uploads.name):
                 shutil.rmtree(previous.path.parent, ignore_errors=True)
         for ws in list(self._pages):
             self._pages[ws] = timeline.FrameCursor()
