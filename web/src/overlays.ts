@@ -1,10 +1,12 @@
-// Drawn over the world when the scene asks: sensor rays (settings VIS) and robot paths (TRACE).
+// Drawn over the world when the scene asks: what the robots' parts draw (settings VIS: PSD beams,
+// lidar scans, pressed bumpers; any part kind, in its colour) and robot paths (TRACE).
 
 import { BufferGeometry, Float32BufferAttribute, Group, Line, LineBasicMaterial, LineSegments } from "three";
 import type { BodyPose, PathsMessage, SceneSettings, SensorRays } from "./protocol";
 
-/** Colours of the rays: PSD beams red, lidar beams green. */
-const RAY_COLORS = { psd: 0xe53935, lidar: 0x2e9e44 } as const;
+/** Colours of the rays that do not bring their own: PSD beams red, lidar beams green, others grey. */
+const RAY_COLORS: Record<string, number> = { psd: 0xe53935, lidar: 0x2e9e44 };
+const OTHER_RAYS = 0x757575;
 const TRACE_COLOR = 0x1e63c8;
 /** A path gets a new point once the robot moved this far (m); the oldest points go beyond MAX. */
 const TRACE_STEP = 0.005;
@@ -106,18 +108,21 @@ export class Overlays {
       this.rays.remove(child);
       (child as LineSegments).geometry.dispose();
     }
-    for (const kind of ["psd", "lidar"] as const) {
-      const points: number[] = [];
-      for (const ray of rays) {
-        if (ray.kind !== kind) continue;
-        for (let i = 0; i + 2 < ray.ends.length; i += 3) {
-          points.push(...ray.origin, ray.ends[i], ray.ends[i + 1], ray.ends[i + 2]);
-        }
+    // One set of line segments per colour, whatever part kind drew them.
+    const byColor = new Map<number, number[]>();
+    for (const ray of rays) {
+      const color = ray.color ? (ray.color[0] << 16) | (ray.color[1] << 8) | ray.color[2] : (RAY_COLORS[ray.kind] ?? OTHER_RAYS);
+      let points = byColor.get(color);
+      if (!points) byColor.set(color, (points = []));
+      for (let i = 0; i + 2 < ray.ends.length; i += 3) {
+        points.push(...ray.origin, ray.ends[i], ray.ends[i + 1], ray.ends[i + 2]);
       }
+    }
+    for (const [color, points] of byColor) {
       if (points.length === 0) continue;
       const geometry = new BufferGeometry();
       geometry.setAttribute("position", new Float32BufferAttribute(points, 3));
-      const material = new LineBasicMaterial({ color: RAY_COLORS[kind], transparent: true, opacity: 0.8 });
+      const material = new LineBasicMaterial({ color, transparent: true, opacity: 0.8 });
       this.rays.add(new LineSegments(geometry, material));
     }
   }

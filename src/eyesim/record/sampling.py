@@ -32,7 +32,8 @@ def transforms(sim) -> dict:
 
 
 def robot_state(robot) -> dict:
-    """eyesim.RobotState: odometry and speed (drives with V-omega control), encoders, battery."""
+    """eyesim.RobotState: odometry and speed (drives with V-omega control), encoders, battery, and
+    the signals of its parts (a bumper's)."""
     vw = robot.component(VwController)
     battery = robot.component(Battery)
     state = {
@@ -47,4 +48,7 @@ def robot_state(robot) -> dict:
         v, w = vw.measured_speed()
         state["odometry"] = {"x": float(x), "y": float(y), "phi": float(phi)}
         state["speed"] = {"v": float(v), "w": float(w)}
+    signals = {name: [value, unit] for c in robot.components for name, (value, unit) in c.signals().items()}
+    if signals:  # what the robot's parts give to plot (robot/component.py): [value, unit] by name
+        state["signals"] = signals
     return state

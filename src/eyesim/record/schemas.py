@@ -142,13 +142,18 @@ EYESIM = {
         "type": "object",
         "title": "eyesim.RobotState",
         "description": "What a robot knows about itself: odometry (m, rad), measured speed (m/s, rad/s), "
-        "encoder ticks by encoder number, battery voltage",
+        "encoder ticks by encoder number, battery voltage, signals of its parts",
         "properties": {
             "robot": _ROBOT,
             "odometry": {"type": ["object", "null"], "properties": {"x": _NUMBER, "y": _NUMBER, "phi": _NUMBER}},
             "speed": {"type": ["object", "null"], "properties": {"v": _NUMBER, "w": _NUMBER}},
             "encoders": {"type": "object", "additionalProperties": {"type": "integer"}},
             "battery": _NULLABLE_NUMBER,
+            "signals": {
+                "type": "object",
+                "description": "what the robot's parts give to plot (a bumper's bumper.<id>): [value, unit] by name",
+                "additionalProperties": {"type": "array", "prefixItems": [_NUMBER, {"type": "string"}]},
+            },
         },
         "required": ["robot"],
     },

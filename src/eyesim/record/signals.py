@@ -1,5 +1,6 @@
-"""Signals for plots: named time series of a robot's pose, odometry, speeds, encoders, battery and
-PSD readings, from a recording or the live history (docs/recording.md, "Plots").
+"""Signals for plots: named time series of a robot's pose, odometry, speeds, encoders, battery, PSD
+readings and the signals its parts give (a bumper's bumper.<id>), from a recording or the live
+history (docs/recording.md, "Plots").
 
 A source gives `robot_ids`, `robot_track(id) -> (times_us, poses (N, 7))`, `states[id]` and
 `psd[id]` (lists of (time_us, message)); a signal id is "robot/<id>/<name>"."""
@@ -32,6 +33,7 @@ def catalogue(source) -> list[dict]:
             names += [(f"encoder.{n}", "ticks") for n in state.get("encoders", {})]
             if state.get("battery") is not None:
                 names.append(("battery", "V"))
+            names += [(name, unit) for name, (_, unit) in state.get("signals", {}).items()]
         psd_ids = sorted({reading["psd"] for _, reading in source.psd.get(robot_id, ()) if "distance_mm" in reading})
         names += [(f"psd.{n}", "mm") for n in psd_ids]
         signals += [
@@ -68,7 +70,7 @@ def series(source, signal_id: str) -> tuple[list[float], list[float]] | None:
             if str(r["psd"]) == name[4:] and "distance_mm" in r
         ]
         return _thin(np.array([t for t, _ in readings]) / 1e6, np.array([v for _, v in readings], dtype=float))
-    pick = _state_value(name)
+    pick = _state_value(name) or _part_signal(source, robot_id, name)
     if pick is None:
         return None
     rows = [(t, pick(s)) for t, s in source.states.get(robot_id, ())]
@@ -92,6 +94,15 @@ def _state_value(name: str):
     if name == "battery":
         return lambda s: s.get("battery")
     return None
+
+
+def _part_signal(source, robot_id: int, name: str):
+    """How to read a signal one of the robot's parts gives (robot/component.py); None when none
+    of them gives one of that name."""
+    states = source.states.get(robot_id) or []
+    if not states or name not in states[-1][1].get("signals", {}):
+        return None
+    return lambda s: s.get("signals", {}).get(name, (None,))[0]
 
 
 def _thin(times: np.ndarray, values: np.ndarray) -> tuple[list[float], list[float]]:

@@ -40,6 +40,37 @@ class Component:
         """Emit what changed since the last tick on `events` (eyesim.core.events); `again`: also what
         did not (a browser has just connected)."""
 
+    # -- how it shows itself to the viewer, the recorder, the plots and the robot editor; these
+    # name no component, so a new part kind shows up there with no edit to them -------------------
+    recorded_ops: frozenset[int] = frozenset()  # RoBIOS op codes whose answers `recorded` keeps
+
+    def overlay(self) -> list[dict]:
+        """What the viewer draws of it now (scene setting VIS): lines from a common origin, each
+        entry {"kind", "origin", "ends"} (world, m; `ends` flat x, y, z ...), optionally with its
+        "color" (RGB 0..255) and its sensor id."""
+        return []
+
+    def signals(self) -> dict[str, tuple[float, str]]:
+        """Values to plot, sampled with the robot's state: {name: (value, unit)}."""
+        return {}
+
+    def recorded(self, op: int, args: tuple, reply: tuple) -> tuple[str, object] | None:
+        """What a recording keeps of a request the simulator answered (an op of `recorded_ops`):
+        (its robot channel, a JSON object or an image's pixels), or None."""
+        return None
+
+    def editor_view(self) -> dict:
+        """What the robot editor draws over the built robot; a list value adds to the list of
+        that name (several PSDs), another value is the entry of that name."""
+        return {}
+
+    def readings(self) -> dict:
+        """The robot editor's test drive: what it reads now, by the read-out's name."""
+        return {}
+
+    def settings_changed(self, settings) -> None:
+        """The running scene's settings changed (the viewer's settings panel)."""
+
 
 def named(reference: str):
     """What a declaration names as "module:name" (a drive's wheel component, a part's component

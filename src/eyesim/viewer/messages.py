@@ -20,8 +20,6 @@ from eyesim.robot.components.analog_io import AnalogInputs
 from eyesim.robot.components.battery import Battery
 from eyesim.robot.components.digital_io import LINES, DigitalLines
 from eyesim.robot.components.lcd import Lcd
-from eyesim.robot.components.lidar import LidarScanner
-from eyesim.robot.components.psd import MAX_RANGE_MM, PsdSensor
 from eyesim.scene.drives import drive_of
 from eyesim.viewer.mesh_message import has_mesh, mesh_url
 
@@ -177,25 +175,15 @@ def pose(thing_id: int, pos: list[float], quat: list[float], battery_volts: floa
 
 
 def sensor_rays(robots) -> list[dict]:
-    """Per robot and sensor kind: the beams' common origin (PSDs: one entry each, with the PSD's
-    id) and the points where they end (m, world frame); a beam that hits nothing ends at the
-    sensor's range."""
-    rays = []
-    for robot in robots:
-        for sensor in robot.components_of(PsdSensor):
-            origin, direction, hit = sensor.beam()
-            end = origin + direction * (hit if hit is not None else MAX_RANGE_MM / 1000)
-            rays.append(
-                {"robot": robot.id, "kind": "psd", "psd": sensor.id, "origin": _rounded(origin), "ends": _rounded(end)}
-            )
-        scanner = robot.component(LidarScanner)
-        if scanner is not None and scanner.last_scan is not None:
-            origin, directions, distances = scanner.last_scan
-            ends = origin + directions * (distances[:, None] / 1000.0)
-            rays.append(
-                {"robot": robot.id, "kind": "lidar", "origin": _rounded(origin), "ends": _rounded(ends.reshape(-1))}
-            )
-    return rays
+    """What the robots' components draw (their `overlay`, robot/component.py): per entry, lines
+    from a common origin to each of its ends (m, world frame), such as a PSD's beam, a lidar's
+    last scan or a pressed bumper."""
+    return [
+        {"robot": robot.id, **{key: _rounded(v) if isinstance(v, np.ndarray) else v for key, v in entry.items()}}
+        for robot in robots
+        for component in robot.components
+        for entry in component.overlay()
+    ]
 
 
 def _rounded(values: np.ndarray) -> list[float]:

@@ -22,7 +22,6 @@ from pathlib import Path
 from aiohttp import web
 
 from eyesim.programs import toolchain
-from eyesim.robot.components.psd import PsdSensor
 from eyesim.viewer import messages
 from eyesim.web import program_files
 from eyesim.web.route_bodies import BadBody, checked_body
@@ -268,13 +267,13 @@ class ProgramControl:
 
 def apply_settings(sim, **changes) -> None:
     """New settings for the running scene, on the simulation thread: the scene description
-    (what a save writes) and the PSDs, whose noise restarts from the seed."""
+    (what a save writes) and the components that follow them (the PSDs, whose noise restarts
+    from the seed)."""
     settings = dataclasses.replace(sim.scene.settings, **changes)
     sim.scene = dataclasses.replace(sim.scene, settings=settings)
     for robot in sim.robots:
         for component in robot.components:
-            if isinstance(component, PsdSensor):
-                component.set_noise(settings.psd_noise, settings.seed)
+            component.settings_changed(settings)
 
 
 def _run_compiler(command: list[str], cwd: Path) -> subprocess.CompletedProcess:

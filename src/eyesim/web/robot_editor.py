@@ -35,9 +35,6 @@ from PIL import Image
 
 from eyesim.core.clock import REALTIME, Clock
 from eyesim.physics.units import mm
-from eyesim.robot.components.camera import Camera
-from eyesim.robot.components.lidar import LidarScanner
-from eyesim.robot.components.psd import PsdSensor
 from eyesim.robot.components.vw import VwController
 from eyesim.scene import builtins, json_format, paths
 from eyesim.scene.description import Location, Pose, RobotPlacement, RobotType, Scene, Wall, World
@@ -65,7 +62,9 @@ ARENA = 3000.0  # mm: the test drive's square arena (at least)
 ARENA_START = 0.35  # of the arena's width: where the robot starts, facing the inner wall
 ANSWER_TIMEOUT = 10.0  # s a test-drive request waits for the simulation thread
 IDLE_STOP = 60.0  # s without a state request (the tab was closed): the test drive stops
-CAMERA_SIZE = (160, 120)  # the test drive's camera image
+# What the editor always draws over the built robot (the page's defaults, none drawn); the robot's
+# components fill it in (their `editor_view`, robot/component.py).
+NOTHING_DRAWN = {"psds": [], "lidar": None, "camera": None}
 
 
 class EditorError(Exception):
@@ -289,41 +288,35 @@ def preview_of(sim, mesh: str) -> dict:
 
 
 def sensors(sim) -> dict:
-    """What the editor draws over the built robot: the poses, each PSD's beam, the lidar's scan
-    plane and the camera's view (world frame, m)."""
-    robot = sim.robots[0]
-    psds = []
-    for sensor in robot.components_of(PsdSensor):
-        origin, direction, hit = sensor.beam()
-        psds.append(
-            {
-                "id": sensor.id,
-                "name": sensor.spec.name,
-                "origin": _list(origin),
-                "direction": _list(direction),
-                "hit": None if hit is None else round(float(hit), 4),
-            }
-        )
-    lidar = None
-    scanner = robot.component(LidarScanner)
-    if scanner is not None and robot.type.lidar is not None:
-        if scanner.last_scan is None:
-            scanner.scan()  # the preview's: where the beams start and which way they go
-        origin, directions, _ = scanner.last_scan
-        lidar = {"origin": _list(origin), "directions": _list(directions), "points": len(directions)}
-    camera = None
-    cam = robot.component(Camera)
-    if cam is not None:
-        view = cam.view(*CAMERA_SIZE)
-        camera = {
-            "position": _list(view.position),
-            "forward": _list(view.forward),
-            "up": _list(view.up),
-            "fov": view.fov,
-            "aspect": CAMERA_SIZE[0] / CAMERA_SIZE[1],
-            "fisheye": view.fisheye,
-        }
-    return {"snapshot": messages.snapshot(sim), "psds": psds, "lidar": lidar, "camera": camera}
+    """What the editor draws over the built robot: the poses and what its components show (each
+    PSD's beam, the lidar's scan plane, the camera's view; world frame, m)."""
+    drawn = _gathered(sim.robots[0], "editor_view", NOTHING_DRAWN)
+    return {"snapshot": messages.snapshot(sim), **drawn}
+
+
+def _gathered(robot, hook: str, start: dict) -> dict:
+    """The components' answers to a hook that returns named entries (robot/component.py): a list
+    adds to the list of its name, another value is the entry; arrays as rounded lists, images as
+    JPEG (base64)."""
+    gathered = {name: list(value) if isinstance(value, list) else value for name, value in start.items()}
+    for component in robot.components:
+        for name, value in getattr(component, hook)().items():
+            if isinstance(value, list):
+                gathered.setdefault(name, []).extend(_plain_values(v) for v in value)
+            elif isinstance(value, dict) and isinstance(gathered.get(name), dict):
+                gathered[name].update(_plain_values(value))
+            else:
+                gathered[name] = _plain_values(value)
+    return gathered
+
+
+def _plain_values(value):
+    """Arrays as rounded lists, an image (height x width x 3 bytes) as JPEG; in dicts too."""
+    if isinstance(value, dict):
+        return {key: _plain_values(v) for key, v in value.items()}
+    if isinstance(value, np.ndarray):
+        return _jpeg(value) if value.dtype == np.uint8 and value.ndim == 3 else _list(value)
+    return value
 
 
 def _list(values) -> list[float]:
@@ -394,18 +387,10 @@ class TestDrive:
     def state(self, sim) -> dict:
         self.last_seen = time.monotonic()
         robot = sim.robots[0]
-        readings = {
-            "psd": {str(s.id): s.distance_mm() for s in robot.components_of(PsdSensor)},
-            "servos": sorted(robot.servos),
-            "motors": sorted(robot.motors),
-        }
-        scanner = robot.component(LidarScanner)
-        if scanner is not None and robot.type.lidar is not None:
-            readings["lidar"] = scanner.scan().tolist()  # before sensors(): it draws this scan
-        cam = robot.component(Camera)
-        if cam is not None:
-            cam.start(*CAMERA_SIZE)
-            readings["camera"] = _jpeg(cam.capture())
+        # the readings first: sensors() draws the lidar scan they take
+        readings = _gathered(
+            robot, "readings", {"psd": {}, "servos": sorted(robot.servos), "motors": sorted(robot.motors)}
+        )
         vw = robot.component(VwController)
         if vw is not None:
             v, w = vw.measured_speed()
@@ -496,7 +481,12 @@ class RobotEditor:
         origin = self._origin(body)
         async with self.lock:
             floor = max(PREVIEW_FLOOR, 3 * max(robot.length, robot.width))
-            sim = await _off_loop(build, resolved_model(robot, origin), floor)
+            try:
+                sim = await _off_loop(build, resolved_model(robot, origin), floor)
+            except ValueError:  # a robot with errors may not build (two bumpers on one line)
+                if not any(p["kind"] == "error" for p in problems):
+                    raise
+                return {"problems": problems, "preview": None}
             if self.preview is not None:
                 self.preview.close()
             self.preview = sim

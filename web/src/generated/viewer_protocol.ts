@@ -759,20 +759,25 @@ export function parseBodyPose(value: unknown, what: string): BodyPose {
   return objectOf(record(value, what), what, {id: [(v: unknown, w: string) => num(v, w, true, undefined, undefined, false, false), true, undefined], pos: [parseVec3, true, undefined], quat: [parseQuat, true, undefined], battery: [(v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), false, undefined]}) as unknown as BodyPose;
 }
 
-/** Beams of one robot's sensor(s) from a common origin. */
+/** What one of a robot's parts draws: lines from a common origin (a PSD's beam, a lidar's scan, a pressed bumper). */
 export interface SensorRays {
   /** robot id (1..) */
   robot: number;
-  kind: "psd" | "lidar";
+  /** the part kind that draws it (psd, lidar, bumper ...) */
+  kind: string;
   /** a PSD beam's sensor id as PSDGet takes it */
   psd?: number;
+  /** the id of the part that draws it, for other kinds */
+  id?: number;
+  /** the lines' colour; without it, the kind's (PSD red, lidar green, other grey) */
+  color?: Rgb;
   origin: Vec3;
   /** flat [x, y, z, ...] end points (m) */
   ends: number[];
 }
 
 export function parseSensorRays(value: unknown, what: string): SensorRays {
-  return objectOf(record(value, what), what, {robot: [(v: unknown, w: string) => num(v, w, true, 1, 1000000, false, false), true, undefined], kind: [(v: unknown, w: string) => literal(v, ["psd", "lidar"] as const, w), true, undefined], psd: [(v: unknown, w: string) => num(v, w, true, undefined, undefined, false, false), false, undefined], origin: [parseVec3, true, undefined], ends: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), false, undefined, undefined) as number[], true, undefined]}) as unknown as SensorRays;
+  return objectOf(record(value, what), what, {robot: [(v: unknown, w: string) => num(v, w, true, 1, 1000000, false, false), true, undefined], kind: [(v: unknown, w: string) => str(v, w, undefined, undefined, /^[a-z][a-z0-9_]*$/), true, undefined], psd: [(v: unknown, w: string) => num(v, w, true, undefined, undefined, false, false), false, undefined], id: [(v: unknown, w: string) => num(v, w, true, undefined, undefined, false, false), false, undefined], color: [parseRgb, false, undefined], origin: [parseVec3, true, undefined], ends: [(v: unknown, w: string) => list(v, w, (v: unknown, w: string) => num(v, w, false, undefined, undefined, false, false), false, undefined, undefined) as number[], true, undefined]}) as unknown as SensorRays;
 }
 
 export interface DigitalLine {

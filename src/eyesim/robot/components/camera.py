@@ -12,12 +12,14 @@ import numpy as np
 
 from eyesim.physics import render, render_worker
 from eyesim.physics.units import mm
+from eyesim.protocol import generated as g
 from eyesim.robot.actuators import Servo
 from eyesim.robot.component import Component
 from eyesim.scene.description import CameraSpec
 
 MAX_FOV = 170.0  # degrees: wider views cannot be drawn by a pinhole (nor resampled into a fisheye)
 SERVO_RATE = 300.0  # degrees per second a pan or tilt servo turns (a fast hobby servo)
+EDITOR_IMAGE = (160, 120)  # the robot editor's test drive takes images this size
 
 
 class Camera(Component):
@@ -94,6 +96,31 @@ class Camera(Component):
             raise RuntimeError(f"the camera image could not be drawn:\n{frame.error}")
         self.taken(frame)
         return self.image
+
+    # -- how it shows itself (robot/component.py) --------------------------------------------------
+    recorded_ops = frozenset((g.OP_CAM_GET, g.OP_CAM_GET_GRAY))
+
+    def recorded(self, op: int, args: tuple, reply: tuple) -> tuple[str, object] | None:
+        """The image the program took (CAMGet, CAMGetGray: the viewer's colour one)."""
+        return None if self.image is None else ("camera", self.image.copy())
+
+    def editor_view(self) -> dict:
+        """Where it is and looks, and its field of view."""
+        view = self.view(*EDITOR_IMAGE)
+        return {
+            "camera": {
+                "position": np.asarray(view.position),
+                "forward": np.asarray(view.forward),
+                "up": np.asarray(view.up),
+                "fov": view.fov,
+                "aspect": EDITOR_IMAGE[0] / EDITOR_IMAGE[1],
+                "fisheye": view.fisheye,
+            }
+        }
+
+    def readings(self) -> dict:
+        self.start(*EDITOR_IMAGE)
+        return {"camera": self.capture()}
 
 
 class CameraServo(Servo):

@@ -9,6 +9,7 @@ import numpy as np
 
 from eyesim.physics.units import mm
 from eyesim.physics.visual_mesh import RAY_GROUPS
+from eyesim.protocol import generated as g
 from eyesim.robot.component import Component
 from eyesim.scene.description import LidarSpec
 
@@ -104,6 +105,48 @@ class LidarScanner(Component):
         self.last_scan = (origin.copy(), directions, distances)
         self._cached = (self.world.state_version, local, distances)
         return distances
+
+    # -- how it shows itself (robot/component.py) --------------------------------------------------
+    recorded_ops = frozenset((g.OP_LIDAR_GET,))
+
+    def overlay(self) -> list[dict]:
+        """The beams of the last scan a program took, to what each hit or to the end of its range."""
+        if self.last_scan is None:
+            return []
+        origin, directions, distances = self.last_scan
+        ends = origin + directions * (distances[:, None] / 1000.0)
+        return [{"kind": "lidar", "origin": origin, "ends": ends.reshape(-1)}]
+
+    def recorded(self, op: int, args: tuple, reply: tuple) -> tuple[str, object] | None:
+        """A LIDARGet's scan as a foxglove.LaserScan: beams counter-clockwise from the first, in the
+        robot's frame, the scan plane turned about y by the tilt."""
+        distances_mm = reply[1]
+        points = len(distances_mm)
+        step = math.radians(self.field) / points
+        start = (points // 2) * step  # beam 0 is the most counter-clockwise (docs/api/lidar.md)
+        tilt = math.radians(self.tilt)
+        return "lidar", {
+            "pose": {
+                "position": {"x": 0.0, "y": 0.0, "z": float(self.mount[2])},
+                "orientation": {"x": 0.0, "y": math.sin(tilt / 2), "z": 0.0, "w": math.cos(tilt / 2)},
+            },
+            "start_angle": start,
+            "end_angle": start - (points - 1) * step,
+            "ranges": [d / 1000 for d in distances_mm],
+            "intensities": [],
+        }
+
+    def editor_view(self) -> dict:
+        """The scan plane: where the beams start and which way they go (a robot with a lidar line)."""
+        if self.robot.type.lidar is None:
+            return {}
+        if self.last_scan is None:
+            self.scan()
+        origin, directions, _ = self.last_scan
+        return {"lidar": {"origin": origin, "directions": directions, "points": len(directions)}}
+
+    def readings(self) -> dict:
+        return {"lidar": self.scan().tolist()} if self.robot.type.lidar is not None else {}
 
     def _look_past_own_parts(
         self, origin: np.ndarray, directions: np.ndarray, geoms: np.ndarray, dists: np.ndarray

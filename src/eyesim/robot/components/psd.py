@@ -10,6 +10,7 @@ import numpy as np
 
 from eyesim.physics.units import mm, to_mm
 from eyesim.physics.visual_mesh import RAY_GROUPS
+from eyesim.protocol import generated as g
 from eyesim.robot.component import Component
 from eyesim.scene.description import PsdSpec
 
@@ -98,6 +99,41 @@ class PsdSensor(Component):
     def raw(self) -> int:
         """What PSDGetRaw reports: the reading's distance through the sensor curve."""
         return raw_value(self.distance_mm())
+
+    # -- how it shows itself (robot/component.py) --------------------------------------------------
+    recorded_ops = frozenset((g.OP_PSD_GET, g.OP_PSD_GET_RAW))
+
+    def overlay(self) -> list[dict]:
+        """Its beam, to what it hits or to the end of its range."""
+        origin, direction, hit = self.beam()
+        end = origin + direction * (hit if hit is not None else MAX_RANGE_MM / 1000)
+        return [{"kind": "psd", "psd": self.id, "origin": origin, "ends": end}]
+
+    def recorded(self, op: int, args: tuple, reply: tuple) -> tuple[str, object] | None:
+        """The readings the program asked for of this sensor (PSDGet, PSDGetRaw)."""
+        if args[0] != self.id:
+            return None
+        return "psd", {"psd": self.id, ("distance_mm" if op == g.OP_PSD_GET else "raw"): reply[0]}
+
+    def editor_view(self) -> dict:
+        origin, direction, hit = self.beam()
+        return {
+            "psds": [
+                {
+                    "id": self.id,
+                    "name": self.spec.name,
+                    "origin": origin,
+                    "direction": direction,
+                    "hit": None if hit is None else round(float(hit), 4),
+                }
+            ]
+        }
+
+    def readings(self) -> dict:
+        return {"psd": {str(self.id): self.distance_mm()}}
+
+    def settings_changed(self, settings) -> None:
+        self.set_noise(settings.psd_noise, settings.seed)
 
 
 def beam_quat(heading: float, pitch: float) -> list[float]:
