@@ -9,6 +9,7 @@ they never run). The modules of a part kind's folder (`eyesim.parts.<kind>`) cou
 """
 
 import ast
+import re
 from collections import defaultdict
 from pathlib import Path
 
@@ -210,3 +211,46 @@ def test_every_module_of_a_part_folder_has_a_role():
     assert modules and modules <= set(ROLES), f"modules of no known role: {sorted(modules - set(ROLES))}"
     assert part_of("eyesim.parts.bumper.declaration") == "scene"
     assert part_of("eyesim.parts.bumper.component") == "robot"
+
+
+# The modules that show the robots' parts (viewer, recorder, plots, editors, settings) learn about
+# them only through the components' hooks (robot/component.py), so a new part kind shows up there
+# without an edit: they import no module of a part kind.
+SHOWING = [
+    "eyesim.viewer.messages",
+    "eyesim.record.sampling",
+    "eyesim.record.signals",
+    "eyesim.record.mcap_recorder",
+    "eyesim.web.robot_editor",
+    "eyesim.web.program_control",
+]
+COMPONENT_REFERENCE = re.compile(r"^(eyesim(?:\.\w+)+):\w+$")  # a declaration names its components so
+
+
+def part_kind_modules() -> set[str]:
+    """The part kinds' declarations (scene/parts/<kind>.py, parts/<kind>/) and the component modules
+    they name ("module:create")."""
+    declarations = [p for p in (PACKAGE / "scene" / "parts").glob("*.py") if p.stem not in ("__init__", "part")]
+    folders = list((PACKAGE / PART_FOLDERS).glob("*/*.py"))
+    modules = {module_name(path) for path in declarations + folders}
+    for path in declarations + folders:
+        for node in ast.walk(ast.parse(path.read_text(), str(path))):
+            if isinstance(node, ast.Constant) and isinstance(node.value, str):
+                found = COMPONENT_REFERENCE.match(node.value)
+                if found:
+                    modules.add(found.group(1))
+    return modules
+
+
+def test_what_shows_the_parts_names_no_part_kind():
+    kinds = part_kind_modules()
+    assert {"eyesim.robot.components.psd", "eyesim.robot.components.lidar", "eyesim.scene.parts.psd"} <= kinds
+    assert {"eyesim.parts.bumper.component", "eyesim.parts.bumper.declaration"} <= kinds
+    paths = {module_name(path) for path in PACKAGE.rglob("*.py")}
+    assert set(SHOWING) <= paths, f"not modules (any more?): {sorted(set(SHOWING) - paths)}"
+    named = {
+        f"{module} imports {target} ({', '.join(places)})"
+        for (module, target), places in module_imports().items()
+        if module in SHOWING and target in kinds
+    }
+    assert not named, "these name a part kind instead of asking the components' hooks:\n" + "\n".join(sorted(named))

@@ -18,15 +18,13 @@ import queue
 import threading
 from pathlib import Path
 
+import numpy as np
 from mcap.writer import CompressionType, Writer
 from PIL import Image
 
 from eyesim import __version__
-from eyesim.protocol import generated as g
 from eyesim.record import sampling, schemas
-from eyesim.robot.components.camera import Camera
 from eyesim.robot.components.lcd import Lcd
-from eyesim.robot.components.lidar import LidarScanner
 from eyesim.viewer import mesh_message, messages
 
 DEFAULT_POSE_RATE = 100.0  # Hz of simulation time: the CSV's 10 ms rows
@@ -36,7 +34,6 @@ JPEG_QUALITY = 85
 FLOOR_TEXTURE = "floor-texture"  # attachment names; meshes are "mesh/<kind>/<id>"
 COMMAND_GROUPS = ("vw", "motor", "servo")
 VIEWER_EVENTS = ("menu", "console", "program", "serial", "io", "audio", "reset")
-_CAMERA_OPS = (g.OP_CAM_GET, g.OP_CAM_GET_GRAY)
 
 
 def _is_command(op) -> bool:
@@ -248,32 +245,20 @@ class Recorder:
             )
 
     def on_request(self, robot, request, reply) -> None:
-        """A request the simulator answered at once: keep the readings and commands worth seeing."""
+        """A request the simulator answered at once: keep the readings and commands worth seeing
+        (the readings are what the robot's components keep of their ops: robot/component.py)."""
         op, now = request.op, request.time_us
-        if op.code == g.OP_PSD_GET:
-            reading = {"robot": robot.id, "psd": request.args[0], "distance_mm": reply[0]}
-        elif op.code == g.OP_PSD_GET_RAW:
-            reading = {"robot": robot.id, "psd": request.args[0], "raw": reply[0]}
-        elif op.code == g.OP_LIDAR_GET:
-            self._put(schemas.robot_topic(robot.id, "lidar"), now, _laser_scan(robot, now, reply[1]))
-            return
-        elif op.code in _CAMERA_OPS:
-            camera = robot.component(Camera)
-            if camera is not None and camera.image is not None:
-                pixels, frame = camera.image.copy(), schemas.robot_frame(robot.id)
-                self._put(
-                    schemas.robot_topic(robot.id, "camera"), now, lambda: _image_message(now, frame, pixels, "jpeg")
-                )
-            return
-        elif _is_command(op):
+        if _is_command(op):
             args = {name: value for (name, _), value in zip(op.request, request.args)}
             self._put(
                 schemas.robot_topic(robot.id, "command"), now, _json({"robot": robot.id, "op": op.name, "args": args})
             )
             return
-        else:
-            return
-        self._put(schemas.robot_topic(robot.id, "psd"), now, _json(reading))
+        for component in robot.components:
+            if op.code in component.recorded_ops:
+                kept = component.recorded(op.code, request.args, reply)
+                if kept is not None:
+                    self._put(schemas.robot_topic(robot.id, kept[0]), now, _reading(robot.id, now, *kept))
 
     def on_event(self, message: dict) -> None:
         kind, now = message["type"], self.sim.time_us
@@ -369,28 +354,15 @@ class Recorder:
         )
 
 
-def _laser_scan(robot, time_us: int, distances_mm: list[int]) -> bytes:
-    """foxglove.LaserScan of a LIDARGet: beams counter-clockwise from the first, in the robot's frame,
-    the scan plane turned about y by the tilt."""
-    scanner = robot.component(LidarScanner)
-    points = len(distances_mm)
-    step = math.radians(scanner.field) / points
-    start = (points // 2) * step  # beam 0 is the most counter-clockwise (docs/api/lidar.md)
-    tilt = math.radians(scanner.tilt)
-    return _json(
-        {
-            "timestamp": schemas.stamp(time_us),
-            "frame_id": schemas.robot_frame(robot.id),
-            "pose": {
-                "position": {"x": 0.0, "y": 0.0, "z": float(scanner.mount[2])},
-                "orientation": {"x": 0.0, "y": math.sin(tilt / 2), "z": 0.0, "w": math.cos(tilt / 2)},
-            },
-            "start_angle": start,
-            "end_angle": start - (points - 1) * step,
-            "ranges": [d / 1000 for d in distances_mm],
-            "intensities": [],
-        }
-    )
+def _reading(robot_id: int, time_us: int, channel: str, value):
+    """A component's reading as its channel's message: an image's pixels as a JPEG (encoded on the
+    writer thread), a foxglove message stamped and placed on the robot's frame, another with the robot."""
+    frame = schemas.robot_frame(robot_id)
+    if isinstance(value, np.ndarray):
+        return lambda: _image_message(time_us, frame, value, "jpeg")
+    if schemas.schema_of(schemas.robot_topic(robot_id, channel)).startswith("foxglove."):
+        return _json({"timestamp": schemas.stamp(time_us), "frame_id": frame, **value})
+    return _json({"robot": robot_id, **value})
 
 
 def _log_line(message: dict) -> tuple[int, str] | None:
