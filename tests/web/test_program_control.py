@@ -28,6 +28,20 @@ CRASH = """#include <stdio.h>
 #include "eyebot.h"
 int main(void) { printf("about to crash\\n"); fflush(stdout); volatile int *p = 0; *p = 1; return 0; }
 """
+LIT_PIXELS = """#include <stdio.h>
+#include "eyebot.h"
+int main(void) {
+  int lit = 0;
+  for (int y = 0; y < 16; y++)
+    for (int x = 0; x < 80; x++)
+      if (LCDGetPixel(x, y) != 0) lit++;
+  FILE *f = fopen("lit.txt", "a");
+  fprintf(f, "%d\\n", lit);
+  fclose(f);
+  LCDPrintf("hello there\\n");
+  for (;;) OSWait(100);
+}
+"""
 BROKEN = """#include "eyebot.h"
 int main(void) {
   int x = ;
@@ -63,6 +77,7 @@ def wait_for_state(url: str, robot: int, wanted: str, timeout: float = 30) -> di
 def simulator(tmp_path):
     (tmp_path / "wait.c").write_text(WAIT_FOREVER)
     (tmp_path / "crash.c").write_text(CRASH)
+    (tmp_path / "lit.c").write_text(LIT_PIXELS)
     (tmp_path / "src").mkdir()
     (tmp_path / "src" / "broken.c").write_text(BROKEN)
     (tmp_path / "traceback.py").write_text(
@@ -100,6 +115,25 @@ def test_a_compiled_program_starts_stops_and_restarts(simulator):
     # Restarting a running program stops it first; the new one gets the robot.
     status, state = call(url, "/api/programs/restart", {"robot": 1})
     assert status == 200 and state["state"] == "running"
+
+
+def test_a_started_program_finds_a_blank_lcd(simulator):
+    """What the program before drew is gone when the next one starts: each run counts the lit
+    pixels of the LCD's first text row when it starts, then prints there."""
+    url, folder = simulator
+    status, result = call(url, "/api/programs/compile", {"root": 0, "path": "lit.c"})
+    assert status == 200 and result["ok"], result["output"]
+    lit = folder / "lit.txt"
+    for runs in (1, 2, 3):
+        route = "/api/programs/start" if runs == 1 else "/api/programs/restart"
+        body = {"robot": 1, "root": 0, "path": "lit"} if runs == 1 else {"robot": 1}
+        status, state = call(url, route, body)
+        assert status == 200 and state["state"] == "running"
+        deadline = time.monotonic() + 60
+        while not (lit.exists() and len(lit.read_text().split()) == runs):
+            assert time.monotonic() < deadline, "the program did not report what it found"
+            time.sleep(0.05)
+    assert lit.read_text().split() == ["0", "0", "0"]
 
 
 def test_a_crash_says_why(simulator):

@@ -188,6 +188,8 @@ class Requests:
             raise commands.CommandError(program_token.refusal(token, sim.program_token_file), g.ERR_BAD_TOKEN)
         robot = self._choose_robot(selector)
         session.robot, session.program, session.pid = robot, program, pid
+        for component in robot.components:
+            component.program_started()
         session.local_time_us = sim.time_us
         sim.expected_programs.discard(robot.id)
         log.info("%s connected", session.name)

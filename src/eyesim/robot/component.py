@@ -40,6 +40,10 @@ class Component:
         """Emit what changed since the last tick on `events` (eyesim.core.events); `again`: also what
         did not (a browser has just connected)."""
 
+    def program_started(self) -> None:
+        """A new program has taken the robot (its handshake): what belongs to the program before it,
+        not to the robot, starts afresh."""
+
     # -- how it shows itself to the viewer, the recorder, the plots and the robot editor; these
     # name no component, so a new part kind shows up there with no edit to them -------------------
     recorded_ops: frozenset[int] = frozenset()  # RoBIOS op codes whose answers `recorded` keeps

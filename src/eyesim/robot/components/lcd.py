@@ -119,6 +119,11 @@ class Lcd(Component):
         self.menu_entries = [MenuEntry() for _ in range(4)]
         self.version += 1
 
+    def program_started(self) -> None:
+        """The screen, cursor, font and menu are the program's: the next one starts on a blank LCD,
+        not under the text the one before left (a restart from the page, a program run again)."""
+        self.reset()
+
     def publish(self, robot_id: int, events, again: bool) -> None:
         if again or self._published != self.version:
             self._published = self.version
