@@ -252,7 +252,7 @@ def outputs() -> dict[Path, str]:
         C_OUT: c_source(spec),
         C_VECTORS_OUT: c_vectors(spec, vectors),
         **layers.outputs(spec),
-        **generate_viewer.outputs(),
+        **generate_viewer.outputs(robios_constants.values_of(spec)),
     }
     files.update(robios_constants.outputs(spec, layers.HEADER, files[layers.HEADER]))  # its constants section
     return files

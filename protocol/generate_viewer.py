@@ -8,6 +8,10 @@
 - eyesim/protocol/viewer.schema.json: the schema itself, a copy the package carries as data for the
   server's checks (eyesim/protocol/channel_schema.py).
 
+Where the schema allows RoBIOS constants (the soft keys), it names them, `"x-robios-constants":
+["KEY1", ...]`, and both outputs get their values from protocol.json (an `enum`, and in TypeScript
+`ROBIOS_CONSTANTS`), so they are written down once.
+
 Used by protocol/generate.py (`make protocol`; `--check` reports stale outputs)."""
 
 from __future__ import annotations
@@ -45,6 +49,7 @@ SUPPORTED = {
     "x-discriminator",
 }
 ROUTE_KEYS = {"description", "request", "response"}
+CONSTANTS = "x-robios-constants"
 
 RUNTIME = r"""
 export class MalformedMessage extends Error {}
@@ -371,6 +376,34 @@ def _js(value) -> str:
     return "undefined" if value is None else json.dumps(value)
 
 
-def outputs() -> dict[Path, str]:
-    text = SCHEMA.read_text()
-    return {TS_OUT: Generator(json.loads(text)).typescript(), PACKAGE_COPY: text}
+def with_constants(schema, values: dict[str, int | str], named: dict[str, int | str]):
+    """`schema` with each `x-robios-constants` list of names replaced by an `enum` of their values
+    (collected in `named`)."""
+    if isinstance(schema, list):
+        return [with_constants(item, values, named) for item in schema]
+    if not isinstance(schema, dict):
+        return schema
+    out = {key: with_constants(value, values, named) for key, value in schema.items() if key != CONSTANTS}
+    if CONSTANTS in schema:
+        unknown = [name for name in schema[CONSTANTS] if name not in values]
+        if unknown:
+            raise SystemExit(f"{SCHEMA}: {CONSTANTS} names {', '.join(unknown)}, which protocol.json does not define")
+        named.update((name, values[name]) for name in schema[CONSTANTS])
+        out["enum"] = [values[name] for name in schema[CONSTANTS]]
+    return out
+
+
+def outputs(constants: dict[str, int | str]) -> dict[Path, str]:
+    """The TypeScript and the package's copy, with the RoBIOS constants the schema names filled in
+    from `constants` (protocol.json's, by name)."""
+    named: dict[str, int | str] = {}
+    schema = with_constants(json.loads(SCHEMA.read_text()), constants, named)
+    typescript = Generator(schema).typescript() + "\n" + constants_table(named)
+    return {TS_OUT: typescript, PACKAGE_COPY: json.dumps(schema) + "\n"}
+
+
+def constants_table(named: dict[str, int | str]) -> str:
+    lines = "".join(f"  {name}: {json.dumps(value)},\n" for name, value in named.items())
+    return "/** The RoBIOS constants the schema names (protocol.json's values). */\n" + (
+        f"export const ROBIOS_CONSTANTS = {{\n{lines}}} as const;\n"
+    )

@@ -46,6 +46,12 @@ INT_MAX = 0x7FFFFFFF
 def load(spec: dict) -> list[dict]:
     """The constants groups, checked: one kind of value each, unique names, 32-bit integers, and
     expressions of earlier constants only."""
+    values_of(spec)
+    return spec.get("constants", [])
+
+
+def values_of(spec: dict) -> dict[str, int | str]:
+    """Every constant's value by its name, checked as `load` says."""
     values: dict[str, int | str] = {}
     groups = spec.get("constants", [])
     for group in groups:
@@ -58,7 +64,7 @@ def load(spec: dict) -> list[dict]:
             if len(kinds) != 1:
                 raise SystemExit(f"{where}: give exactly one of {', '.join(KINDS)}")
             values[name] = evaluate(entry, values, where)
-    return groups
+    return values
 
 
 def evaluate(entry: dict, earlier: dict, where: str) -> int | str:

@@ -16,6 +16,7 @@ from eyesim.protocol import constants as sim_constants
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "protocol"))
 import generate  # noqa: E402  (protocol/generate.py)
+import generate_viewer  # noqa: E402
 import layers  # noqa: E402
 import robios_constants  # noqa: E402
 
@@ -168,9 +169,33 @@ def test_the_generator_refuses_a_constant_it_cannot_write(entry, message):
         robios_constants.load(changed)
 
 
-def test_the_viewer_schemas_soft_keys_are_the_key_constants():
-    """The one copy left outside Python and C: the viewer schema (JSON, for the browser too) lists
-    the soft keys a key command may press; they must be KEY1..KEY4."""
-    schema = json.loads((ROOT / "protocol" / "viewer.schema.json").read_text())
-    keys = schema["$defs"]["KeyCommand"]["properties"]["key"]["enum"]
-    assert keys == [sim_constants.KEY1, sim_constants.KEY2, sim_constants.KEY3, sim_constants.KEY4]
+def test_the_viewer_schema_names_the_soft_keys_and_gets_their_values_from_protocol_json():
+    """The viewer schema (JSON, for the browser too) names the soft keys a key command may press;
+    the server's copy and the TypeScript get KEY1..KEY4's values from protocol.json."""
+    source = json.loads((ROOT / "protocol" / "viewer.schema.json").read_text())
+    assert source["$defs"]["KeyCommand"]["properties"]["key"] == {
+        "description": "KEY1..KEY4",
+        "x-robios-constants": ["KEY1", "KEY2", "KEY3", "KEY4"],
+    }
+    from eyesim.protocol.channel_schema import SCHEMA
+
+    keys = [sim_constants.KEY1, sim_constants.KEY2, sim_constants.KEY3, sim_constants.KEY4]
+    assert SCHEMA["$defs"]["KeyCommand"]["properties"]["key"]["enum"] == keys
+    changed = {
+        name: value * 16
+        for name, value in robios_constants.values_of(json.loads(generate.SPEC.read_text())).items()
+        if isinstance(value, int)
+    }
+    outputs = generate_viewer.outputs(changed)
+    assert "KEY3: 64," in outputs[generate_viewer.TS_OUT]
+    assert json.loads(outputs[generate_viewer.PACKAGE_COPY])["$defs"]["KeyCommand"]["properties"]["key"]["enum"] == [
+        16,
+        32,
+        64,
+        128,
+    ]
+
+
+def test_a_schema_naming_an_unknown_constant_is_refused():
+    with pytest.raises(SystemExit, match="x-robios-constants names KEY9, which protocol.json does not define"):
+        generate_viewer.with_constants({"enum-ish": {"x-robios-constants": ["KEY1", "KEY9"]}}, {"KEY1": 1}, {})

@@ -30,8 +30,10 @@ def test_the_route_table_is_generated_from_the_schema_and_goes_stale_with_it():
     """Routes (each route's request and answer types) and ROUTE_ANSWERS come from the schema's
     `routes`: the committed file has every route, and a route added to the schema changes it."""
     import generate_viewer  # protocol/, on the path for layers below
+    import robios_constants
 
-    schema = json.loads(generate_viewer.SCHEMA.read_text())
+    constants = robios_constants.values_of(json.loads((ROOT / "protocol/protocol.json").read_text()))
+    schema = generate_viewer.with_constants(json.loads(generate_viewer.SCHEMA.read_text()), constants, {})
     committed = generate_viewer.TS_OUT.read_text()
     for route, entry in schema["routes"].items():
         answer = entry["response"]["$ref"].removeprefix("#/$defs/")
@@ -55,11 +57,21 @@ def test_every_operation_but_the_sessions_own_has_a_handler():
 
 
 def test_a_handler_module_may_only_handle_its_own_groups_operations(monkeypatch):
-    from eyesim.commands import psd
+    from eyesim.parts.psd import calls
 
-    monkeypatch.setitem(psd.HANDLERS, "LIDAR_GET", psd.HANDLERS["PSD_GET"])
-    with pytest.raises(RuntimeError, match="eyesim.commands.psd handles LIDAR_GET, an operation of group lidar"):
+    monkeypatch.setitem(calls.HANDLERS, "LIDAR_GET", calls.HANDLERS["PSD_GET"])
+    with pytest.raises(RuntimeError, match="eyesim.parts.psd.calls handles LIDAR_GET, an operation of group lidar"):
         commands._build_registry()
+
+
+def test_a_part_folder_finds_its_handlers_and_two_modules_may_not_share_a_group(monkeypatch):
+    from eyesim.parts.psd import calls
+
+    modules = commands.handler_modules()
+    assert modules["psd"] is calls and modules["lcd"].__name__ == "eyesim.commands.lcd"
+    monkeypatch.setattr(calls, "GROUP", "lcd")
+    with pytest.raises(RuntimeError, match="eyesim.commands.lcd and eyesim.parts.psd.calls both handle group lcd"):
+        commands.handler_modules()
 
 
 def test_operation_codes_are_unique_and_fit_the_header():

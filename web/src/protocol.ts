@@ -6,6 +6,7 @@
 import {
   MalformedMessage,
   parseServerMessage as parseMessage,
+  ROBIOS_CONSTANTS,
   type KeyCommand,
   type MenuMessage,
   type MeshBody,
@@ -23,7 +24,12 @@ export type MenuLabels = MenuMessage["labels"];
 
 /** Soft keys KEY1..KEY4 as RoBIOS numbers them. */
 export type KeyCode = KeyCommand["key"];
-export const KEY_CODES: readonly KeyCode[] = [1, 2, 4, 8];
+export const KEY_CODES: readonly KeyCode[] = [
+  ROBIOS_CONSTANTS.KEY1,
+  ROBIOS_CONSTANTS.KEY2,
+  ROBIOS_CONSTANTS.KEY3,
+  ROBIOS_CONSTANTS.KEY4,
+];
 
 const SIZE_LENGTH: Record<ObjectShape, number> = { box: 3, sphere: 1, cylinder: 2, capsule: 2 };
 

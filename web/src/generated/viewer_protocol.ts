@@ -1767,3 +1767,11 @@ export const ROUTE_ANSWERS: { [R in RouteName]: (value: unknown, what: string) =
   "POST /robot-editor/api/drive/stop": parseDone,
   "GET /robot-editor/api/mesh/{which}": parseMeshBody,
 };
+
+/** The RoBIOS constants the schema names (protocol.json's values). */
+export const ROBIOS_CONSTANTS = {
+  KEY1: 1,
+  KEY2: 2,
+  KEY3: 4,
+  KEY4: 8,
+} as const;
