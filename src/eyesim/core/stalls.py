@@ -10,6 +10,8 @@ import threading
 import time
 from typing import Callable
 
+from eyesim.net.session import Deferred
+
 STALL_SECONDS = 3.0  # of wall time without simulated time moving, before saying why
 LOOK_EVERY = 0.25  # s of wall time between looks at the clock
 
@@ -41,6 +43,17 @@ def waits(sim, seconds: float) -> list[str]:
             f"robot {robot_id}: its program has not connected for {seconds:.0f} s; deterministic time waits for it"
         )
     return lines
+
+
+def making_replies(sim) -> bool:
+    """Whether the simulator itself is still making a reply a program waits for (a camera image on
+    the render thread): time waits for the simulator then, not for a program, and a slow frame
+    (a 5 MP image drawn in software on a loaded machine) is no stall."""
+    return any(
+        isinstance(pending, Deferred) and not pending.work.done()
+        for session in sim.sessions
+        for _, pending in session.pending
+    )
 
 
 def hung_status(lines: list[str]) -> str:
@@ -94,7 +107,7 @@ class StallWatch:
         calls for a key the programs wait in (None: neither holds still, or the run is paused)."""
 
         def look(sim):
-            if sim.clock.paused:
+            if sim.clock.paused or making_replies(sim):
                 return None
             if self.keys_can_come:
                 return sim.time_us
