@@ -1,6 +1,6 @@
 """What the simulation tells its observers (the viewer, the console): events and snapshots.
 
-Messages follow docs/viewer-channel.md and are built by eyesim/viewer/messages.py; `lcd`, `camera`,
+Messages follow docs/viewer-channel.md and are built by eyesim/viewer/messages.py and plain_messages.py; `lcd`, `camera`,
 `reset`, `input` and `edit` are events of the simulation that listeners turn into what they need. Events are ordered and never dropped; snapshots replace
 each other. Listeners are called on the simulation thread and must return quickly."""
 
@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import Protocol
 
-from eyesim.viewer import messages
+from eyesim.viewer import messages, plain_messages
 
 
 class Listener(Protocol):
@@ -43,7 +43,7 @@ class EventBus:
         for listener in self.listeners:
             listener.on_snapshot(message)
 
-    # -- the event kinds (their messages: eyesim/viewer/messages.py) -------------------------------
+    # -- the event kinds (their messages: eyesim/viewer/messages.py, plain_messages.py) -----------
     def reset(self) -> None:
         """The world went back to the scene's initial state."""
         self.emit({"type": "reset"})
@@ -60,16 +60,16 @@ class EventBus:
         self.emit(messages.menu(robot))
 
     def console(self, robot_id: int, stream: str, text: str) -> None:
-        self.emit(messages.console(robot_id, stream, text))
+        self.emit(plain_messages.console(robot_id, stream, text))
 
     def program(self, robot_id: int, event: str, name: str, exit_code: int | None) -> None:
-        self.emit(messages.program(robot_id, event, name, exit_code))
+        self.emit(plain_messages.program(robot_id, event, name, exit_code))
 
     def serial(self, robot_id: int, interface: int, data: bytes) -> None:
-        self.emit(messages.serial(robot_id, interface, data))
+        self.emit(plain_messages.serial(robot_id, interface, data))
 
     def sound(self, robot_id: int, sound: dict) -> None:
-        self.emit(messages.audio(robot_id, sound))
+        self.emit(plain_messages.audio(robot_id, sound))
 
     def input(self, robot_id: int, kind: str, **values) -> None:
         """Input from outside (key, touch, irtv, serial, digital, analog): for recorders, not browsers."""

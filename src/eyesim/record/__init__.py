@@ -4,11 +4,26 @@
     with Recorder(sim, "run.mcap"):
         sim.run(until=10)
 
-See docs/recording.md."""
+See docs/recording.md. The names below are imported when first used, so that reading a recording
+(`eyesim export`, `plot`, `render`, `replay`) does not load the simulator (MuJoCo) that making
+one needs."""
 
-from eyesim.record.lcd_images import save_lcd_images
-from eyesim.record.mcap_recorder import Recorder
-from eyesim.record.recording import Recording, RecordingError
-from eyesim.record.trajectory_csv import TrajectoryRecorder
+from __future__ import annotations
 
-__all__ = ["Recorder", "Recording", "RecordingError", "TrajectoryRecorder", "save_lcd_images"]
+import importlib
+
+_MODULES = {
+    "Recorder": "eyesim.record.mcap_recorder",
+    "Recording": "eyesim.record.recording",
+    "RecordingError": "eyesim.record.recording",
+    "TrajectoryRecorder": "eyesim.record.trajectory_csv",
+    "save_lcd_images": "eyesim.record.lcd_images",
+}
+
+__all__ = sorted(_MODULES)
+
+
+def __getattr__(name: str):
+    if name not in _MODULES:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    return getattr(importlib.import_module(_MODULES[name]), name)

@@ -21,7 +21,7 @@ import numpy as np
 from mcap.reader import SeekingReader
 
 from eyesim.record import schemas
-from eyesim.viewer import messages
+from eyesim.viewer import plain_messages
 
 MAGIC = b"\x89MCAP0\r\n"
 IMAGE_CHANNELS = ("lcd", "camera")
@@ -210,14 +210,14 @@ class Recording:
             pose = self.pose(schemas.robot_frame(robot_id), index)
             if pose is not None:
                 state = self._latest(self.states.get(robot_id, ()), sample_us)
-                robots.append(messages.pose(robot_id, pose[0], pose[1], state.get("battery") if state else None))
+                robots.append(plain_messages.pose(robot_id, pose[0], pose[1], state.get("battery") if state else None))
         objects = [
-            messages.pose(o["id"], p[0], p[1])
+            plain_messages.pose(o["id"], p[0], p[1])
             for o in scene["objects"]
             if (p := self.pose(schemas.object_frame(o["id"]), index)) is not None
         ]
         bodies = [
-            messages.pose(b["id"], p[0], p[1])
+            plain_messages.pose(b["id"], p[0], p[1])
             for b in scene["bodies"]
             if (p := self.pose(schemas.body_frame(b["id"]), index)) is not None
         ]
@@ -225,7 +225,7 @@ class Recording:
         if scene["settings"].get("vis"):
             at = bisect.bisect_right(self._ray_times, time_us) - 1
             rays = self.rays[at][1] if at >= 0 else []
-        return messages.snapshot_of(time_us / 1e6, robots, objects, bodies, rays)
+        return plain_messages.snapshot_of(time_us / 1e6, robots, objects, bodies, rays)
 
     @staticmethod
     def _latest(samples, time_us: int):

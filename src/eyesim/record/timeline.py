@@ -21,7 +21,7 @@ from collections import defaultdict
 from PIL import Image
 
 from eyesim.record import signals
-from eyesim.viewer import messages as viewer_messages
+from eyesim.viewer import plain_messages as viewer_messages
 
 LATEST_KINDS = ("menu", "program", "io")  # only the last one before a time matters
 STREAM_KINDS = ("console", "serial")  # everything before a time matters

@@ -27,7 +27,7 @@ from aiohttp import WSMsgType, web
 from eyesim.paths import CASE_RECORDING as RECORDING
 from eyesim.protocol import channel_schema
 from eyesim.record.recording import Recording, RecordingError
-from eyesim.viewer import messages
+from eyesim.viewer import plain_messages
 from eyesim.record import timeline
 from eyesim.web.access import AccessPolicy
 from eyesim.web.server import MAX_COMMAND_BYTES, TEXTURE_TYPES, _reject_constant, serve_app, static_file, viewer_url
@@ -156,7 +156,7 @@ class ReplayServer:
         await ws.send_str(json.dumps(source.scene_message(segment)))
         await ws.send_str(
             json.dumps(
-                messages.timeline("replay", self.recording.path.name, source.start_us / 1e6, source.end_us / 1e6)
+                plain_messages.timeline("replay", self.recording.path.name, source.start_us / 1e6, source.end_us / 1e6)
             )
         )
         await ws.send_str(await cursor.frame(source, source.start_us))
@@ -225,7 +225,7 @@ class ReplayServer:
 
 
 def _error(text: str) -> str:
-    return json.dumps(messages.error(text))
+    return json.dumps(plain_messages.error(text))
 
 
 def _image_kind(data: bytes) -> str | None:

@@ -26,7 +26,7 @@ from eyesim.paths import STATIC_DIR
 from eyesim.protocol import generated as g
 from eyesim.protocol import channel_schema
 from eyesim.record.sampling import robot_state
-from eyesim.viewer import mesh_message, messages
+from eyesim.viewer import mesh_message, messages, plain_messages
 from eyesim.record import timeline
 from eyesim.web.access import AccessPolicy
 from eyesim.record.live_history import LiveHistory
@@ -207,7 +207,7 @@ class ViewerHub:
 
     async def attach(self, browser: Browser) -> None:
         browser.add_event(json.dumps(self._scene_message()))
-        browser.add_event(json.dumps(messages.timeline("live")))
+        browser.add_event(json.dumps(plain_messages.timeline("live")))
         self._present(browser)
         first = not self.browsers
         self.browsers.add(browser)
@@ -246,7 +246,7 @@ class ViewerHub:
             if message["type"] == "live":
                 browser.reviewing = False
                 browser.cursor = timeline.FrameCursor()
-                browser.add_event(messages.frame_text(self.sim.time, self.history.robot_ids, []))
+                browser.add_event(plain_messages.frame_text(self.sim.time, self.history.robot_ids, []))
                 self._present(browser)
                 return
             if message["type"] == "seek":
@@ -254,10 +254,12 @@ class ViewerHub:
             try:
                 reply = await timeline.answer(self.history, browser.cursor, message)
             except ValueError as error:
-                reply = json.dumps(messages.error(str(error)))
+                reply = json.dumps(plain_messages.error(str(error)))
             except Exception:  # a bad value the checks missed: this browser gets an error, nobody else notices
                 log.exception("viewer command %.200r failed", message)
-                reply = json.dumps(messages.error(f"{message['type']}: the simulator could not carry out this command"))
+                reply = json.dumps(
+                    plain_messages.error(f"{message['type']}: the simulator could not carry out this command")
+                )
             browser.add_event(reply)
 
     def detach(self, browser: Browser) -> None:
@@ -331,11 +333,11 @@ def _publish_io(sim) -> None:
 
 
 def _lcd_message(robot: int, pixels) -> str:
-    return json.dumps(messages.lcd(robot, pixels))
+    return json.dumps(plain_messages.lcd(robot, pixels))
 
 
 def _camera_message(robot: int, pixels) -> str:
-    return json.dumps(messages.camera(robot, pixels))
+    return json.dumps(plain_messages.camera(robot, pixels))
 
 
 async def serve_app(app: web.Application, host: str, port: int) -> tuple[web.AppRunner, int]:
@@ -477,7 +479,7 @@ class ViewerServer:
                 else:
                     continue
                 if error:
-                    browser.add_event(json.dumps(messages.error(error)))
+                    browser.add_event(json.dumps(plain_messages.error(error)))
         finally:
             hub.detach(browser)
             pump.cancel()
