@@ -16,60 +16,6 @@ from eyesim.robot.components.serial_ports import INTERFACES, SerialPorts
 AT = r"@([0-9]+(?:\.[0-9]*)?)"
 
 
-def add_arguments(parser) -> None:
-    parser.add_argument(
-        "--key",
-        action="append",
-        default=[],
-        metavar="ROBOT:KEY@SECONDS",
-        help="press a soft key at a simulation time, e.g. 1:KEY1@2.5; repeatable",
-    )
-    parser.add_argument(
-        "--touch",
-        action="append",
-        default=[],
-        metavar="ROBOT:X,Y@SECONDS",
-        help="touch the LCD at pixel X,Y at a simulation time, e.g. 1:100,50@2; repeatable",
-    )
-    parser.add_argument(
-        "--irtv",
-        action="append",
-        default=[],
-        metavar="ROBOT:BUTTON@SECONDS",
-        help="press an IR remote button (0-9, RED, GREEN, YELLOW, BLUE, LEFT, RIGHT, UP, DOWN, "
-        "OK, POWER) at a simulation time, e.g. 1:OK@1.5; repeatable",
-    )
-    parser.add_argument(
-        "--serial",
-        action="append",
-        default=[],
-        metavar="ROBOT:INTERFACE:TEXT@SECONDS",
-        help="bytes arriving on a serial interface at a simulation time; TEXT may use \\n, \\r, "
-        "\\xNN; e.g. '1:0:hello\\n@2'; repeatable",
-    )
-    parser.add_argument(
-        "--serial-loopback",
-        action="append",
-        default=[],
-        metavar="ROBOT:INTERFACE",
-        help="plug a loopback into a serial interface: what the robot sends comes back",
-    )
-    parser.add_argument(
-        "--digital",
-        action="append",
-        default=[],
-        metavar="ROBOT:LINE=LEVEL@SECONDS",
-        help="drive digital input line 1..16 to 0 or 1 (- lets go) at a simulation time; repeatable",
-    )
-    parser.add_argument(
-        "--analog",
-        action="append",
-        default=[],
-        metavar="ROBOT:CHANNEL=VALUE@SECONDS",
-        help="set analog channel 1..8 to 0..1023 at a simulation time; repeatable",
-    )
-
-
 def _serial_text(text: str) -> str:
     """The option's text with its Python escapes (\\n, \\xNN) resolved, one character per byte."""
     try:

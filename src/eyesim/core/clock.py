@@ -13,6 +13,9 @@ import time
 REALTIME = "realtime"
 DETERMINISTIC = "deterministic"
 MAX_SPEED = math.inf
+# Simulation time an ordinary call takes (docs/running.md#call-time): EyeSim answered in a few ms,
+# and lab programs that count loop iterations instead of time were written against that.
+DEFAULT_CALL_TIME_US = 4000
 
 
 class Clock:

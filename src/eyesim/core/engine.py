@@ -21,7 +21,7 @@ import queue
 import time
 import traceback
 
-from eyesim.core.clock import Clock
+from eyesim.core.clock import DEFAULT_CALL_TIME_US, Clock
 from eyesim.core.events import EventBus
 from eyesim.core.requests import Requests
 from eyesim.core.schedules import SNAPSHOT_PERIOD, schedule_for
@@ -36,9 +36,6 @@ log = logging.getLogger("eyesim")
 
 DEFAULT_STEP_US = 2000  # physics step: 2 ms
 TICK_US = 10000  # components' periodic work (Component.tick) runs every 10 ms, RoBIOS's timer rate
-# Simulation time an ordinary call takes (docs/running.md#call-time): EyeSim answered in a few ms,
-# and lab programs that count loop iterations instead of time were written against that.
-DEFAULT_CALL_TIME_US = 4000
 
 
 class Simulation:
