@@ -75,6 +75,7 @@ def test_render_takes_speed_fps_size_and_a_time_range(tour):
         (["-o", "x.mp4", "--fps", "0"], "expected 1 to 120"),
         (["-o", "x.mp4", "--speed", "-1"], "positive factor"),
         (["-o", "x.mp4", "--end", "99"], "goes from 0 to"),
+        (["-o", "missing/x.mp4"], "cannot write missing/x.mp4: the folder"),
     ],
 )
 def test_render_says_what_is_wrong_with_its_options(tour, args, message):

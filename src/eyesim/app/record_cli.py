@@ -74,9 +74,21 @@ def open_recording(path: str, command: str):
         return None
 
 
+def missing_folder(output: str, command: str) -> bool:
+    """Says so when the folder an output file goes into does not exist (ffmpeg would only report
+    a broken pipe, or an invalid argument on Windows)."""
+    folder = Path(output).absolute().parent
+    if folder.is_dir():
+        return False
+    print(f"eyesim {command}: cannot write {output}: the folder {folder} does not exist", file=sys.stderr)
+    return True
+
+
 def export_main(args) -> int:
     from eyesim.record.csv_export import export_csv
 
+    if missing_folder(args.csv, "export"):
+        return 2
     recording = open_recording(args.recording, "export")
     if recording is None:
         return 2
@@ -100,6 +112,8 @@ def replay_main(args) -> int:
 def render_main(args) -> int:
     from eyesim.record.video import render
 
+    if missing_folder(args.output, "render"):
+        return 2
     recording = open_recording(args.recording, "render")
     if recording is None:
         return 2
@@ -121,6 +135,8 @@ def render_main(args) -> int:
 def plot_main(args) -> int:
     from eyesim.record.path_plot import plot_paths
 
+    if missing_folder(args.output, "plot"):
+        return 2
     recording = open_recording(args.recording, "plot")
     if recording is None:
         return 2
