@@ -31,7 +31,7 @@ ENTRY_POINTS = {"__init__", "__main__"}  # the public API and `python -m eyesim`
 # A part kind's folder (eyesim/parts/<kind>/) cuts across the layers: each of its modules sits on the
 # layer of its role, and its packages (docstrings only) on the lowest.
 PART_FOLDERS = "parts"
-ROLES = {"declaration": "scene", "component": "robot"}
+ROLES = {"declaration": "scene", "component": "robot", "calls": "commands"}
 
 
 def part_of(module: str) -> str | None:
@@ -206,11 +206,13 @@ def test_the_scan_sees_lazy_and_relative_imports():
 
 
 def test_every_module_of_a_part_folder_has_a_role():
-    """A declaration is read with the robot files, below the physics; a component is the robot's."""
+    """A declaration is read with the robot files, below the physics; a component is the robot's;
+    the RoBIOS handlers (calls) sit with the other handlers, above the robot."""
     modules = {path.stem for path in (PACKAGE / PART_FOLDERS).glob("*/*.py")} - {"__init__"}
     assert modules and modules <= set(ROLES), f"modules of no known role: {sorted(modules - set(ROLES))}"
     assert part_of("eyesim.parts.bumper.declaration") == "scene"
     assert part_of("eyesim.parts.bumper.component") == "robot"
+    assert part_of("eyesim.parts.psd.calls") == "commands"
 
 
 # The modules that show the robots' parts (viewer, recorder, plots, editors, settings) learn about
@@ -230,7 +232,7 @@ COMPONENT_REFERENCE = re.compile(r"^(eyesim(?:\.\w+)+):\w+$")  # a declaration n
 def part_kind_modules() -> set[str]:
     """The part kinds' declarations (scene/parts/<kind>.py, parts/<kind>/) and the component modules
     they name ("module:create")."""
-    declarations = [p for p in (PACKAGE / "scene" / "parts").glob("*.py") if p.stem not in ("__init__", "part")]
+    declarations = [p for p in (PACKAGE / "scene" / "parts").glob("*.py") if p.stem != "__init__"]
     folders = list((PACKAGE / PART_FOLDERS).glob("*/*.py"))
     modules = {module_name(path) for path in declarations + folders}
     for path in declarations + folders:
@@ -244,7 +246,7 @@ def part_kind_modules() -> set[str]:
 
 def test_what_shows_the_parts_names_no_part_kind():
     kinds = part_kind_modules()
-    assert {"eyesim.robot.components.psd", "eyesim.robot.components.lidar", "eyesim.scene.parts.psd"} <= kinds
+    assert {"eyesim.parts.psd.component", "eyesim.robot.components.lidar", "eyesim.parts.psd.declaration"} <= kinds
     assert {"eyesim.parts.bumper.component", "eyesim.parts.bumper.declaration"} <= kinds
     paths = {module_name(path) for path in PACKAGE.rglob("*.py")}
     assert set(SHOWING) <= paths, f"not modules (any more?): {sorted(set(SHOWING) - paths)}"

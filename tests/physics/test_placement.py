@@ -7,7 +7,7 @@ from pathlib import Path
 from support.rooms import square_room, write_scene
 
 from eyesim.core.engine import Simulation
-from eyesim.robot.components.psd import PsdSensor
+from eyesim.parts.psd.component import PsdSensor
 from eyesim.scene import load_scene
 
 

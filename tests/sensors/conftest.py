@@ -2,12 +2,10 @@
 
 from __future__ import annotations
 
-import shutil
 from pathlib import Path
 
 import pytest
-from support.programs import program_builder, run_headless
-from support.rooms import Run
+from support.programs import program_builder, scene_runner
 
 PROGRAMS = Path(__file__).resolve().parent / "programs"
 
@@ -20,20 +18,6 @@ def programs(tmp_path_factory):
 
 @pytest.fixture
 def run_scene(tmp_path):
-    """run_scene(scene, {robot: program}, *args, env=None) -> Run of `eyesim run --headless`.
-
-    Programs are copied next to the scene first: they run in their own directory, so files they
-    write land in the test's tmp_path."""
-
-    def run(
-        scene: Path, robot_programs: dict[int, Path], *args: str, env: dict | None = None, timeout: float = 120
-    ) -> Run:
-        options = []
-        for robot, program in robot_programs.items():
-            local = tmp_path / program.name
-            if not local.exists():
-                shutil.copy(program, local)
-            options += ["--program", f"{robot}={local}"]
-        return Run(run_headless(str(scene), *options, *args, cwd=tmp_path, timeout=timeout, env=env))
-
-    return run
+    """run_scene(scene, {robot: program}, *args, env=None) -> Run of `eyesim run --headless` in the
+    test's tmp_path (support.programs.scene_runner)."""
+    return scene_runner(tmp_path)

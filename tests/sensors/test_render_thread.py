@@ -8,9 +8,11 @@ asserted: a renderer held at a gate keeps the render thread busy for as long as 
 import os
 import socket
 import threading
+from pathlib import Path
 
 import pytest
 from support.client import ProgramClient, RemoteError
+from support.programs import program_builder
 from support.scenes import arena
 from support.rooms import square_room, write_scene
 from support.simulator import running_simulation
@@ -19,6 +21,13 @@ from eyesim.physics import renderer_choice
 from eyesim.protocol import generated as g
 
 CAM5MP = 5
+PSD_PROGRAMS = Path(__file__).resolve().parents[1] / "parts" / "psd" / "programs"
+
+
+@pytest.fixture(scope="module")
+def psd_report(tmp_path_factory):
+    """The PSD tests' program that reads a robot's PSDs, built once: the robot that films nothing."""
+    return program_builder(PSD_PROGRAMS, tmp_path_factory.mktemp("psd-programs"))("psd_report")
 
 
 class GatedRenderer:
@@ -152,22 +161,22 @@ def test_a_frame_that_cannot_be_drawn_is_an_error_reply_and_the_simulation_goes_
     assert "handler for CAM_GET_GRAY from test (robot 1" in caplog.text and "the renderer broke" in caplog.text
 
 
-def snapshot_run(tmp_path, programs, run_scene, renderer: str, name: str):
+def snapshot_run(tmp_path, programs, psd_report, run_scene, renderer: str, name: str):
     env = dict(os.environ, **({"MUJOCO_GL": "disable"} if renderer == "raycast" else {}))
     world = square_room() + ["700 1300 1300 1300 10 300 255 0 0", "1400 500 1400 900 10 300 0 0 255"]
     scene = write_scene(tmp_path, world, ["S4 600 600 30", "S4 1000 900 200", "S4 1500 1500 225"])
-    program, watcher = programs("camera_drive"), programs("psd_report")
+    program = programs("camera_drive")
     run = run_scene(
-        scene, {1: program, 2: program, 3: watcher}, "--clock", "deterministic", "--record", f"{name}.csv", env=env
+        scene, {1: program, 2: program, 3: psd_report}, "--clock", "deterministic", "--record", f"{name}.csv", env=env
     )
     assert run.returncode == 0, run.stdout + run.stderr
     return run, (tmp_path / f"{name}.csv").read_bytes()
 
 
 @pytest.mark.parametrize("renderer", ["opengl", "raycast"])
-def test_deterministic_runs_with_cameras_repeat_bit_identically(tmp_path, programs, run_scene, renderer):
-    first, first_path = snapshot_run(tmp_path, programs, run_scene, renderer, "first")
-    second, second_path = snapshot_run(tmp_path, programs, run_scene, renderer, "second")
+def test_deterministic_runs_with_cameras_repeat_bit_identically(tmp_path, programs, psd_report, run_scene, renderer):
+    first, first_path = snapshot_run(tmp_path, programs, psd_report, run_scene, renderer, "first")
+    second, second_path = snapshot_run(tmp_path, programs, psd_report, run_scene, renderer, "second")
     for robot in (1, 2, 3):
         assert first.lines(robot) == second.lines(robot)
     assert first_path == second_path

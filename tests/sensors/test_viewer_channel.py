@@ -9,7 +9,7 @@ from support.scenes import arena
 from eyesim.core.engine import Simulation
 from eyesim.robot.components.camera import Camera
 from eyesim.robot.components.lidar import LidarScanner
-from eyesim.robot.components.psd import PsdSensor
+from eyesim.parts.psd.component import PsdSensor
 from eyesim.scene.description import Settings
 from eyesim.viewer.messages import snapshot
 

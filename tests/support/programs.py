@@ -5,9 +5,12 @@ from __future__ import annotations
 import contextlib
 import csv
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
+
+from support.rooms import Run
 
 PROGRAMS = Path(__file__).resolve().parents[1] / "e2e" / "programs"
 
@@ -41,6 +44,26 @@ def run_headless(*args: str, cwd: Path, timeout: float = 120, env: dict | None =
         timeout=timeout,
         env=env,
     )
+
+
+def scene_runner(directory: Path):
+    """run(scene, {robot: program}, *args, env=None, timeout=120) -> rooms.Run of `eyesim run --headless`.
+
+    Programs are copied into `directory` first and the simulator runs there: programs run in their
+    own directory, so files they write land in it."""
+
+    def run(
+        scene: Path, robot_programs: dict[int, Path], *args: str, env: dict | None = None, timeout: float = 120
+    ) -> Run:
+        options = []
+        for robot, program in robot_programs.items():
+            local = directory / program.name
+            if not local.exists():
+                shutil.copy(program, local)
+            options += ["--program", f"{robot}={local}"]
+        return Run(run_headless(str(scene), *options, *args, cwd=directory, timeout=timeout, env=env))
+
+    return run
 
 
 def read_trajectory(path: Path) -> dict[int, list[dict]]:

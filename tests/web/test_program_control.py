@@ -18,7 +18,7 @@ from support.scenes import arena  # noqa: E402
 
 from eyesim.core.clock import Clock  # noqa: E402
 from eyesim.core.engine import Simulation  # noqa: E402
-from eyesim.robot.components.psd import PsdSensor  # noqa: E402
+from eyesim.parts.psd.component import PsdSensor  # noqa: E402
 from eyesim.web.program_control import apply_settings  # noqa: E402
 
 WAIT_FOREVER = """#include "eyebot.h"

@@ -1,10 +1,12 @@
-"""Registry of RoBIOS operations: one handler module per RoBIOS group, looked up by op code.
+"""Registry of RoBIOS operations: handler modules by RoBIOS group, looked up by op code.
 
-The groups are protocol.json's: the operations of group `psd` are handled by the HANDLERS table
-of `eyesim.commands.psd`, so a new group is one new module here and needs no registry line (the
-session group, the handshake, is the engine's own). An operation that only calls one method of
-the robot's component declares it in protocol.json (`"calls": "Lcd.set_position"`) and has no
-handler function: `calling` makes its handler.
+The groups are protocol.json's. A part kind's folder holds its group's handlers
+(`eyesim/parts/psd/calls.py` serves group `psd`: its GROUP names the group, its HANDLERS table the
+operations); a group of the robot's computer has its module here, named after it
+(`eyesim.commands.lcd`). Both are found without a registry line (the session group, the
+handshake, is the engine's own). An operation that only calls one method of the robot's
+component declares it in protocol.json (`"calls": "Lcd.set_position"`) and has no handler
+function: `calling` makes its handler.
 
 A handler is `handler(sim, robot, request) -> reply values | Pending`; it raises CommandError for
 requests it cannot serve. The network layer never knows what an operation means."""
@@ -12,12 +14,17 @@ requests it cannot serve. The network layer never knows what an operation means.
 from __future__ import annotations
 
 import importlib
+import importlib.util
+import pkgutil
+from types import ModuleType
 
-import eyesim.robot.components  # noqa: F401  (every component class, for "calls" to name)
+import eyesim.parts
+import eyesim.robot.components  # noqa: F401  (the computer's component classes, for "calls" to name)
 from eyesim.commands.errors import CommandError, checked_arguments, component_of
 from eyesim.protocol import generated
 from eyesim.protocol.ops import OpSpec
-from eyesim.robot.component import Component
+from eyesim.robot.component import Component, named
+from eyesim.scene.parts import PARTS
 
 ENGINE_GROUP = "session"  # HELLO and THREADS: answered by the engine itself
 
@@ -65,10 +72,32 @@ def calling(op: OpSpec):
     return handler
 
 
-def _build_registry() -> dict:
-    registry = {}
+def handler_modules() -> dict[str, ModuleType]:
+    """The handler module of each group that has one: the `calls` module of a part kind's folder
+    (the group its GROUP names), else `eyesim.commands.<group>`."""
+    modules: dict[str, ModuleType] = {}
+    for folder in pkgutil.iter_modules(eyesim.parts.__path__):
+        name = f"{eyesim.parts.__name__}.{folder.name}.calls"
+        if folder.ispkg and importlib.util.find_spec(name):
+            module = importlib.import_module(name)
+            if module.GROUP in modules:
+                raise RuntimeError(f"{name} and {modules[module.GROUP].__name__} both handle group {module.GROUP}")
+            modules[module.GROUP] = module
     for group in sorted({op.group for op in generated.OPS.values()} - {ENGINE_GROUP}):
-        module = importlib.import_module(f"{__name__}.{group}")
+        name = f"{__name__}.{group}"
+        if importlib.util.find_spec(name):
+            if group in modules:
+                raise RuntimeError(f"{name} and {modules[group].__name__} both handle group {group}")
+            modules[group] = importlib.import_module(name)
+    return modules
+
+
+def _build_registry() -> dict:
+    for part in PARTS:  # the part kinds' component classes, for "calls" to name
+        for factory in part.components:
+            named(factory)
+    registry = {}
+    for group, module in handler_modules().items():
         for name, handler in module.HANDLERS.items():
             op = generated.OPS_BY_NAME[name]
             if op.group != group:
@@ -82,6 +111,13 @@ def _build_registry() -> dict:
     return registry
 
 
-HANDLERS = _build_registry()
+def __getattr__(name: str) -> dict:
+    """HANDLERS (op code -> handler), built at its first use: a part folder's `calls` imports this
+    package (its errors) before the registry imports it, so it cannot be built while importing."""
+    if name != "HANDLERS":
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    registry = globals()["HANDLERS"] = _build_registry()
+    return registry
+
 
 __all__ = ["HANDLERS", "CommandError"]

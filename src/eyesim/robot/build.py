@@ -121,13 +121,13 @@ def add_robot(
     placement: RobotPlacement,
     settings: Settings = Settings(),
 ) -> Robot:
-    from eyesim.robot.components import FACTORIES
+    from eyesim.robot.components import factories
 
     name = f"robot{robot_id}"
     robot = Robot(robot_id, robot_type, placement, body_name=name, mounted=mounted(robot_type))
     body = add_chassis(spec, name, robot_type, placement)
     context = BuildContext(spec, body, name, robot_type, robot, settings=settings)
-    for factory in FACTORIES:
+    for factory in factories():
         context.components.extend(factory(context))
     robot.components = context.components
     _finish_mass(spec, body, robot_type, context.parts_mass)

@@ -10,7 +10,7 @@ Every position below is already converted into these frames, whatever dialect th
 (see docs/file-formats.md); the only exception is a robot's mesh placement (`model_offset`,
 `model_rotation`), which stays in the mesh's own axes because it only concerns drawing the mesh.
 `RobotType` and the specs of its parts (PsdSpec, CameraSpec, Collider ...) are declared by the
-robot part kinds in scene/parts/, `Location` and `Diagnostic` by scene/diagnostics.py; all are
+robot part kinds (parts/<kind>/declaration.py, scene/parts/), `Location` and `Diagnostic` by scene/diagnostics.py; all are
 importable from here as well.
 """
 
@@ -18,13 +18,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from eyesim.parts.psd.declaration import PsdSpec
 from eyesim.scene.diagnostics import Diagnostic, Location
 from eyesim.scene.parts import RobotType
 from eyesim.scene.parts.arm import ArmSpec, GripperSpec, JointSpec
 from eyesim.scene.parts.body import Collider
 from eyesim.scene.parts.camera import CameraSpec
 from eyesim.scene.parts.lidar import LidarSpec
-from eyesim.scene.parts.psd import PsdSpec
 from eyesim.scene.parts.thrusters import ThrusterSpec
 from eyesim.scene.parts.water import BuoyancySpec, DragSpec
 from eyesim.scene.parts.wheels import SteeringSpec, WheelSpec

@@ -13,7 +13,7 @@ from eyesim.scene.description import Collider, Location, ObjectType
 from eyesim.scene.diagnostics import Diagnostics, quoted
 from eyesim.scene.keyword_reader import KeywordReader
 from eyesim.scene.lexer import Line, format_number, integer, number, quote_token, split_lines
-from eyesim.scene.parts.part import VR_AXIS, vr_to_robot
+from eyesim.parts.part import VR_AXIS, vr_to_robot
 
 SHAPES = {"box": 6, "sphere": 4, "capsule": 6, "cylinder": 6}
 FORMS = {

@@ -10,12 +10,12 @@ colliders) are in VR model space (X right, Y up, Z forward) unless the file says
 
 from __future__ import annotations
 
+from eyesim.parts.psd.declaration import is_integer
 from eyesim.scene.description import Location, RobotType
 from eyesim.scene.diagnostics import Diagnostics, quoted
 from eyesim.scene.lexer import Line, Token, split_lines
 from eyesim.scene.parts import KEYWORDS, PARTS
-from eyesim.scene.parts.part import PartReader
-from eyesim.scene.parts.psd import is_integer
+from eyesim.parts.part import PartReader
 from eyesim.scene.robot_type import finish_robot_type
 
 DIALECTS = ("eyesim", "eyesim6", "vr", "vr1")

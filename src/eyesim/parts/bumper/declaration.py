@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from eyesim.scene.lexer import Line, format_number
-from eyesim.scene.parts.part import Part, PartReader, coordinate, list_of, positive, record, whole
+from eyesim.parts.part import Part, PartReader, coordinate, list_of, positive, record, whole
 
 FIRST_LINE = 8  # bumper n is wired to digital input line 8 + n (lines 1..8 stay free for the program)
 MAX_ID = 8  # the I/O board has 16 lines

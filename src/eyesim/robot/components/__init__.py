@@ -37,9 +37,13 @@ COMPUTER = (
     irtv.create,
 )
 
-FACTORIES = (
-    drives.create,
-    vw.create,  # after the drive: it drives any drive with kinematics
-    *(named(name) for part in PARTS for name in part.components),
-    *COMPUTER,
-)
+
+def factories() -> tuple:
+    """The factories, in the order they build a robot. The parts' are looked up here, not when this
+    package is imported: a part's component may import a module of it (a bumper, digital_io)."""
+    return (
+        drives.create,
+        vw.create,  # after the drive: it drives any drive with kinematics
+        *(named(name) for part in PARTS for name in part.components),
+        *COMPUTER,
+    )

@@ -1,16 +1,18 @@
 """Registry of robot part kinds, and what is assembled from their declarations: the RobotType
 dataclass, the `.robi` keyword table and the published robot JSON Schema.
 
-Adding a part kind = one new module declaring its PART (scene/parts/part.py) + one line here;
-its physics is a component (robot/components/) and its RoBIOS calls a handler (commands/)."""
+Adding a part kind = one folder, parts/<kind>/ (its declaration.py declares its PART, see
+parts/part.py; its component.py what it does in the simulation; its calls.py its RoBIOS
+handlers), + one line here. Kinds not yet in a folder of their own are modules of this package."""
 
 from __future__ import annotations
 
 import dataclasses
 
 from eyesim.parts.bumper import declaration as bumper
-from eyesim.scene.parts import arm, body, camera, drive, lidar, psd, thrusters, water, wheels
-from eyesim.scene.parts.part import Part
+from eyesim.parts.psd import declaration as psd
+from eyesim.scene.parts import arm, body, camera, drive, lidar, thrusters, water, wheels
+from eyesim.parts.part import Part
 
 # In this order the reader finishes them (the arm sits on the chassis: after the body), their
 # checks run, the writer writes their lines and RobotType lists their fields.

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.lexer import Line, format_number, quote_token
-from eyesim.scene.parts.part import Part, PartReader, choice, coordinate, list_of, positive, record, ref, text, whole
+from eyesim.parts.part import Part, PartReader, choice, coordinate, list_of, positive, record, ref, text, whole
 
 
 @dataclass(frozen=True)

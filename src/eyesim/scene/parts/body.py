@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 
 from eyesim.scene.diagnostics import Location, quoted
 from eyesim.scene.lexer import LARGEST, Line, format_number, quote_token
-from eyesim.scene.parts.part import (
+from eyesim.parts.part import (
     VR_AXIS,
     Part,
     PartReader,

@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.lexer import Line, format_number, number
-from eyesim.scene.parts.part import Part, PartReader, between, coordinate, flag, numbers, record, ref, whole
+from eyesim.parts.part import Part, PartReader, between, coordinate, flag, numbers, record, ref, whole
 
 _SERVO = re.compile(r"SERVO(\d+)\(([^,()]+),([^,()]+)\)", re.IGNORECASE)
 

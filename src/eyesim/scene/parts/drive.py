@@ -6,7 +6,7 @@ from __future__ import annotations
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.drives import DRIVES, drive_named, drive_of
 from eyesim.scene.lexer import Line
-from eyesim.scene.parts.part import Part, PartReader, choice
+from eyesim.parts.part import Part, PartReader, choice
 from eyesim.scene.parts.wheels import DEFAULT_WHEELS
 
 DRIVE_CHOICES = ", ".join(drive.keyword for drive in DRIVES[:-1]) + f" or {DRIVES[-1].keyword}"

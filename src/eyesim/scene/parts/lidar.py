@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.lexer import Line, format_number
-from eyesim.scene.parts.part import Part, PartReader, between, record, ref, whole
+from eyesim.parts.part import Part, PartReader, between, record, ref, whole
 
 
 @dataclass(frozen=True)

@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from eyesim.scene.lexer import Line, format_number, quote_token
-from eyesim.scene.parts.part import Part, PartReader, coordinate, list_of, positive, record, text, whole
+from eyesim.parts.part import Part, PartReader, coordinate, list_of, positive, record, text, whole
 
 
 @dataclass(frozen=True)

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.lexer import Line, format_number
-from eyesim.scene.parts.part import Part, PartReader, at_least, coordinate, record, ref
+from eyesim.parts.part import Part, PartReader, at_least, coordinate, record, ref
 
 
 @dataclass(frozen=True)

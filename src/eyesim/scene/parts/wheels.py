@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.drives import drive_of
 from eyesim.scene.lexer import Line, format_number
-from eyesim.scene.parts.part import Part, PartReader, coordinate, positive, record, ref, whole
+from eyesim.parts.part import Part, PartReader, coordinate, positive, record, ref, whole
 
 
 @dataclass(frozen=True)

@@ -1,4 +1,4 @@
-"""PSD infrared distance sensors: one ray cast from the sensor's pose on the robot."""
+"""A PSD in the simulation: one ray cast from the sensor's pose on the robot."""
 
 from __future__ import annotations
 
@@ -8,11 +8,11 @@ import math
 import mujoco
 import numpy as np
 
+from eyesim.parts.psd.declaration import PsdSpec
 from eyesim.physics.units import mm, to_mm
 from eyesim.physics.visual_mesh import RAY_GROUPS
 from eyesim.protocol import generated as g
 from eyesim.robot.component import Component
-from eyesim.scene.description import PsdSpec
 
 MAX_RANGE_MM = 9999  # what PSDGet returns when nothing is within range
 # PSDGetRaw's sensor curve, a 10-bit reading falling with distance like a Sharp IR sensor's

@@ -7,7 +7,7 @@ import pytest
 from support.programs import build, run_headless
 from support.rooms import Run, square_room, write_scene
 
-from eyesim.robot.components.psd import eyesim6_numbering
+from eyesim.parts.psd.component import eyesim6_numbering
 from eyesim.scene import load_robot_type
 
 INNER = 5  # mm: the room's walls are 10 mm thick, centred on its edges

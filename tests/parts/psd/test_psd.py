@@ -8,7 +8,7 @@ from support.rooms import square_room, write_scene
 from support.scenes import arena
 
 from eyesim.core.engine import Simulation
-from eyesim.robot.components.psd import RAW_OFFSET, RAW_SCALE, PsdSensor, raw_value
+from eyesim.parts.psd.component import RAW_OFFSET, RAW_SCALE, PsdSensor, raw_value
 from eyesim.scene.description import Settings
 from eyesim.scene.diagnostics import Diagnostics
 from eyesim.scene.json_format import dumps, parse_json, to_json

@@ -1,7 +1,9 @@
-"""RoBIOS PSD group: infrared distance sensors."""
+"""RoBIOS PSD group: PSDGet and PSDGetRaw read a robot's sensor by its RoBIOS id."""
 
 from eyesim.commands.errors import CommandError
-from eyesim.robot.components.psd import PsdSensor
+from eyesim.parts.psd.component import PsdSensor
+
+GROUP = "psd"  # protocol.json's group of the operations below
 
 
 def _sensor(robot, psd_id: int) -> PsdSensor:

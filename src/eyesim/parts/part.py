@@ -1,12 +1,14 @@
 """What one kind of robot part declares, and the helpers its declarations share.
 
-A part kind (the PSDs, the camera, the wheels ...) owns its configuration in one module of this
-package: the fields it adds to a robot type and their spec dataclass, the `.robi` keywords it
-reads and the lines it writes, the JSON Schema of its fields and the checks of what was read.
-The `.robi` reader (scene/robi.py), the JSON reader and writer (scene/json_format.py), the robot
-type's checks (scene/robot_type.py) and the published robot schema all work from these
-declarations (registry: scene/parts/__init__.py). These modules need no physics: what a part
-does in the simulation lives in robot/components/.
+A part kind (the PSDs, the camera, the wheels ...) owns its configuration in one declaration
+module (`parts/<kind>/declaration.py`, or `scene/parts/<kind>.py` for the kinds not yet in a
+folder of their own): the fields it adds to a robot type and their spec dataclass, the `.robi`
+keywords it reads and the lines it writes, the JSON Schema of its fields and the checks of what
+was read. The `.robi` reader (scene/robi.py), the JSON reader and writer (scene/json_format.py),
+the robot type's checks (scene/robot_type.py) and the published robot schema all work from these
+declarations (registry: scene/parts/__init__.py). They need no physics: what a part does in the
+simulation is its component. This module sits outside the registry's package so that a
+declaration can be imported before the registry, which imports every declaration.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""PSD infrared distance sensors (`psd` lines); what they measure: robot/components/psd.py."""
+"""What a robot file says about PSD infrared distance sensors: `psd` lines in three forms."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 from eyesim.protocol import constants
 from eyesim.scene.lexer import Line, Token, format_number, integer
-from eyesim.scene.parts.part import Part, PartReader, coordinate, list_of, name_token, record, text, whole
+from eyesim.parts.part import Part, PartReader, coordinate, list_of, name_token, record, text, whole
 
 PSD_IDS = constants.GROUPS["psd"]  # RoBIOS 7: PSD_FRONT 1 .. PSD_BACK 4
 ID_NAMES = ", ".join(f"{name}={value}" for name, value in PSD_IDS.items())
@@ -122,7 +122,7 @@ def write(robot) -> list[str]:
 
 PART = Part(
     "psd",
-    components=("eyesim.robot.components.psd:create",),
+    components=("eyesim.parts.psd.component:create",),
     fields=(("psds", tuple[PsdSpec, ...], ()),),
     keywords={"psd": read_psd},
     write=write,
