@@ -93,3 +93,39 @@ def test_plot_draws_the_paths_over_the_map(tour):
     assert (np.abs(image - orange).sum(axis=2) < 30).sum() > 500
     bad = eyesim("plot", str(tour), "-o", "paths.txt", cwd=tour.parent)
     assert bad.returncode == 2 and "must end in .png, .svg or .pdf" in bad.stderr
+
+
+def test_a_run_edited_in_the_viewer_is_drawn_with_the_scene_that_ran(tmp_path):
+    """An edit (a wall and a robot added while the run goes on) makes a new scene in the same
+    recording: the video draws each frame with the scene of its time, and the plot draws the last
+    scene with every robot's path."""
+    from eyesim.core.clock import DETERMINISTIC, Clock
+    from eyesim.core.engine import Simulation
+    from eyesim.record import Recorder
+    from eyesim.scene import load_scene
+
+    (tmp_path / "room.wld").write_text("floor 2000 2000\n")
+    (tmp_path / "before.sim").write_text("world room.wld\nS4 500 500 0\n")
+    (tmp_path / "walled.wld").write_text("floor 2000 2000\n1000 200 1000 1800\n")
+    (tmp_path / "after.sim").write_text("world walled.wld\nS4 500 500 0\nS4 1500 1500 90\n")
+    sim = Simulation(load_scene(tmp_path / "before.sim"), Clock(DETERMINISTIC))
+    with Recorder(sim, tmp_path / "run.mcap"):
+        sim.run(until=0.5)
+        sim.replace_scene(load_scene(tmp_path / "after.sim"), opened=False)  # what an edit does
+        sim.run(until=1.0)
+    with Recording(tmp_path / "run.mcap") as recording:
+        assert len(recording.segments) == 2 and recording.robot_ids == [1, 2]
+        view = TopView(recording.segments[-1].scene, 400)
+    result = eyesim("render", "run.mcap", "-o", "run.mp4", "--size", "400", "--fps", "10", cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    reader = imageio_ffmpeg.read_frames(str(tmp_path / "run.mp4"))
+    assert next(reader)["size"] == view.size  # its first item says what the frames are
+    frames = [np.frombuffer(f, np.uint8).reshape(view.size[1], view.size[0], 3) for f in reader]
+    x, y = (round(v) for v in view.pixel(1.0, 1.0))  # the middle of the added wall
+    floor_colour = frames[0][y, x].astype(int)
+    assert np.abs(frames[-1][y, x].astype(int) - floor_colour).sum() > 100  # the wall is there at the end
+    assert np.abs(frames[2][y, x].astype(int) - floor_colour).sum() < 30  # and not before the edit
+    result = eyesim("plot", "run.mcap", "-o", "paths.svg", cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    drawn = (tmp_path / "paths.svg").read_text()
+    assert "robot 1 S4" in drawn and "robot 2 S4" in drawn and "the scene as edited at 0.5 s" in drawn

@@ -36,7 +36,8 @@ def plot_paths(recording: Recording, output: str | Path, dpi: int = 150) -> None
     output = Path(output)
     if output.suffix.lower() not in IMAGE_TYPES:
         raise ValueError(f"{output.name}: the image file must end in .png, .svg or .pdf")
-    scene = recording.scene
+    last = recording.segments[-1]  # the scene the run ended with (edits in the viewer: the last)
+    scene = last.scene
     width, height = scene["floor"]["width"], scene["floor"]["height"]
     figure, axes = plt.subplots(figsize=(7, 7 * height / width + 0.6))
     texture = recording.attachment("floor-texture")
@@ -57,7 +58,7 @@ def plot_paths(recording: Recording, output: str | Path, dpi: int = 150) -> None
         axes.add_patch(
             Circle((marker["x"], marker["y"]), 0.0125, color=[c / 255 for c in marker["color"][:3]], zorder=1)
         )
-    first = recording.snapshot_at(recording.start_us)
+    first = recording.snapshot_at(last.start_us)
     objects = {o["id"]: o for o in scene["objects"]}
     for pose in first["objects"] if first else []:
         thing = objects.get(pose["id"])
@@ -76,7 +77,8 @@ def plot_paths(recording: Recording, output: str | Path, dpi: int = 150) -> None
             else:
                 axes.add_patch(Circle((x, y), size[0], color=[c / 255 for c in thing["color"]], alpha=0.8, zorder=2))
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    for index, robot in enumerate(scene["robots"]):
+    robots = {r["id"]: r for segment in recording.segments for r in segment.scene["robots"]}  # latest wins
+    for index, robot in enumerate(robots[i] for i in recording.robot_ids):
         _, poses = recording.robot_track(robot["id"])
         if len(poses) == 0:
             continue
@@ -100,8 +102,9 @@ def plot_paths(recording: Recording, output: str | Path, dpi: int = 150) -> None
     axes.set_aspect("equal")
     axes.set_xlabel("x (m)")
     axes.set_ylabel("y (m)")
-    axes.set_title(f"{recording.path.name}: paths over {recording.duration_s:.1f} s (circle: start)")
-    if scene["robots"]:
+    edited = f"; the scene as edited at {last.start_us / 1e6:.1f} s" if len(recording.segments) > 1 else ""
+    axes.set_title(f"{recording.path.name}: paths over {recording.duration_s:.1f} s (circle: start){edited}")
+    if robots:
         axes.legend(loc="upper right", fontsize="small")
     figure.tight_layout()
     figure.savefig(output, dpi=dpi)

@@ -1,16 +1,19 @@
 """`eyesim render`: a video of a recording, drawn from above with a fixed view (top_view.py) and
-encoded by the ffmpeg that imageio-ffmpeg bundles (H.264 in MP4, or VP9 in WebM)."""
+encoded by the ffmpeg that imageio-ffmpeg bundles (H.264 in MP4, or VP9 in WebM). A run whose scene
+was edited in the viewer is drawn with the scene that ran at each frame's time."""
 
 from __future__ import annotations
 
+import bisect
 import math
 from pathlib import Path
 
 import imageio_ffmpeg
 import numpy as np
+from PIL import ImageOps
 
 from eyesim.record.recording import Recording
-from eyesim.record.top_view import TopView
+from eyesim.record.top_view import BACKGROUND, TopView
 
 CODECS = {
     ".mp4": ("libx264", ["-crf", "23", "-preset", "veryfast"]),
@@ -32,8 +35,10 @@ def robot_paths(recording: Recording, until_us: int) -> dict[int, list[tuple[flo
     step = max(1, (last + 1) // 2000)
     paths = {}
     for robot_id in recording.robot_ids:
-        _, poses = recording.robot_track(robot_id)
-        paths[robot_id] = [tuple(p) for p in poses[: last + 1 : step, :2].tolist()] + [tuple(poses[last, :2].tolist())]
+        times, poses = recording.robot_track(robot_id)  # only while the robot was in the scene
+        shown = poses[: bisect.bisect_right(times, until_us), :2]
+        if len(shown):
+            paths[robot_id] = [tuple(p) for p in shown[::step].tolist()] + [tuple(shown[-1].tolist())]
     return paths
 
 
@@ -63,12 +68,20 @@ def render(
             f"--start/--end: the recording goes from {recording.start_us / 1e6:g} to "
             f"{recording.end_us / 1e6:g} s, and the start must come before the end"
         )
-    view = TopView(recording.scene, size, recording.attachment("floor-texture"))
-    trace = recording.scene["settings"].get("trace", False)
+    floor = recording.attachment("floor-texture")
+    views: dict[int, TopView] = {}  # per scene of the run (edited in the viewer: several)
+
+    def view_at(time_us: int) -> TopView:
+        segment = recording.segment_at(time_us)
+        if segment.start_us not in views:
+            views[segment.start_us] = TopView(segment.scene, size, floor)
+        return views[segment.start_us]
+
+    frame_size = view_at(start_us).size  # an edit that resized the floor is fitted into it
     codec, options = CODECS[output.suffix.lower()]
     writer = imageio_ffmpeg.write_frames(
         str(output),
-        view.size,
+        frame_size,
         fps=fps,
         codec=codec,
         pix_fmt_out="yuv420p",
@@ -80,9 +93,12 @@ def render(
     times = frame_times(start_us, end_us, fps, speed)
     try:
         for time_us in times:
+            view = view_at(time_us)
             snapshot = recording.snapshot_at(time_us)
-            paths = robot_paths(recording, time_us) if trace else None
+            paths = robot_paths(recording, time_us) if view.scene["settings"].get("trace", False) else None
             frame = view.draw(snapshot, paths, f"t = {time_us / 1e6:.2f} s")
+            if frame.size != frame_size:
+                frame = ImageOps.pad(frame, frame_size, color=BACKGROUND)
             writer.send(np.ascontiguousarray(np.asarray(frame)))
     finally:
         writer.close()
