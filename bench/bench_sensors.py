@@ -43,8 +43,8 @@ def in_process() -> dict:
     from eyesim.core.engine import Simulation
     from eyesim.physics import render_gl
     from eyesim.physics.render_raycast import RayCastRenderer
-    from eyesim.robot.components.camera import Camera
-    from eyesim.robot.components.lidar import LidarScanner
+    from eyesim.parts.camera.component import Camera
+    from eyesim.parts.lidar.component import LidarScanner
 
     sim = Simulation(arena(robots=((500, 500, 0), (1500, 500, 180), (1000, 1500, 270))))
     robot = sim.robots[0]

@@ -246,7 +246,7 @@ def part_kind_modules() -> set[str]:
 
 def test_what_shows_the_parts_names_no_part_kind():
     kinds = part_kind_modules()
-    assert {"eyesim.parts.psd.component", "eyesim.robot.components.lidar", "eyesim.parts.psd.declaration"} <= kinds
+    assert {"eyesim.parts.psd.component", "eyesim.parts.lidar.component", "eyesim.parts.psd.declaration"} <= kinds
     assert {"eyesim.parts.bumper.component", "eyesim.parts.bumper.declaration"} <= kinds
     paths = {module_name(path) for path in PACKAGE.rglob("*.py")}
     assert set(SHOWING) <= paths, f"not modules (any more?): {sorted(set(SHOWING) - paths)}"

@@ -18,7 +18,7 @@ from support.simulator import running_simulation
 from eyesim.core.engine import Simulation
 from eyesim.physics import render_raycast, renderer_choice
 from eyesim.physics.render_raycast import RayCastRenderer
-from eyesim.robot.components.camera import Camera
+from eyesim.parts.camera.component import Camera
 from eyesim.scene.description import Wall
 
 CAM5MP = 5

@@ -72,6 +72,11 @@ def test_a_part_folder_finds_its_handlers_and_two_modules_may_not_share_a_group(
     monkeypatch.setattr(calls, "GROUP", "lcd")
     with pytest.raises(RuntimeError, match="eyesim.commands.lcd and eyesim.parts.psd.calls both handle group lcd"):
         commands.handler_modules()
+    monkeypatch.setattr(calls, "GROUP", "lidar")
+    with pytest.raises(
+        RuntimeError, match="eyesim.parts.psd.calls and eyesim.parts.lidar.calls both handle group lidar"
+    ):
+        commands.handler_modules()
 
 
 def test_operation_codes_are_unique_and_fit_the_header():

@@ -16,7 +16,7 @@ from support.simulator import running_simulation
 from eyesim.core.engine import Simulation
 from eyesim.physics import render_gl, renderer_choice
 from eyesim.physics.render_raycast import RayCastRenderer
-from eyesim.robot.components.camera import Camera
+from eyesim.parts.camera.component import Camera
 from eyesim.scene.description import Wall
 
 RED, GREEN, BLUE, YELLOW, ORANGE = (255, 0, 0), (0, 200, 0), (0, 0, 255), (230, 230, 0), (255, 120, 0)

@@ -7,8 +7,8 @@ import numpy as np
 from support.scenes import arena
 
 from eyesim.core.engine import Simulation
-from eyesim.robot.components.camera import Camera
-from eyesim.robot.components.lidar import LidarScanner
+from eyesim.parts.camera.component import Camera
+from eyesim.parts.lidar.component import LidarScanner
 from eyesim.parts.psd.component import PsdSensor
 from eyesim.scene.description import Settings
 from eyesim.viewer.messages import snapshot

@@ -86,7 +86,7 @@ def _floor_material(spec: mujoco.MjSpec, path: str) -> str:
         return ""
     height, width = pixels.shape[:2]
     # MuJoCo maps the first texture row to the plane's +y edge, so the image's top row lies north
-    # as it is (tests/sensors/test_camera.py looks at it through a camera).
+    # as it is (tests/parts/camera/test_camera.py looks at it through a camera).
     texture = spec.add_texture(
         name="floor", type=mujoco.mjtTexture.mjTEXTURE_2D, width=width, height=height, nchannel=3
     )

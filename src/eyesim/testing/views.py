@@ -9,7 +9,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from eyesim.robot.components.camera import Camera
+from eyesim.parts.camera.component import Camera
 from eyesim.robot.components.lcd import Lcd
 from eyesim.robot.components.vw import VwController
 from eyesim.testing.contacts import Contact, Thing

@@ -10,8 +10,10 @@ from __future__ import annotations
 import dataclasses
 
 from eyesim.parts.bumper import declaration as bumper
+from eyesim.parts.camera import declaration as camera
+from eyesim.parts.lidar import declaration as lidar
 from eyesim.parts.psd import declaration as psd
-from eyesim.scene.parts import arm, body, camera, drive, lidar, thrusters, water, wheels
+from eyesim.scene.parts import arm, body, drive, thrusters, water, wheels
 from eyesim.parts.part import Part
 
 # In this order the reader finishes them (the arm sits on the chassis: after the body), their

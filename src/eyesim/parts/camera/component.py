@@ -10,12 +10,12 @@ import math
 
 import numpy as np
 
+from eyesim.parts.camera.declaration import CameraSpec
 from eyesim.physics import render, render_worker
 from eyesim.physics.units import mm
 from eyesim.protocol import generated as g
 from eyesim.robot.actuators import Servo
 from eyesim.robot.component import Component
-from eyesim.scene.description import CameraSpec
 
 MAX_FOV = 170.0  # degrees: wider views cannot be drawn by a pinhole (nor resampled into a fisheye)
 SERVO_RATE = 300.0  # degrees per second a pan or tilt servo turns (a fast hobby servo)

@@ -1,12 +1,12 @@
-"""A scanning lidar (`lidar` line); what it measures: robot/components/lidar.py."""
+"""What a robot file says about a scanning lidar: its `lidar` line."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
+from eyesim.parts.part import Part, PartReader, between, record, ref, whole
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.lexer import Line, format_number
-from eyesim.parts.part import Part, PartReader, between, record, ref, whole
 
 
 @dataclass(frozen=True)
@@ -50,7 +50,7 @@ def write(robot) -> list[str]:
 
 PART = Part(
     "lidar",
-    components=("eyesim.robot.components.lidar:create",),
+    components=("eyesim.parts.lidar.component:create",),
     fields=(("lidar", LidarSpec | None, None),),
     keywords={"lidar": read_lidar},
     write=write,

@@ -2,7 +2,9 @@
 a scan, an int32 array encoded as it is: protocol.json's "calls")."""
 
 from eyesim.commands.errors import CommandError, component_of
-from eyesim.robot.components.lidar import MAX_POINTS, LidarScanner
+from eyesim.parts.lidar.component import MAX_POINTS, LidarScanner
+
+GROUP = "lidar"  # protocol.json's group of the operations below
 
 
 def _scanner(robot) -> LidarScanner:

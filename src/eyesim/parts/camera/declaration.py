@@ -1,4 +1,4 @@
-"""The camera (`camera`, and `fov` or `fisheye` for its lens); what it sees: robot/components/camera.py."""
+"""What a robot file says about the camera: `camera`, and `fov` or `fisheye` for its lens."""
 
 from __future__ import annotations
 
@@ -6,9 +6,9 @@ import dataclasses
 import re
 from dataclasses import dataclass
 
+from eyesim.parts.part import Part, PartReader, between, coordinate, flag, numbers, record, ref, whole
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.lexer import Line, format_number, number
-from eyesim.parts.part import Part, PartReader, between, coordinate, flag, numbers, record, ref, whole
 
 _SERVO = re.compile(r"SERVO(\d+)\(([^,()]+),([^,()]+)\)", re.IGNORECASE)
 
@@ -168,7 +168,7 @@ def write(robot) -> list[str]:
 
 PART = Part(
     "camera",
-    components=("eyesim.robot.components.camera:create",),
+    components=("eyesim.parts.camera.component:create",),
     fields=(("camera", CameraSpec | None, None),),
     keywords={"camera": read_camera, "fov": _lens("fov"), "fisheye": _lens("fisheye")},
     write=write,

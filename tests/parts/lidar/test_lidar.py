@@ -9,7 +9,7 @@ from support.scenes import arena
 
 import eyesim
 from eyesim.core.engine import Simulation
-from eyesim.robot.components.lidar import MOUNT_ABOVE_TOP, LidarScanner
+from eyesim.parts.lidar.component import MOUNT_ABOVE_TOP, LidarScanner
 
 ROOM = 2000
 INNER = (5.0, ROOM - 5.0)

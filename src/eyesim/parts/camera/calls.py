@@ -6,10 +6,12 @@ the simulation thread, which serves every program: CAMGet's reply is Deferred.""
 
 from eyesim.commands.errors import CommandError, component_of
 from eyesim.net.session import Deferred
+from eyesim.parts.camera.component import Camera
 from eyesim.physics.render import to_gray
 from eyesim.protocol import constants, encode_image_reply
 from eyesim.protocol.constants import CUSTOM
-from eyesim.robot.components.camera import Camera
+
+GROUP = "cam"  # protocol.json's group of the operations below
 
 # The camera's RoBIOS resolutions (QQVGA..CAM5MP; CUSTOM is the LCD's) -> (width, height)
 CAMERA_RESOLUTIONS = {name: value for name, value in constants.GROUPS["resolutions"].items() if value != CUSTOM}

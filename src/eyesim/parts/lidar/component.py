@@ -7,11 +7,11 @@ import math
 import mujoco
 import numpy as np
 
+from eyesim.parts.lidar.declaration import LidarSpec
 from eyesim.physics.units import mm
 from eyesim.physics.visual_mesh import RAY_GROUPS
 from eyesim.protocol import generated as g
 from eyesim.robot.component import Component
-from eyesim.scene.description import LidarSpec
 
 MAX_RANGE_MM = 9999  # what a beam that hits nothing within range reports
 MOUNT_ABOVE_TOP = 10.0  # mm the scanner's centre sits above the chassis top
