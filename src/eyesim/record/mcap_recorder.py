@@ -29,7 +29,8 @@ from eyesim.viewer import mesh_message, messages
 
 DEFAULT_POSE_RATE = 100.0  # Hz of simulation time: the CSV's 10 ms rows
 DEFAULT_LCD_RATE = 30.0  # Hz: at most this many LCD images per robot and simulated second
-QUEUE_LENGTH = 512  # messages waiting for the writer; beyond it the simulation waits (nothing is lost)
+BATCH = 64  # messages handed to the writer thread at once: one wake-up of it, not one per message
+QUEUE_LENGTH = 8  # batches waiting for the writer; beyond them the simulation waits (nothing is lost)
 JPEG_QUALITY = 85
 FLOOR_TEXTURE = "floor-texture"  # attachment names; meshes are "mesh/<kind>/<id>"
 COMMAND_GROUPS = ("vw", "motor", "servo")
@@ -48,7 +49,7 @@ def _json(value) -> bytes:
 def _image_message(time_us: int, frame: str, pixels, image_format: str) -> bytes:
     buffer = io.BytesIO()
     if image_format == "png":
-        Image.fromarray(pixels).save(buffer, format="PNG", compress_level=6)
+        _png_image(pixels).save(buffer, format="PNG", compress_level=1)
     else:
         Image.fromarray(pixels).save(buffer, format="JPEG", quality=JPEG_QUALITY)
     return _json(
@@ -59,6 +60,15 @@ def _image_message(time_us: int, frame: str, pixels, image_format: str) -> bytes
             "data": base64.b64encode(buffer.getvalue()).decode("ascii"),
         }
     )
+
+
+def _png_image(pixels) -> Image.Image:
+    """An LCD's pixels as the image to write: one grey channel when they are grey (white text on
+    black, the menu bar), the same picture in a third of the bytes to compress."""
+    grey = pixels[..., 0]
+    if np.array_equal(grey, pixels[..., 1]) and np.array_equal(grey, pixels[..., 2]):
+        return Image.fromarray(np.ascontiguousarray(grey))
+    return Image.fromarray(pixels)
 
 
 def period_us(rate: float, step_us: int, what: str) -> int:
@@ -112,6 +122,7 @@ class Recorder:
         self._lcd_versions: dict[int, int] = {}
         self._next_lcd_us = self.sim.time_us
         self._queue: queue.Queue = queue.Queue(QUEUE_LENGTH)
+        self._batch: list[tuple] = []
         self._failure: BaseException | None = None
         self._start_file()
         self._thread = threading.Thread(target=self._write_loop, name="eyesim-recorder", daemon=True)
@@ -315,6 +326,7 @@ class Recorder:
         """What the LCDs show now, then the file's end (its index)."""
         if last_lcds:
             self._sample_lcds(self.sim)
+        self._hand_over()
         self._queue.put(None)
         self._thread.join()
         try:
@@ -330,20 +342,28 @@ class Recorder:
         """Queue a message: `payload` is bytes, or a function that makes them on the writer thread
         (topic None: a function that writes something itself there, such as a scene)."""
         if self._failure is None:
-            self._queue.put((topic, time_us, payload))
+            self._batch.append((topic, time_us, payload))
+            if len(self._batch) >= BATCH:
+                self._hand_over()
+
+    def _hand_over(self) -> None:
+        """The messages queued so far, to the writer thread."""
+        if self._batch:
+            self._queue.put(self._batch)
+            self._batch = []
 
     def _write_loop(self) -> None:
-        while (item := self._queue.get()) is not None:
-            if self._failure is not None:
-                continue  # drain, so the simulation never blocks on a full queue
-            topic, time_us, payload = item
-            try:
-                if topic is None:
-                    payload()
-                    continue
-                self._add(topic, time_us, payload if isinstance(payload, bytes) else payload())
-            except Exception as error:  # a full disk: reported by close(), the run goes on
-                self._failure = error
+        while (batch := self._queue.get()) is not None:
+            for topic, time_us, payload in batch:
+                if self._failure is not None:
+                    break  # drain, so the simulation never blocks on a full queue
+                try:
+                    if topic is None:
+                        payload()
+                        continue
+                    self._add(topic, time_us, payload if isinstance(payload, bytes) else payload())
+                except Exception as error:  # a full disk: reported by close(), the run goes on
+                    self._failure = error
 
     def _add(self, topic: str, time_us: int, data: bytes) -> None:
         channel = self._channels[topic]
