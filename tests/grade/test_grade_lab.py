@@ -90,7 +90,7 @@ def test_reports_json_junit_html_and_images(graded_lab):
     )
     html = (out / "index.html").read_text()
     assert "<td class='score total'>100.0</td>" in html and "compile error</span>" in html
-    for name in ("robot1-lcd.png", "trajectory.png"):
+    for name in ("robot1-lcd.png", "trajectory.svg"):
         assert (out / "cases" / "good" / "sensor-lab" / name).stat().st_size > 1000
         assert f"cases/good/sensor-lab/{name}" in html
     assert "[1/14]" in process.stderr and "\r" not in process.stderr  # plain progress lines off a terminal

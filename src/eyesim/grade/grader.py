@@ -87,11 +87,11 @@ def grade(
     try:
         for result in executor.run(pending):
             stored = store.save(result)
-            plot = out / "cases" / result["student"] / result["case"] / "trajectory.png"
+            plot = out / "cases" / result["student"] / result["case"] / "trajectory.svg"
             if result.get("robots"):
                 try:
                     trajectory_plot(spec.case(result["case"]).scene, stored, plot)
-                    stored["files"]["trajectory.png"] = plot.relative_to(out).as_posix()
+                    stored["files"]["trajectory.svg"] = plot.relative_to(out).as_posix()
                     store.path(result["student"], result["case"]).write_text(
                         json.dumps(stored, indent=1, sort_keys=True)
                     )

@@ -146,7 +146,7 @@ def _student_section(student: dict) -> str:
         images = [
             f"<img src='{escape(file)}' alt='{escape(name)}' title='{escape(name)}'>"
             for name, file in sorted(case.get("files", {}).items())
-            if file.endswith(".png")
+            if file.endswith((".png", ".svg"))
         ]
         if images:
             parts.append("<div class='images'>" + "".join(images) + "</div>")
