@@ -1,11 +1,11 @@
 """The hostile submissions of test_sandbox.py, graded through Dask (`eyesim grade --cluster
 local:2`), fail as they do on the local pool, and the honest student beside them gets full marks.
 
-All six are graded here, not a sample: the path differs. A Dask worker calls
-isolation.run_case_isolated without a warm runner, so each case starts cold in a bwrap sandbox of
-its own, from a worker process that lives on after it; the local pool, run as root as in CI,
-forks its cases from warm runners (grade/warm.py). Whatever the worker keeps (its process tree,
-its temporary folders) must not help a case."""
+All six are graded here, not a sample: the path differs. A Dask worker is a process that lives on
+after each case, with the warm runners (grade/warm.py) of its threads, kept by a worker plugin
+(grade/dask_workers.py) where the grader is root as in CI, rather than the local pool's.
+Whatever the worker keeps (its process tree, its runners, its temporary folders) must not help a
+case."""
 
 from __future__ import annotations
 

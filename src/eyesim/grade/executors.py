@@ -1,16 +1,19 @@
 """Where cases run: a local pool (one case process per core, the default) or a Dask distributed
 cluster (`--cluster tcp://scheduler:8786`, or `--cluster local:N` for a cluster of N worker
-processes on this machine). Both call isolation.run_case_isolated on each task and yield
+processes on this machine). Both run each task with isolation.run_case_isolated, forked from a
+warm runner of the worker thread where there can be one (isolation.WarmRunners), and yield
 results as they finish; a case process gives the same result wherever it runs."""
 
 from __future__ import annotations
 
+import logging
 import os
-import threading
+import uuid
 from concurrent.futures import ThreadPoolExecutor, as_completed
 
-from eyesim.grade import warm
-from eyesim.grade.isolation import failed_result, kill_running, run_case_isolated
+from eyesim.grade.isolation import WarmRunners, failed_result, kill_running
+
+log = logging.getLogger("eyesim")
 
 
 def _result(task: dict, future) -> dict:
@@ -35,30 +38,13 @@ class LocalPool:
         self.workers = workers or os.cpu_count() or 1
         self.description = f"local pool of {self.workers} worker(s)"
         self._pool: ThreadPoolExecutor | None = None
-        self._warm = warm.usable()
-        self._local = threading.local()
-        self._runners: list[warm.Runner] = []
-        self._runners_lock = threading.Lock()
+        self._runners = WarmRunners()
 
     def run(self, tasks: list[dict]):
         self._pool = ThreadPoolExecutor(self.workers)
-        futures = {self._pool.submit(self._run, task): task for task in tasks}
+        futures = {self._pool.submit(self._runners.run, task): task for task in tasks}
         for future in as_completed(futures):
             yield _result(futures[future], future)
-
-    def _run(self, task: dict) -> dict:
-        if not self._warm:
-            return run_case_isolated(task)
-        try:
-            runner = getattr(self._local, "runner", None)
-            if runner is None or runner.process.poll() is not None:  # the first case, or a case overran
-                runner = self._local.runner = warm.Runner()
-                with self._runners_lock:
-                    self._runners.append(runner)
-            return run_case_isolated(task, runner)
-        except warm.RunnerFailed:
-            self._warm = False  # the cases start cold, each in a bwrap sandbox of its own
-            return run_case_isolated(task)
 
     def close(self, abort: bool = False) -> None:
         """With `abort` (an interrupted run), cases still running are killed, not waited for."""
@@ -67,10 +53,7 @@ class LocalPool:
                 self._pool.shutdown(wait=False, cancel_futures=True)
                 kill_running()
             self._pool.shutdown(wait=True, cancel_futures=True)
-        with self._runners_lock:
-            runners, self._runners = self._runners, []
-        for runner in runners:
-            runner.close()
+        self._runners.close()
 
 
 class DaskCluster:
@@ -105,8 +88,12 @@ class DaskCluster:
     def run(self, tasks: list[dict]):
         from distributed import as_completed as dask_completed
 
+        from eyesim.grade import dask_workers
+
+        self._plugin = f"eyesim-warm-runners-{uuid.uuid4().hex}"
+        self.client.register_plugin(dask_workers.WarmRunnerPlugin(), name=self._plugin)
         # pure=False: the same task twice is two runs (a resumed grading re-runs on purpose).
-        futures = self.client.map(run_case_isolated, tasks, pure=False, retries=0)
+        futures = self.client.map(dask_workers.run_case, tasks, plugin=self._plugin, pure=False, retries=0)
         self._futures = futures
         task_of = {future.key: task for future, task in zip(futures, tasks)}
         for future in dask_completed(futures):
@@ -115,6 +102,11 @@ class DaskCluster:
     def close(self, abort: bool = False) -> None:
         for future in getattr(self, "_futures", []):
             future.cancel()
+        if getattr(self, "_plugin", None) is not None:
+            try:
+                self.client.unregister_worker_plugin(self._plugin)  # the workers' runners end
+            except Exception as error:  # noqa: BLE001 - a worker gone: its runners died with it
+                log.warning("could not end the warm case runners on the Dask workers: %s", error)
         self.client.close()
         if self._cluster is not None:
             self._cluster.close()

@@ -14,6 +14,7 @@ from __future__ import annotations
 import base64
 import contextlib
 import json
+import logging
 import os
 import pickle
 import shutil
@@ -30,6 +31,7 @@ from eyesim.grade import sandbox, warm
 HARD_MARGIN = 60.0  # s beyond the case's own watchdog (which stops programs gently) before killing
 CASE_PROCESSES = 256  # processes and threads a sandboxed case's user may have (simulator threads included)
 
+log = logging.getLogger("eyesim")
 _running: set[subprocess.Popen] = set()  # case processes of this process, for an interrupted run
 _running_lock = threading.Lock()
 
@@ -100,14 +102,47 @@ def run_case_isolated(task: dict, runner: warm.Runner | None = None) -> dict:
         result = _read_result(stdout, task)
         if result is None:
             tail = stderr.decode(errors="replace")[-3000:]
-            return timed(
-                failed_result(
-                    task,
-                    "grader_error",
-                    f"the case process ended with status {process.returncode} without a result:\n{tail}",
-                )
+            ended = (
+                "the warm runner of the case process ended during the case"
+                if process.returncode is None
+                else f"the case process ended with status {process.returncode}"
             )
+            return timed(failed_result(task, "grader_error", f"{ended} without a result:\n{tail}"))
         return result
+
+
+class WarmRunners:
+    """A warm runner (warm.py) for each thread that runs cases, made for its first case and made
+    again when a case had to end it. Where runners cannot be used, or one does not start, cases
+    start cold, each in a sandbox of its own. Used by the local pool and by each Dask worker."""
+
+    def __init__(self):
+        self.usable = warm.usable()
+        self._local = threading.local()
+        self._runners: list[warm.Runner] = []
+        self._lock = threading.Lock()
+
+    def run(self, task: dict) -> dict:
+        if not self.usable:
+            return run_case_isolated(task)
+        try:
+            runner = getattr(self._local, "runner", None)
+            if runner is None or runner.process.poll() is not None:  # the first case, or a case overran
+                runner = self._local.runner = warm.Runner()
+                with self._lock:
+                    self._runners.append(runner)
+            return run_case_isolated(task, runner)
+        except warm.RunnerFailed as error:
+            if self.usable:
+                log.warning("%s; each case starts a process of its own instead", error)
+            self.usable = False  # the cases start cold, each in a bwrap sandbox of its own
+            return run_case_isolated(task)
+
+    def close(self) -> None:
+        with self._lock:
+            runners, self._runners = self._runners, []
+        for runner in runners:
+            runner.close()
 
 
 def _start_case(task: dict, work: Path) -> tuple[subprocess.Popen, dict]:
