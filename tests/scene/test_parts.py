@@ -12,6 +12,7 @@ from eyesim.scene.description import RobotType
 from eyesim.scene.diagnostics import Diagnostics
 from eyesim.scene.json_format import dumps, parse_json, schema, to_json
 from eyesim.scene.lexer import read_text
+from eyesim.parts.part import coordinate, in_schema, positive, record_of
 from eyesim.scene.parts import KEYWORDS, PARTS
 from eyesim.scene.robi import parse_robi, write_robi
 from robi_snapshot import robi_files, snapshot
@@ -112,3 +113,24 @@ def _refs(node):
     elif isinstance(node, list):
         for value in node:
             yield from _refs(value)
+
+
+def test_a_spec_dataclass_states_its_schema_on_its_fields():
+    """record_of: the fields in order, each with its own schema; those without a default required."""
+
+    @dataclasses.dataclass(frozen=True)
+    class Strip:
+        x: float = dataclasses.field(metadata=in_schema(coordinate("x", "mm forward")))
+        width: float = dataclasses.field(default=10.0, metadata=in_schema(positive("Width", "mm")))
+
+    schema = record_of(Strip, "Strip", "a strip")
+    assert list(schema["properties"]) == ["x", "width"] and schema["required"] == ["x"]
+    assert schema["properties"]["width"] == positive("Width", "mm")
+
+    @dataclasses.dataclass(frozen=True)
+    class Unstated:
+        x: float = dataclasses.field(metadata=in_schema(coordinate("x")))
+        y: float = 0.0
+
+    with pytest.raises(ValueError, match="Unstated: fields without a schema \\(in_schema\\): y"):
+        record_of(Unstated, "Unstated", "no")

@@ -13,6 +13,7 @@ declaration can be imported before the registry, which imports every declaration
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
@@ -167,3 +168,25 @@ def record(title: str, description: str, properties: dict, required: tuple[str, 
     if required:
         schema["required"] = list(required)
     return {**schema, "additionalProperties": False, "properties": properties}
+
+
+SCHEMA = "schema"  # a spec field's metadata key for its JSON Schema
+
+
+def in_schema(schema: dict) -> dict:
+    """A spec dataclass field's metadata giving its JSON Schema (a fragment of the helpers above):
+    `x: float = field(metadata=in_schema(coordinate("x", "mm forward")))`."""
+    return {SCHEMA: schema}
+
+
+def record_of(spec: type, title: str, description: str) -> dict:
+    """The JSON Schema of a spec dataclass, from its fields: each field's own schema (`in_schema`),
+    in the order they are declared; those without a default are required."""
+    fields = dataclasses.fields(spec)
+    unstated = [f.name for f in fields if SCHEMA not in f.metadata]
+    if unstated:
+        raise ValueError(f"{spec.__name__}: fields without a schema (in_schema): {', '.join(unstated)}")
+    required = tuple(
+        f.name for f in fields if f.default is dataclasses.MISSING and f.default_factory is dataclasses.MISSING
+    )
+    return record(title, description, {f.name: f.metadata[SCHEMA] for f in fields}, required)

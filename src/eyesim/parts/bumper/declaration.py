@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from eyesim.scene.lexer import Line, format_number
-from eyesim.parts.part import Part, PartReader, coordinate, list_of, positive, record, whole
+from eyesim.parts.part import Part, PartReader, coordinate, in_schema, list_of, positive, record_of, whole
 
 FIRST_LINE = 8  # bumper n is wired to digital input line 8 + n (lines 1..8 stay free for the program)
 MAX_ID = 8  # the I/O board has 16 lines
@@ -16,11 +16,13 @@ class BumperSpec:
     """A contact strip: its id (1..8), the middle of the strip in the robot frame (mm), the
     direction it faces (degrees, left positive: 0 = forward) and its width (mm)."""
 
-    id: int
-    x: float
-    y: float
-    angle: float
-    width: float
+    id: int = field(metadata=in_schema(whole(1, "Id", f"1..{MAX_ID}: digital input line 8 + id reads 0 while pressed")))
+    x: float = field(metadata=in_schema(coordinate("x", "mm forward, middle of the strip")))
+    y: float = field(metadata=in_schema(coordinate("y", "mm left, middle of the strip")))
+    angle: float = field(
+        metadata=in_schema(coordinate("Angle", "degrees the strip faces, left positive (0 = forward)"))
+    )
+    width: float = field(metadata=in_schema(positive("Width", "mm")))
 
     @property
     def line(self) -> int:
@@ -86,18 +88,7 @@ PART = Part(
     finish=finish,
     properties={"bumpers": list_of("bumper", "Bumpers")},
     defs={
-        "bumper": record(
-            "Bumper",
-            "a contact strip on the chassis edge, wired to digital input 8 + id",
-            {
-                "id": whole(1, "Id", f"1..{MAX_ID}: digital input line 8 + id reads 0 while pressed"),
-                "x": coordinate("x", "mm forward, middle of the strip"),
-                "y": coordinate("y", "mm left, middle of the strip"),
-                "angle": coordinate("Angle", "degrees the strip faces, left positive (0 = forward)"),
-                "width": positive("Width", "mm"),
-            },
-            required=("id", "x", "y", "angle", "width"),
-        )
+        "bumper": record_of(BumperSpec, "Bumper", "a contact strip on the chassis edge, wired to digital input 8 + id")
     },
     json_locations=lambda robot, positions: {
         f"bumper:{i}": positions.value(["bumpers", i]) for i in range(len(robot.bumpers))

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
-from eyesim.parts.part import Part, PartReader, between, record, ref, whole
+from eyesim.parts.part import Part, PartReader, between, in_schema, record_of, ref, whole
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.lexer import Line, format_number
 
@@ -14,8 +14,10 @@ class LidarSpec:
     """A scanning lidar: `points` beams over 360 degrees, scan plane tilted by `tilt` degrees
     against the driving plane."""
 
-    points: int = 360
-    tilt: float = 0.0
+    points: int = field(default=360, metadata=in_schema(whole(1, "Points")))
+    tilt: float = field(
+        default=0.0, metadata=in_schema(between(-90, 90, "Tilt", "scan plane tilt in degrees", exclusive_high=True))
+    )
 
 
 def read_lidar(reader: PartReader, line: Line) -> None:
@@ -55,14 +57,5 @@ PART = Part(
     keywords={"lidar": read_lidar},
     write=write,
     properties={"lidar": ref("lidar")},
-    defs={
-        "lidar": record(
-            "Lidar",
-            "a 360-degree scanning lidar",
-            {
-                "points": whole(1, "Points"),
-                "tilt": between(-90, 90, "Tilt", "scan plane tilt in degrees", exclusive_high=True),
-            },
-        )
-    },
+    defs={"lidar": record_of(LidarSpec, "Lidar", "a 360-degree scanning lidar")},
 )

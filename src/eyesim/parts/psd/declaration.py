@@ -3,11 +3,11 @@
 from __future__ import annotations
 
 import dataclasses
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from eyesim.protocol import constants
 from eyesim.scene.lexer import Line, Token, format_number, integer
-from eyesim.parts.part import Part, PartReader, coordinate, list_of, name_token, record, text, whole
+from eyesim.parts.part import Part, PartReader, coordinate, in_schema, list_of, name_token, record_of, text, whole
 
 PSD_IDS = constants.GROUPS["psd"]  # RoBIOS 7: PSD_FRONT 1 .. PSD_BACK 4
 ID_NAMES = ", ".join(f"{name}={value}" for name, value in PSD_IDS.items())
@@ -18,13 +18,13 @@ class PsdSpec:
     """A PSD distance sensor: RoBIOS id (PSD_FRONT=1 ...), name, position in the robot frame (mm)
     and beam direction (heading deg, left positive; pitch deg, up positive)."""
 
-    id: int
-    name: str
-    x: float
-    y: float
-    z: float
-    heading: float
-    pitch: float = 0.0
+    id: int = field(metadata=in_schema(whole(1, "RoBIOS id", f"RoBIOS id ({ID_NAMES})")))
+    name: str = field(metadata=in_schema(text("Name")))
+    x: float = field(metadata=in_schema(coordinate("x", "mm forward")))
+    y: float = field(metadata=in_schema(coordinate("y", "mm left")))
+    z: float = field(metadata=in_schema(coordinate("z", "mm up")))
+    heading: float = field(metadata=in_schema(coordinate("Heading", "degrees, left positive")))
+    pitch: float = field(default=0.0, metadata=in_schema(coordinate("Pitch", "degrees, up positive")))
 
 
 def read_psd(reader: PartReader, line: Line) -> None:
@@ -128,22 +128,7 @@ PART = Part(
     write=write,
     finish=finish,
     properties={"psds": list_of("psd", "PSD sensors")},
-    defs={
-        "psd": record(
-            "PSD sensor",
-            "a PSD distance sensor (robot frame)",
-            {
-                "id": whole(1, "RoBIOS id", f"RoBIOS id ({ID_NAMES})"),
-                "name": text("Name"),
-                "x": coordinate("x", "mm forward"),
-                "y": coordinate("y", "mm left"),
-                "z": coordinate("z", "mm up"),
-                "heading": coordinate("Heading", "degrees, left positive"),
-                "pitch": coordinate("Pitch", "degrees, up positive"),
-            },
-            required=("id", "name", "x", "y", "z", "heading"),
-        )
-    },
+    defs={"psd": record_of(PsdSpec, "PSD sensor", "a PSD distance sensor (robot frame)")},
     json_locations=lambda robot, positions: {f"psd:{i}": positions.value(["psds", i]) for i in range(len(robot.psds))},
     check=check,
 )
