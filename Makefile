@@ -82,21 +82,21 @@ $(VENV)/.ziglang: $(BIN)/python
 # The checks `make test` starts with (docs/developing.md, "Checks"): pyflakes-level checks of the
 # Python code (ruff: unused or undefined names), its layout (ruff format), the types of the packages pyproject.toml's
 # [tool.mypy] lists (mypy), and the types of the viewer's TypeScript (tsc --noEmit).
-lint: $(INSTALLED) web/node_modules/.package-lock.json
+lint: $(INSTALLED) viewer-app/node_modules/.package-lock.json
 	$(BIN)/ruff check src tests bench tools protocol
 	$(BIN)/ruff format --check src tests bench tools protocol
 	$(BIN)/mypy
-	cd web && npm run --silent typecheck
+	cd viewer-app && npm run --silent typecheck
 
-# The viewer's npm packages as web/package-lock.json pins them, from the npm registry; Node.js and
+# The viewer's npm packages as viewer-app/package-lock.json pins them, from the npm registry; Node.js and
 # npm from Debian when there is no npm (NODE_PACKAGES).
-web/node_modules/.package-lock.json: web/package-lock.json
+viewer-app/node_modules/.package-lock.json: viewer-app/package-lock.json
 	@$(MAKE) --no-print-directory system-packages SYSTEM_PACKAGES="$(NODE_PACKAGES)"
-	cd web && npm ci --no-audit --no-fund
+	cd viewer-app && npm ci --no-audit --no-fund
 
 # Rebuild the browser bundle committed in src/eyesim/web/static (needs Node.js and npm).
 viewer:
-	cd web && npm ci --no-audit --no-fund && npm run build
+	cd viewer-app && npm ci --no-audit --no-fund && npm run build
 
 # Regenerate from protocol/protocol.json the protocol tables, the pass-through layers of the API
 # (eyebot.h declarations, C wrappers, eye modules) and the RoBIOS constants (eyebot.h's defines,

@@ -18,7 +18,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_generated_files_match_protocol_json():
-    """Also the viewer channel's: web/src/generated/viewer_protocol.ts (the messages' and the HTTP
+    """Also the viewer channel's: viewer-app/src/generated/viewer_protocol.ts (the messages' and the HTTP
     routes' types and parsers) and the server's copy of protocol/viewer.schema.json."""
     result = subprocess.run(
         [sys.executable, str(ROOT / "protocol" / "generate.py"), "--check"], capture_output=True, text=True

@@ -13,7 +13,7 @@ STATIC_DIR = ROOT / "src" / "eyesim" / "web" / "static"
 
 
 def load_hash_sources():
-    spec = importlib.util.spec_from_file_location("hash_sources", ROOT / "web" / "hash_sources.py")
+    spec = importlib.util.spec_from_file_location("hash_sources", ROOT / "viewer-app" / "hash_sources.py")
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
@@ -23,7 +23,7 @@ def test_bundle_matches_sources():
     hash_sources = load_hash_sources()
     recorded = hash_sources.HASH_FILE.read_text().strip() if hash_sources.HASH_FILE.exists() else "(none)"
     assert recorded == hash_sources.source_hash(), (
-        "src/eyesim/web/static/ is stale: the viewer sources in web/ changed since the last build; "
+        "src/eyesim/web/static/ is stale: the viewer sources in viewer-app/ changed since the last build; "
         "run `make viewer` and commit eyesim/web/static/"
     )
 
