@@ -3,6 +3,7 @@ from them read every real robot file as before and agree with each other."""
 
 import dataclasses
 import json
+import typing
 from pathlib import Path
 
 import jsonschema
@@ -13,7 +14,8 @@ from eyesim.scene.diagnostics import Diagnostics
 from eyesim.scene.json_format import dumps, parse_json, schema, to_json
 from eyesim.scene.lexer import read_text
 from eyesim.parts.part import coordinate, in_schema, positive, record_of
-from eyesim.scene.parts import KEYWORDS, PARTS
+from eyesim.parts.psd.declaration import PsdSpec
+from eyesim.scene.parts import KEYWORDS, PARTS, check_bases
 from eyesim.scene.robi import parse_robi, write_robi
 from robi_snapshot import robi_files, snapshot
 from scene_testing import without_locations
@@ -46,9 +48,17 @@ def test_robi_and_json_round_trips(key):
 
 def test_each_keyword_and_field_belongs_to_one_part():
     assert len(KEYWORDS) == sum(len(part.keywords) for part in PARTS)
-    fields = [name for part in PARTS for name, _, _ in part.fields]
+    fields = [f.name for part in PARTS for f in dataclasses.fields(part.fields)]
     assert len(fields) == len(set(fields))
     assert ["name", "source"] + fields == [f.name for f in dataclasses.fields(RobotType)]
+
+
+def test_robot_type_derives_from_every_parts_fields_in_order():
+    """A part in PARTS whose fields RobotType lacks (or in another order) is refused by name."""
+    check_bases(RobotType, PARTS)
+    with pytest.raises(TypeError, match="last part first: DriveFields, ArmFields, .* BodyFields, Named$"):
+        check_bases(RobotType, PARTS[1:] + PARTS[:1])
+    assert typing.get_type_hints(RobotType)["psds"] == tuple[PsdSpec, ...]
 
 
 def test_the_components_a_part_names_are_what_the_robot_builder_calls():
@@ -62,8 +72,8 @@ def test_the_components_a_part_names_are_what_the_robot_builder_calls():
 
 def test_the_schema_is_assembled_from_the_parts_fragments():
     published = schema("robot")
-    fields = {name for part in PARTS for name, _, _ in part.fields}
-    assert set(published["properties"]) == fields | {"format", "version", "name"}
+    fields = [f.name for part in PARTS for f in dataclasses.fields(part.fields)]
+    assert list(published["properties"]) == ["format", "version", "name", *fields]  # in the order files are written
     referenced = {ref.rsplit("/", 1)[1] for ref in _refs(published)}
     assert referenced == set(published["$defs"])  # every definition used, none missing
     for part in PARTS:

@@ -27,12 +27,13 @@ from eyesim.scene.lexer import LARGEST, Line, integer, number, quote_token
 class Part:
     """One kind of robot part.
 
-    `fields`: the robot type fields it owns, as (name, type, default). `keywords`: `.robi`
+    `fields`: the robot type fields it owns, as a frozen keyword-only dataclass whose every field
+    has its type, its default and its JSON Schema (`in_schema`); RobotType derives from it (scene/parts/).
+    The robot schema's `properties` are its fields' schemas. `keywords`: `.robi`
     keyword (lower case) -> function(reader, line) that reads such a line into `reader.fields`
     (or collects it in `reader.collected` for `finish`). `finish(reader)`: after the last line,
     turns what was collected into fields. `write(robot)`: its `.robi` lines in our dialect.
-    `properties`/`defs`: the JSON Schema of its fields (robot.schema.json `properties` and
-    `$defs`). `json_locations(robot, positions)`: where its values are in a JSON file, under the
+    `defs`: the schemas its fields refer to (robot.schema.json `$defs`, made with `record_of`). `json_locations(robot, positions)`: where its values are in a JSON file, under the
     keys its checks use ('psd:0', 'camera', ...). `check(robot, diagnostics, at)`: reports
     contradictions (errors) and what a usable robot lacks (warnings) once the robot type is read
     from either format, `at(key)` giving where a key was written; returns the fields it fills in.
@@ -42,16 +43,20 @@ class Part:
     reading files never loads the physics), called in this order with the robot's build context."""
 
     name: str
-    fields: tuple[tuple[str, Any, Any], ...]
+    fields: type
     keywords: dict[str, Callable[[PartReader, Line], None]]
     write: Callable[[Any], list[str]]
-    properties: dict
     defs: dict = field(default_factory=dict)
     finish: Callable[[PartReader], None] = lambda reader: None
     json_locations: Callable[[Any, Any], dict[str, Location]] = lambda robot, positions: {}
     check: Callable[[Any, Diagnostics, Callable[[str], Location]], dict] = lambda robot, diagnostics, at: {}
     servos: Callable[[Any], list[tuple[int, str, str]]] = lambda robot: []
     components: tuple[str, ...] = ()
+
+    @property
+    def properties(self) -> dict[str, dict]:
+        """The JSON Schema of each robot type field the part owns (robot.schema.json `properties`)."""
+        return schemas_of(self.fields)
 
 
 class PartReader(KeywordReader):
@@ -179,14 +184,21 @@ def in_schema(schema: dict) -> dict:
     return {SCHEMA: schema}
 
 
-def record_of(spec: type, title: str, description: str) -> dict:
-    """The JSON Schema of a spec dataclass, from its fields: each field's own schema (`in_schema`),
-    in the order they are declared; those without a default are required."""
+def schemas_of(spec: type) -> dict[str, dict]:
+    """Each field of a dataclass with its own schema (`in_schema`), in the order they are declared."""
     fields = dataclasses.fields(spec)
     unstated = [f.name for f in fields if SCHEMA not in f.metadata]
     if unstated:
         raise ValueError(f"{spec.__name__}: fields without a schema (in_schema): {', '.join(unstated)}")
+    return {f.name: f.metadata[SCHEMA] for f in fields}
+
+
+def record_of(spec: type, title: str, description: str) -> dict:
+    """The JSON Schema of a spec dataclass, from its fields (`schemas_of`); those without a
+    default are required."""
     required = tuple(
-        f.name for f in fields if f.default is dataclasses.MISSING and f.default_factory is dataclasses.MISSING
+        f.name
+        for f in dataclasses.fields(spec)
+        if f.default is dataclasses.MISSING and f.default_factory is dataclasses.MISSING
     )
-    return record(title, description, {f.name: f.metadata[SCHEMA] for f in fields}, required)
+    return record(title, description, schemas_of(spec), required)

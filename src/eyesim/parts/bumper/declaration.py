@@ -30,6 +30,13 @@ class BumperSpec:
         return FIRST_LINE + self.id
 
 
+@dataclass(frozen=True, kw_only=True)
+class BumperFields:
+    """What a robot type says about its bumpers."""
+
+    bumpers: tuple[BumperSpec, ...] = field(default=(), metadata=in_schema(list_of("bumper", "Bumpers")))
+
+
 def read_bumper(reader: PartReader, line: Line) -> None:
     if len(line.args) != 5:
         reader.arity(line, (5,), "<id> <x> <y> <angle> <width>")
@@ -82,11 +89,10 @@ def write(robot) -> list[str]:
 PART = Part(
     "bumper",
     components=("eyesim.parts.bumper.component:create",),
-    fields=(("bumpers", tuple[BumperSpec, ...], ()),),
+    fields=BumperFields,
     keywords={"bumper": read_bumper},
     write=write,
     finish=finish,
-    properties={"bumpers": list_of("bumper", "Bumpers")},
     defs={
         "bumper": record_of(BumperSpec, "Bumper", "a contact strip on the chassis edge, wired to digital input 8 + id")
     },

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import dataclasses
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
-from eyesim.parts.part import Part, PartReader, between, coordinate, flag, numbers, record, ref, whole
+from eyesim.parts.part import Part, PartReader, between, coordinate, flag, in_schema, numbers, record_of, ref, whole
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.lexer import Line, format_number, number
 
@@ -22,17 +22,30 @@ class CameraSpec:
     linearly onto that range. `fisheye` marks a fisheye lens whose field of view is `fov`.
     """
 
-    x: float
-    y: float
-    z: float
-    pan: float = 0.0
-    tilt: float = 0.0
-    fov: float = 60.0
-    pan_servo: int | None = None
-    tilt_servo: int | None = None
-    pan_range: tuple[float, float] = (-90.0, 90.0)
-    tilt_range: tuple[float, float] = (-90.0, 90.0)
-    fisheye: bool = False
+    x: float = field(metadata=in_schema(coordinate("x", "mm forward")))
+    y: float = field(metadata=in_schema(coordinate("y", "mm left")))
+    z: float = field(metadata=in_schema(coordinate("z", "mm up")))
+    pan: float = field(default=0.0, metadata=in_schema(coordinate("Pan", "default pan, degrees")))
+    tilt: float = field(default=0.0, metadata=in_schema(coordinate("Tilt", "default tilt, degrees")))
+    fov: float = field(default=60.0, metadata=in_schema(between(0, 360, "Field of view", "field of view in degrees")))
+    pan_servo: int | None = field(
+        default=None, metadata=in_schema(whole(1, "Pan servo", "servo driving the pan (its range is pan_range)"))
+    )
+    tilt_servo: int | None = field(default=None, metadata=in_schema(whole(1, "Tilt servo", "servo driving the tilt")))
+    pan_range: tuple[float, float] = field(
+        default=(-90.0, 90.0), metadata=in_schema(numbers(2, "Pan range", "(min, max) in degrees"))
+    )
+    tilt_range: tuple[float, float] = field(
+        default=(-90.0, 90.0), metadata=in_schema(numbers(2, "Tilt range", "(min, max) in degrees"))
+    )
+    fisheye: bool = field(default=False, metadata=in_schema(flag("Fisheye lens")))
+
+
+@dataclass(frozen=True, kw_only=True)
+class CameraFields:
+    """What a robot type says about its camera."""
+
+    camera: CameraSpec | None = field(default=None, metadata=in_schema(ref("camera")))
 
 
 def read_camera(reader: PartReader, line: Line) -> None:
@@ -169,31 +182,11 @@ def write(robot) -> list[str]:
 PART = Part(
     "camera",
     components=("eyesim.parts.camera.component:create",),
-    fields=(("camera", CameraSpec | None, None),),
+    fields=CameraFields,
     keywords={"camera": read_camera, "fov": _lens("fov"), "fisheye": _lens("fisheye")},
     write=write,
     finish=finish,
-    properties={"camera": ref("camera")},
-    defs={
-        "camera": record(
-            "Camera",
-            "a camera (robot frame)",
-            {
-                "x": coordinate("x", "mm forward"),
-                "y": coordinate("y", "mm left"),
-                "z": coordinate("z", "mm up"),
-                "pan": coordinate("Pan", "default pan, degrees"),
-                "tilt": coordinate("Tilt", "default tilt, degrees"),
-                "fov": between(0, 360, "Field of view", "field of view in degrees"),
-                "pan_servo": whole(1, "Pan servo", "servo driving the pan (its range is pan_range)"),
-                "tilt_servo": whole(1, "Tilt servo", "servo driving the tilt"),
-                "pan_range": numbers(2, "Pan range", "(min, max) in degrees"),
-                "tilt_range": numbers(2, "Tilt range", "(min, max) in degrees"),
-                "fisheye": flag("Fisheye lens"),
-            },
-            required=("x", "y", "z"),
-        )
-    },
+    defs={"camera": record_of(CameraSpec, "Camera", "a camera (robot frame)")},
     json_locations=lambda robot, positions: {"camera": positions.value(["camera"])},
     servos=servos,
 )

@@ -20,6 +20,13 @@ class LidarSpec:
     )
 
 
+@dataclass(frozen=True, kw_only=True)
+class LidarFields:
+    """What a robot type says about its lidar."""
+
+    lidar: LidarSpec | None = field(default=None, metadata=in_schema(ref("lidar")))
+
+
 def read_lidar(reader: PartReader, line: Line) -> None:
     if not reader.arity(line, (2, 3), "<points> <tilt>"):
         return
@@ -53,9 +60,8 @@ def write(robot) -> list[str]:
 PART = Part(
     "lidar",
     components=("eyesim.parts.lidar.component:create",),
-    fields=(("lidar", LidarSpec | None, None),),
+    fields=LidarFields,
     keywords={"lidar": read_lidar},
     write=write,
-    properties={"lidar": ref("lidar")},
     defs={"lidar": record_of(LidarSpec, "Lidar", "a 360-degree scanning lidar")},
 )

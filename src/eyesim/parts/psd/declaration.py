@@ -27,6 +27,13 @@ class PsdSpec:
     pitch: float = field(default=0.0, metadata=in_schema(coordinate("Pitch", "degrees, up positive")))
 
 
+@dataclass(frozen=True, kw_only=True)
+class PsdFields:
+    """What a robot type says about its PSDs."""
+
+    psds: tuple[PsdSpec, ...] = field(default=(), metadata=in_schema(list_of("psd", "PSD sensors")))
+
+
 def read_psd(reader: PartReader, line: Line) -> None:
     """Three forms: EyeSim 6 `psd NAME [id] x y z angle`, VR 1.x `psd id NAME x y z angle` and
     the 8-argument form with pitch, heading and roll."""
@@ -123,11 +130,10 @@ def write(robot) -> list[str]:
 PART = Part(
     "psd",
     components=("eyesim.parts.psd.component:create",),
-    fields=(("psds", tuple[PsdSpec, ...], ()),),
+    fields=PsdFields,
     keywords={"psd": read_psd},
     write=write,
     finish=finish,
-    properties={"psds": list_of("psd", "PSD sensors")},
     defs={"psd": record_of(PsdSpec, "PSD sensor", "a PSD distance sensor (robot frame)")},
     json_locations=lambda robot, positions: {f"psd:{i}": positions.value(["psds", i]) for i in range(len(robot.psds))},
     check=check,

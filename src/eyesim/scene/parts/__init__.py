@@ -3,18 +3,18 @@ dataclass, the `.robi` keyword table and the published robot JSON Schema.
 
 Adding a part kind = one folder, parts/<kind>/ (its declaration.py declares its PART, see
 parts/part.py; its component.py what it does in the simulation; its calls.py its RoBIOS
-handlers), + one line here. Kinds not yet in a folder of their own are modules of this package."""
+handlers), + its PART in PARTS and its fields among RobotType's bases here. Kinds not yet in a folder of their own are modules of this package."""
 
 from __future__ import annotations
 
-import dataclasses
+from dataclasses import dataclass
 
 from eyesim.parts.bumper import declaration as bumper
 from eyesim.parts.camera import declaration as camera
 from eyesim.parts.lidar import declaration as lidar
 from eyesim.parts.psd import declaration as psd
 from eyesim.scene.parts import arm, body, drive, thrusters, water, wheels
-from eyesim.parts.part import Part
+from eyesim.parts.part import Part, text
 
 # In this order the reader finishes them (the arm sits on the chassis: after the body), their
 # checks run, the writer writes their lines and RobotType lists their fields.
@@ -44,18 +44,49 @@ def _keywords() -> dict:
 
 KEYWORDS = _keywords()  # .robi keyword (lower case) -> function(reader, line)
 
-RobotType = dataclasses.make_dataclass(
-    "RobotType",
-    [("name", str), ("source", str)]
-    + [(name, kind, dataclasses.field(default=default)) for part in PARTS for name, kind, default in part.fields],
-    frozen=True,
-)
-RobotType.__module__ = "eyesim.scene.description"  # where it has always been imported from
-RobotType.__doc__ = """A robot type: what a .robi file (or a built-in definition) says about a robot.
 
-`name` and `source` (the file it came from), then the fields each part kind declares
-(scene/parts/): `drive` is one of the drive archetypes (scene/drives); a wheeled robot may also
-carry an `arm`: drive commands then move the base and servo commands the arm."""
+@dataclass(frozen=True)
+class Named:
+    """What every robot type has: its name and the file it came from (not written in files)."""
+
+    name: str
+    source: str
+
+
+# The bases are the parts' fields, last part first: a dataclass lists the fields of its last base
+# first, so RobotType's fields come in the order of PARTS, after `name` and `source`.
+@dataclass(frozen=True)
+class RobotType(
+    arm.ArmFields,
+    water.WaterFields,
+    thrusters.ThrustersFields,
+    lidar.LidarFields,
+    camera.CameraFields,
+    bumper.BumperFields,
+    psd.PsdFields,
+    wheels.WheelsFields,
+    body.BodyFields,
+    drive.DriveFields,
+    Named,
+):
+    """A robot type: what a .robi file (or a built-in definition) says about a robot.
+
+    `name` and `source` (the file it came from), then the fields each part kind declares
+    (parts/<kind>/declaration.py, scene/parts/): `drive` is one of the drive archetypes
+    (scene/drives); a wheeled robot may also carry an `arm`: drive commands then move the base and
+    servo commands the arm."""
+
+
+def check_bases(robot_type: type, parts: tuple[Part, ...]) -> None:
+    """Refuses a robot type class whose bases are not the parts' fields, last part first."""
+    expected = tuple(part.fields for part in reversed(parts)) + (Named,)
+    if robot_type.__bases__ != expected:
+        names = ", ".join(base.__name__ for base in expected)
+        raise TypeError(f"RobotType must derive from the parts' fields, last part first: {names}")
+
+
+check_bases(RobotType, PARTS)
+RobotType.__module__ = "eyesim.scene.description"  # where it has always been imported from
 
 ROBOT_SCHEMA_HEAD = {
     "$schema": "https://json-schema.org/draft/2020-12/schema",
@@ -71,6 +102,7 @@ def robot_schema() -> dict:
     properties = {
         "format": {"title": "Format", "const": "eyesim.robot", "description": "which EyeSim file format this is"},
         "version": {"title": "Version", "const": 1, "description": "format version"},
+        "name": text("Name"),
     }
     defs: dict = {}
     for part in PARTS:

@@ -3,11 +3,23 @@ robot/components/arm.py and gripper.py."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.lexer import Line, format_number, quote_token
-from eyesim.parts.part import Part, PartReader, choice, coordinate, list_of, positive, record, ref, text, whole
+from eyesim.parts.part import (
+    Part,
+    PartReader,
+    choice,
+    coordinate,
+    in_schema,
+    list_of,
+    positive,
+    record_of,
+    ref,
+    text,
+    whole,
+)
 
 
 @dataclass(frozen=True)
@@ -17,15 +29,15 @@ class JointSpec:
     its zero offset and the limits are degrees; a 'prismatic' joint slides: d is its zero offset
     and the limits are mm. SERVOSet(servo, 0..255) maps linearly onto [min, max]."""
 
-    name: str
-    servo: int
-    kind: str  # 'revolute' | 'prismatic'
-    d: float
-    theta: float
-    a: float
-    alpha: float
-    min: float
-    max: float
+    name: str = field(metadata=in_schema(text("Name")))
+    servo: int = field(metadata=in_schema(whole(1, "Servo")))
+    kind: str = field(metadata=in_schema(choice("Kind", ["revolute", "prismatic"])))
+    d: float = field(metadata=in_schema(coordinate("d", "mm")))
+    theta: float = field(metadata=in_schema(coordinate("theta", "degrees")))
+    a: float = field(metadata=in_schema(coordinate("a", "mm")))
+    alpha: float = field(metadata=in_schema(coordinate("alpha", "degrees")))
+    min: float = field(metadata=in_schema(coordinate("Minimum", "degrees (revolute) or mm (prismatic)")))
+    max: float = field(metadata=in_schema(coordinate("Maximum")))
 
 
 @dataclass(frozen=True)
@@ -33,9 +45,9 @@ class GripperSpec:
     """A two-finger gripper on the last joint: servo 0 = closed, 255 = open `opening` mm;
     it squeezes with at most `force` newtons."""
 
-    servo: int
-    opening: float
-    force: float
+    servo: int = field(metadata=in_schema(whole(1, "Servo")))
+    opening: float = field(metadata=in_schema(positive("Opening", "mm")))
+    force: float = field(metadata=in_schema(positive("Force", "N")))
 
 
 @dataclass(frozen=True)
@@ -43,12 +55,19 @@ class ArmSpec:
     """A manipulator arm mounted at (x, y, z) mm on the robot (robot frame), its base turned
     by `heading` degrees; joints from the base outwards."""
 
-    x: float = 0.0
-    y: float = 0.0
-    z: float = 0.0
-    heading: float = 0.0
-    joints: tuple[JointSpec, ...] = ()
-    gripper: GripperSpec | None = None
+    x: float = field(default=0.0, metadata=in_schema(coordinate("x")))
+    y: float = field(default=0.0, metadata=in_schema(coordinate("y")))
+    z: float = field(default=0.0, metadata=in_schema(coordinate("z")))
+    heading: float = field(default=0.0, metadata=in_schema(coordinate("Heading")))
+    joints: tuple[JointSpec, ...] = field(default=(), metadata=in_schema(list_of("joint", "Joints")))
+    gripper: GripperSpec | None = field(default=None, metadata=in_schema(ref("gripper")))
+
+
+@dataclass(frozen=True, kw_only=True)
+class ArmFields:
+    """What a robot type says about its arm."""
+
+    arm: ArmSpec | None = field(default=None, metadata=in_schema(ref("arm")))
 
 
 def read_arm(reader: PartReader, line: Line) -> None:
@@ -148,50 +167,14 @@ PART = Part(
         "eyesim.robot.components.arm:create",
         "eyesim.robot.components.gripper:create",
     ),
-    fields=(("arm", ArmSpec | None, None),),
+    fields=ArmFields,
     keywords={"arm": read_arm, "joint": read_joint, "gripper": read_gripper},
     write=write,
     finish=finish,
-    properties={"arm": ref("arm")},
     defs={
-        "joint": record(
-            "Joint",
-            "an arm joint by its Denavit-Hartenberg parameters",
-            {
-                "name": text("Name"),
-                "servo": whole(1, "Servo"),
-                "kind": choice("Kind", ["revolute", "prismatic"]),
-                "d": coordinate("d", "mm"),
-                "theta": coordinate("theta", "degrees"),
-                "a": coordinate("a", "mm"),
-                "alpha": coordinate("alpha", "degrees"),
-                "min": coordinate("Minimum", "degrees (revolute) or mm (prismatic)"),
-                "max": coordinate("Maximum"),
-            },
-            required=("name", "servo", "kind", "d", "theta", "a", "alpha", "min", "max"),
-        ),
-        "gripper": record(
-            "Gripper",
-            "a two-finger gripper",
-            {
-                "servo": whole(1, "Servo"),
-                "opening": positive("Opening", "mm"),
-                "force": positive("Force", "N"),
-            },
-            required=("servo", "opening", "force"),
-        ),
-        "arm": record(
-            "Arm",
-            "a manipulator arm and where it is mounted",
-            {
-                "x": coordinate("x"),
-                "y": coordinate("y"),
-                "z": coordinate("z"),
-                "heading": coordinate("Heading"),
-                "joints": list_of("joint", "Joints"),
-                "gripper": ref("gripper"),
-            },
-        ),
+        "joint": record_of(JointSpec, "Joint", "an arm joint by its Denavit-Hartenberg parameters"),
+        "gripper": record_of(GripperSpec, "Gripper", "a two-finger gripper"),
+        "arm": record_of(ArmSpec, "Arm", "a manipulator arm and where it is mounted"),
     },
     json_locations=json_locations,
     check=check,

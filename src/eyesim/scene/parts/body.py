@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -15,10 +15,11 @@ from eyesim.parts.part import (
     PartReader,
     choice,
     coordinate,
+    in_schema,
     list_of,
     numbers,
     positive,
-    record,
+    record_of,
     text,
 )
 
@@ -30,6 +31,8 @@ CHASSIS_CLEARANCE = 0.012  # m between the floor and the chassis bottom of a whe
 GLIDER_LIFT = 1.0  # mm a gliding hull collider stays above the floor at least (as the drives' casters)
 MAX_DENSITY = 8.0  # g/cm3: a robot heavier than solid steel of its size is a typo
 ESTIMATED_DENSITY = 0.5  # g/cm3 of a typical small robot (S4: 0.8 kg in 2.4 litres)
+DEFAULTS = {"length": 180.0, "width": 150.0, "height": 80.0}
+POINT = "(x, y, z) in mm"
 COLLIDER_FORMS = {
     "box": ("<sx> <sy> <sz> <cx> <cy> <cz>", 6),
     "sphere": ("<r> <cx> <cy> <cz>", 4),
@@ -51,10 +54,63 @@ class Collider:
     centre and, for capsules/cylinders, the axis letter. A capsule's h is its full length
     including the two caps (as in the VR files)."""
 
-    kind: str
-    size: tuple[float, ...]
-    center: tuple[float, float, float] = (0.0, 0.0, 0.0)
-    axis: str = "z"
+    kind: str = field(metadata=in_schema(choice("Shape", ["box", "sphere", "capsule", "cylinder"])))
+    size: tuple[float, ...] = field(
+        metadata=in_schema(
+            {
+                "title": "Size",
+                "type": "array",
+                "items": {"type": "number", "exclusiveMinimum": 0, "maximum": LARGEST},
+                "minItems": 1,
+                "maxItems": 3,
+                "description": "box: (sx, sy, sz); sphere: (r); capsule, cylinder: (r, h) in mm",
+            }
+        )
+    )
+    center: tuple[float, float, float] = field(default=(0.0, 0.0, 0.0), metadata=in_schema(numbers(3, "Centre", POINT)))
+    axis: str = field(default="z", metadata=in_schema(choice("Axis", ["x", "y", "z"], "capsule or cylinder axis")))
+
+
+@dataclass(frozen=True, kw_only=True)
+class BodyFields:
+    """What a robot type says about its chassis (its name is the robot type's own)."""
+
+    mass: float = field(default=0.6, metadata=in_schema(positive("Mass", "kg")))
+    length: float = field(default=DEFAULTS["length"], metadata=in_schema(positive("Length", "chassis mm")))
+    width: float = field(default=DEFAULTS["width"], metadata=in_schema(positive("Width", "chassis mm")))
+    height: float = field(default=DEFAULTS["height"], metadata=in_schema(positive("Height", "chassis mm")))
+    color: tuple[int, int, int] = field(
+        default=(40, 90, 200),
+        metadata=in_schema(
+            numbers(
+                3, "Colour", "colour (red, green, blue), each 0..255", {"type": "integer", "minimum": 0, "maximum": 255}
+            )
+        ),
+    )
+    max_speed: float = field(default=600.0, metadata=in_schema(positive("Top speed", "mm/s")))
+    max_turn: float = field(default=300.0, metadata=in_schema(positive("Top turn rate", "deg/s")))
+    axis_offset: float = field(  # mm the drive axle sits ahead (+) of the robot centre
+        default=0.0,
+        metadata=in_schema(coordinate("Drive axle position", "mm the drive axle sits ahead of the centre")),
+    )
+    axle_height: float | None = field(  # None = the wheel radius
+        default=None, metadata=in_schema(positive("Drive axle height", "mm"))
+    )
+    model: str | None = field(
+        default=None, metadata=in_schema(text("3-D model", "3-D model file, relative to this file"))
+    )
+    model_offset: tuple[float, float, float] = field(
+        default=(0.0, 0.0, 0.0),
+        metadata=in_schema(numbers(3, "Model offset", "mesh offset in the mesh's axes (X right, Y up, Z forward), mm")),
+    )
+    model_rotation: tuple[float, float, float] = field(
+        default=(0.0, 0.0, 0.0),
+        metadata=in_schema(numbers(3, "Model rotation", "mesh rotation about the mesh's X, Y, Z axes, degrees")),
+    )
+    colliders: tuple[Collider, ...] = field(default=(), metadata=in_schema(list_of("collider", "Colliders")))
+    center_of_mass: tuple[float, float, float] | None = field(  # robot frame
+        default=None, metadata=in_schema(numbers(3, "Centre of mass", POINT))
+    )
 
 
 def read_name(reader: PartReader, line: Line) -> None:
@@ -281,27 +337,9 @@ def write(robot) -> list[str]:
     return out
 
 
-DEFAULTS = {"length": 180.0, "width": 150.0, "height": 80.0}
-POINT = "(x, y, z) in mm"
-
 PART = Part(
     "body",
-    fields=(
-        ("mass", float, 0.6),  # kg
-        ("length", float, DEFAULTS["length"]),  # chassis mm
-        ("width", float, DEFAULTS["width"]),
-        ("height", float, DEFAULTS["height"]),
-        ("color", tuple[int, int, int], (40, 90, 200)),
-        ("max_speed", float, 600.0),  # mm/s
-        ("max_turn", float, 300.0),  # deg/s
-        ("axis_offset", float, 0.0),  # mm the drive axle sits ahead (+) of the robot centre
-        ("axle_height", float | None, None),  # mm; None = the wheel radius
-        ("model", str | None, None),
-        ("model_offset", tuple[float, float, float], (0.0, 0.0, 0.0)),  # mm, mesh axes (X right, Y up, Z forward)
-        ("model_rotation", tuple[float, float, float], (0.0, 0.0, 0.0)),  # deg about the mesh's X, Y, Z
-        ("colliders", tuple[Collider, ...], ()),
-        ("center_of_mass", tuple[float, float, float] | None, None),  # mm, robot frame
-    ),
+    fields=BodyFields,
     keywords={
         "name": read_name,
         "diameter": read_diameter,
@@ -316,45 +354,7 @@ PART = Part(
     },
     write=write,
     finish=finish,
-    properties={
-        "name": text("Name"),
-        "mass": positive("Mass", "kg"),
-        "length": positive("Length", "chassis mm"),
-        "width": positive("Width", "chassis mm"),
-        "height": positive("Height", "chassis mm"),
-        "color": numbers(
-            3, "Colour", "colour (red, green, blue), each 0..255", {"type": "integer", "minimum": 0, "maximum": 255}
-        ),
-        "max_speed": positive("Top speed", "mm/s"),
-        "max_turn": positive("Top turn rate", "deg/s"),
-        "axis_offset": coordinate("Drive axle position", "mm the drive axle sits ahead of the centre"),
-        "axle_height": positive("Drive axle height", "mm"),
-        "model": text("3-D model", "3-D model file, relative to this file"),
-        "model_offset": numbers(3, "Model offset", "mesh offset in the mesh's axes (X right, Y up, Z forward), mm"),
-        "model_rotation": numbers(3, "Model rotation", "mesh rotation about the mesh's X, Y, Z axes, degrees"),
-        "colliders": list_of("collider", "Colliders"),
-        "center_of_mass": numbers(3, "Centre of mass", POINT),
-    },
-    defs={
-        "collider": record(
-            "Collider",
-            "a collision shape (mm)",
-            {
-                "kind": choice("Shape", ["box", "sphere", "capsule", "cylinder"]),
-                "size": {
-                    "title": "Size",
-                    "type": "array",
-                    "items": {"type": "number", "exclusiveMinimum": 0, "maximum": LARGEST},
-                    "minItems": 1,
-                    "maxItems": 3,
-                    "description": "box: (sx, sy, sz); sphere: (r); capsule, cylinder: (r, h) in mm",
-                },
-                "center": numbers(3, "Centre", POINT),
-                "axis": choice("Axis", ["x", "y", "z"], "capsule or cylinder axis"),
-            },
-            required=("kind", "size"),
-        )
-    },
+    defs={"collider": record_of(Collider, "Collider", "a collision shape (mm)")},
     json_locations=lambda robot, positions: {"mass": positions.key(["mass"])},
     check=check,
 )

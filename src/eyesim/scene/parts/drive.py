@@ -3,13 +3,38 @@ motor and encoder names."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass, field
+
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.drives import DRIVES, drive_named, drive_of
 from eyesim.scene.lexer import Line
-from eyesim.parts.part import Part, PartReader, choice
+from eyesim.parts.part import Part, PartReader, choice, in_schema
 from eyesim.scene.parts.wheels import DEFAULT_WHEELS
 
 DRIVE_CHOICES = ", ".join(drive.keyword for drive in DRIVES[:-1]) + f" or {DRIVES[-1].keyword}"
+
+
+@dataclass(frozen=True, kw_only=True)
+class DriveFields:
+    """Which drive archetype moves a robot type, and its EyeSim 6 motor and encoder names."""
+
+    drive: str = field(
+        default="differential",
+        metadata=in_schema(
+            choice("Drive", [drive.name for drive in DRIVES], "the drive archetype that moves the robot")
+        ),
+    )
+    drive_motors: tuple[str, ...] = field(
+        default=(),
+        metadata=in_schema(
+            {
+                "title": "EyeSim 6 motor names",
+                "type": "array",
+                "items": {"type": "string"},
+                "description": "EyeSim 6 motor and encoder names",
+            }
+        ),
+    )
 
 
 def read_drive(reader: PartReader, line: Line) -> None:
@@ -47,18 +72,9 @@ def write(robot) -> list[str]:
 
 PART = Part(
     "drive",
-    fields=(("drive", str, "differential"), ("drive_motors", tuple[str, ...], ())),
+    fields=DriveFields,
     keywords={"drive": read_drive},
     write=write,
-    properties={
-        "drive": choice("Drive", [drive.name for drive in DRIVES], "the drive archetype that moves the robot"),
-        "drive_motors": {
-            "title": "EyeSim 6 motor names",
-            "type": "array",
-            "items": {"type": "string"},
-            "description": "EyeSim 6 motor and encoder names",
-        },
-    },
     json_locations=lambda robot, positions: {"drive": positions.key(["drive"])},
     check=check,
 )

@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from eyesim.scene.lexer import Line, format_number, quote_token
-from eyesim.parts.part import Part, PartReader, coordinate, list_of, positive, record, text, whole
+from eyesim.parts.part import Part, PartReader, coordinate, in_schema, list_of, positive, record_of, text, whole
 
 
 @dataclass(frozen=True)
@@ -13,15 +13,22 @@ class ThrusterSpec:
     """A thruster: RoBIOS motor number, position (mm, robot frame), thrust direction (robot
     frame, any length), and the thrust in newtons at motor speed 100 (negative speeds reverse)."""
 
-    name: str
-    motor: int
-    x: float
-    y: float
-    z: float
-    dx: float
-    dy: float
-    dz: float
-    max_thrust: float
+    name: str = field(metadata=in_schema(text("Name")))
+    motor: int = field(metadata=in_schema(whole(1, "Motor", "RoBIOS motor number")))
+    x: float = field(metadata=in_schema(coordinate("x", "mm forward")))
+    y: float = field(metadata=in_schema(coordinate("y", "mm left")))
+    z: float = field(metadata=in_schema(coordinate("z", "mm up")))
+    dx: float = field(metadata=in_schema(coordinate("Direction x")))
+    dy: float = field(metadata=in_schema(coordinate("Direction y")))
+    dz: float = field(metadata=in_schema(coordinate("Direction z")))
+    max_thrust: float = field(metadata=in_schema(positive("Thrust", "newtons at motor speed 100")))
+
+
+@dataclass(frozen=True, kw_only=True)
+class ThrustersFields:
+    """What a robot type says about its thrusters."""
+
+    thrusters: tuple[ThrusterSpec, ...] = field(default=(), metadata=in_schema(list_of("thruster", "Thrusters")))
 
 
 def read_thruster(reader: PartReader, line: Line) -> None:
@@ -72,28 +79,10 @@ def write(robot) -> list[str]:
 PART = Part(
     "thrusters",
     components=("eyesim.robot.components.thrusters:create",),
-    fields=(("thrusters", tuple[ThrusterSpec, ...], ()),),
+    fields=ThrustersFields,
     keywords={"thruster": read_thruster},
     write=write,
-    properties={"thrusters": list_of("thruster", "Thrusters")},
-    defs={
-        "thruster": record(
-            "Thruster",
-            "a thruster",
-            {
-                "name": text("Name"),
-                "motor": whole(1, "Motor", "RoBIOS motor number"),
-                "x": coordinate("x", "mm forward"),
-                "y": coordinate("y", "mm left"),
-                "z": coordinate("z", "mm up"),
-                "dx": coordinate("Direction x"),
-                "dy": coordinate("Direction y"),
-                "dz": coordinate("Direction z"),
-                "max_thrust": positive("Thrust", "newtons at motor speed 100"),
-            },
-            required=("name", "motor", "x", "y", "z", "dx", "dy", "dz", "max_thrust"),
-        )
-    },
+    defs={"thruster": record_of(ThrusterSpec, "Thruster", "a thruster")},
     json_locations=lambda robot, positions: {
         f"thruster:{i}": positions.value(["thrusters", i]) for i in range(len(robot.thrusters))
     },

@@ -3,11 +3,11 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.lexer import Line, format_number
-from eyesim.parts.part import Part, PartReader, at_least, coordinate, record, ref
+from eyesim.parts.part import Part, PartReader, at_least, coordinate, in_schema, record_of, ref
 
 
 @dataclass(frozen=True)
@@ -15,10 +15,10 @@ class BuoyancySpec:
     """Displaced volume in litres (1 litre of water lifts about 1 kg) acting at the centre of
     buoyancy (mm, robot frame)."""
 
-    volume: float
-    x: float = 0.0
-    y: float = 0.0
-    z: float = 0.0
+    volume: float = field(metadata=in_schema(at_least(0, "Volume", "displaced litres")))
+    x: float = field(default=0.0, metadata=in_schema(coordinate("x")))
+    y: float = field(default=0.0, metadata=in_schema(coordinate("y")))
+    z: float = field(default=0.0, metadata=in_schema(coordinate("z")))
 
 
 @dataclass(frozen=True)
@@ -26,10 +26,30 @@ class DragSpec:
     """Linear drag in water: force per speed along the robot's x, y, z axes in N/(m/s), and a
     rotational drag torque per turn rate in N*m/(rad/s)."""
 
-    x: float
-    y: float
-    z: float
-    rotation: float = 0.0
+    x: float = field(metadata=in_schema(at_least(0, "Drag along x", "N/(m/s) along x")))
+    y: float = field(metadata=in_schema(at_least(0, "Drag along y", "N/(m/s) along y")))
+    z: float = field(metadata=in_schema(at_least(0, "Drag along z", "N/(m/s) along z")))
+    rotation: float = field(default=0.0, metadata=in_schema(at_least(0, "Rotational drag", "N*m/(rad/s)")))
+
+
+@dataclass(frozen=True, kw_only=True)
+class WaterFields:
+    """What a robot type says about how it floats and moves through water."""
+
+    buoyancy: BuoyancySpec | None = field(default=None, metadata=in_schema(ref("buoyancy")))
+    drag: DragSpec | None = field(default=None, metadata=in_schema(ref("drag")))
+    start_depth: float | None = field(  # mm the hull's top starts below the surface
+        default=None,
+        metadata=in_schema(
+            at_least(
+                0,
+                "Start depth",
+                "mm the hull's top starts below the water's surface "
+                "(a robot placed in a scene under water; else it starts afloat if it "
+                "floats, on the pool floor if not)",
+            )
+        ),
+    )
 
 
 def read_buoyancy(reader: PartReader, line: Line) -> None:
@@ -85,46 +105,11 @@ def write(robot) -> list[str]:
 PART = Part(
     "water",
     components=("eyesim.robot.components.buoyancy:create",),
-    fields=(
-        ("buoyancy", BuoyancySpec | None, None),
-        ("drag", DragSpec | None, None),
-        ("start_depth", float | None, None),
-    ),  # mm the hull's top starts below the surface
+    fields=WaterFields,
     keywords={"buoyancy": read_buoyancy, "drag": read_drag, "depth": read_depth},
     write=write,
-    properties={
-        "buoyancy": ref("buoyancy"),
-        "drag": ref("drag"),
-        "start_depth": at_least(
-            0,
-            "Start depth",
-            "mm the hull's top starts below the water's surface "
-            "(a robot placed in a scene under water; else it starts afloat if it "
-            "floats, on the pool floor if not)",
-        ),
-    },
     defs={
-        "buoyancy": record(
-            "Buoyancy",
-            "buoyancy and its centre (mm)",
-            {
-                "volume": at_least(0, "Volume", "displaced litres"),
-                "x": coordinate("x"),
-                "y": coordinate("y"),
-                "z": coordinate("z"),
-            },
-            required=("volume",),
-        ),
-        "drag": record(
-            "Drag",
-            "linear drag in water",
-            {
-                "x": at_least(0, "Drag along x", "N/(m/s) along x"),
-                "y": at_least(0, "Drag along y", "N/(m/s) along y"),
-                "z": at_least(0, "Drag along z", "N/(m/s) along z"),
-                "rotation": at_least(0, "Rotational drag", "N*m/(rad/s)"),
-            },
-            required=("x", "y", "z"),
-        ),
+        "buoyancy": record_of(BuoyancySpec, "Buoyancy", "buoyancy and its centre (mm)"),
+        "drag": record_of(DragSpec, "Drag", "linear drag in water"),
     },
 )

@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from eyesim.scene.diagnostics import quoted
 from eyesim.scene.drives import drive_of
 from eyesim.scene.lexer import Line, format_number
-from eyesim.parts.part import Part, PartReader, coordinate, positive, record, ref, whole
+from eyesim.parts.part import Part, PartReader, coordinate, in_schema, positive, record_of, ref, whole
 
 
 @dataclass(frozen=True)
@@ -15,10 +15,10 @@ class WheelSpec:
     """Wheels of a wheeled drive: diameter mm, max speed deg/s, encoder ticks per revolution,
     track = full distance between the left and right wheel contact points in mm."""
 
-    diameter: float
-    max_speed: float
-    ticks_per_rev: int
-    track: float
+    diameter: float = field(metadata=in_schema(positive("Diameter", "mm")))
+    max_speed: float = field(metadata=in_schema(positive("Top speed", "deg/s")))
+    ticks_per_rev: int = field(metadata=in_schema(whole(1, "Encoder ticks", "encoder ticks per revolution")))
+    track: float = field(metadata=in_schema(positive("Track", "full distance between the left and right wheels in mm")))
 
 
 @dataclass(frozen=True)
@@ -26,9 +26,17 @@ class SteeringSpec:
     """The steered axle of an Ackermann robot: `offset` mm ahead (+) of the robot centre,
     axle `height` mm above the floor (None = wheel radius) and its wheels (None = as driven)."""
 
-    offset: float
-    height: float | None = None
-    wheels: WheelSpec | None = None
+    offset: float = field(metadata=in_schema(coordinate("Position", "mm ahead of the robot centre")))
+    height: float | None = field(default=None, metadata=in_schema(positive("Height", "axle height in mm")))
+    wheels: WheelSpec | None = field(default=None, metadata=in_schema(ref("wheels")))
+
+
+@dataclass(frozen=True, kw_only=True)
+class WheelsFields:
+    """What a robot type says about its driven wheels and, on an Ackermann robot, its steered axle."""
+
+    wheels: WheelSpec | None = field(default=None, metadata=in_schema(ref("wheels")))
+    steering: SteeringSpec | None = field(default=None, metadata=in_schema(ref("steering")))  # Ackermann only
 
 
 DEFAULT_WHEELS = WheelSpec(54.0, 3600.0, 1100, 90.0)  # the S4's
@@ -112,32 +120,12 @@ def write(robot) -> list[str]:
 
 PART = Part(
     "wheels",
-    fields=(("wheels", WheelSpec | None, None), ("steering", SteeringSpec | None, None)),  # steering: Ackermann only
+    fields=WheelsFields,
     keywords={"wheel": read_wheel, "axel": read_axel},
     write=write,
     finish=finish,
-    properties={"wheels": ref("wheels"), "steering": ref("steering")},
     defs={
-        "wheels": record(
-            "Wheels",
-            "wheels",
-            {
-                "diameter": positive("Diameter", "mm"),
-                "max_speed": positive("Top speed", "deg/s"),
-                "ticks_per_rev": whole(1, "Encoder ticks", "encoder ticks per revolution"),
-                "track": positive("Track", "full distance between the left and right wheels in mm"),
-            },
-            required=("diameter", "max_speed", "ticks_per_rev", "track"),
-        ),
-        "steering": record(
-            "Steering",
-            "the steered axle (Ackermann)",
-            {
-                "offset": coordinate("Position", "mm ahead of the robot centre"),
-                "height": positive("Height", "axle height in mm"),
-                "wheels": ref("wheels"),
-            },
-            required=("offset",),
-        ),
+        "wheels": record_of(WheelSpec, "Wheels", "wheels"),
+        "steering": record_of(SteeringSpec, "Steering", "the steered axle (Ackermann)"),
     },
 )
