@@ -169,7 +169,7 @@ def ref(definition: str) -> dict:
 
 def record(title: str, description: str, properties: dict, required: tuple[str, ...] = ()) -> dict:
     """An object with exactly these properties."""
-    schema = {"title": title, "type": "object", "description": description}
+    schema: dict = {"title": title, "type": "object", "description": description}
     if required:
         schema["required"] = list(required)
     return {**schema, "additionalProperties": False, "properties": properties}

@@ -65,9 +65,14 @@ class Robot:
             found = self._of_class[cls] = [c for c in self.components if isinstance(c, cls)]
         return found
 
+    def _bound(self) -> PhysicsWorld:
+        if self.world is None:
+            raise RuntimeError(f"robot {self.id} ({self.name}) is not in a world yet (bind it first)")
+        return self.world
+
     def pose(self) -> tuple[float, float, float, float]:
         """True pose: x, y, z in metres (z of the floor-level origin), heading in radians."""
-        return self.world.pose(self.body)
+        return self._bound().pose(self.body)
 
     def pose_mm(self) -> tuple[float, float, float, float]:
         """True pose in mm and degrees, as SIMGetRobot reports it."""
@@ -78,4 +83,4 @@ class Robot:
         """Teleport the robot (like picking it up): its encoders and odometry don't notice."""
         if self.mounted:
             raise MountedRobotError(f"robot {self.id} ({self.name}) is mounted on the floor and cannot be moved")
-        self.world.set_free_pose(self.body, x, y, z, yaw)
+        self._bound().set_free_pose(self.body, x, y, z, yaw)

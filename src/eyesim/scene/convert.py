@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any, Callable
 
 from eyesim.scene.diagnostics import Diagnostics
 from eyesim.scene.esobj import write_esobj
@@ -13,7 +14,14 @@ from eyesim.scene.robi import write_robi
 from eyesim.scene.sim import write_sim
 from eyesim.scene.wld import write_wld
 
-TEXT_WRITERS = {"scene": write_sim, "world": write_wld, "maze": write_maz, "robot": write_robi, "object": write_esobj}
+# kind -> the writer of a document of that kind (read_document gives the kind with the document)
+TEXT_WRITERS: dict[str, Callable[[Any], str]] = {
+    "scene": write_sim,
+    "world": write_wld,
+    "maze": write_maz,
+    "robot": write_robi,
+    "object": write_esobj,
+}
 TEXT_SUFFIX = {"scene": ".sim", "world": ".wld", "maze": ".maz", "robot": ".robi", "object": ".esObj"}
 
 

@@ -180,9 +180,8 @@ class _ObjectReader(KeywordReader):
         return ObjectType(source=self.source, **fields)
 
     def _point(self, values: list[float], scale: float) -> tuple[float, float, float]:
-        if self.ours:
-            return tuple(values)
-        return tuple(_scaled(v, scale) for v in vr_to_robot(*values))
+        x, y, z = values if self.ours else (_scaled(v, scale) for v in vr_to_robot(*values))
+        return x, y, z
 
     def _collider(self, kind: str, values: list[float], axis: str, scale: float) -> Collider:
         centre = self._point(values[:3], scale)

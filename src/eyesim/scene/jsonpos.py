@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-import json
 import re
+from json.decoder import scanstring  # type: ignore[attr-defined]  # public in the module, not in typeshed
 
 _NUMBER = re.compile(r"-?(?:0|[1-9]\d*)(?:\.\d+)?(?:[eE][+-]?\d+)?")
 _SPACE = re.compile(r"[ \t\n\r]*")
@@ -38,7 +38,7 @@ class _Scanner:
         return (lo + 1, offset - self.line_starts[lo] + 1)
 
     def skip(self) -> None:
-        self.i = _SPACE.match(self.text, self.i).end()
+        self.i = self._past(_SPACE)
 
     def value(self, path: Path) -> None:
         self.skip()
@@ -53,7 +53,7 @@ class _Scanner:
             while True:
                 self.skip()
                 key_at = self.i
-                key, self.i = json.decoder.scanstring(self.text, self.i + 1)
+                key, self.i = scanstring(self.text, self.i + 1)
                 self.keys[path + (key,)] = self.position(key_at)
                 self.skip()
                 self.i += 1  # ':'
@@ -79,8 +79,14 @@ class _Scanner:
                 if c == "]":
                     return
         elif c == '"':
-            _, self.i = json.decoder.scanstring(self.text, self.i + 1)
+            _, self.i = scanstring(self.text, self.i + 1)
         elif c in "tfn":
             self.i += {"t": 4, "f": 5, "n": 4}[c]
         else:
-            self.i = _NUMBER.match(self.text, self.i).end()
+            self.i = self._past(_NUMBER)
+
+    def _past(self, pattern: re.Pattern) -> int:
+        """Where what `pattern` matches at the scanner's place ends."""
+        match = pattern.match(self.text, self.i)
+        assert match is not None, "the text is valid JSON: a number or (maybe empty) space is here"
+        return match.end()

@@ -51,7 +51,8 @@ class KeywordReader:
 
     def numbers(self, line: Line, first: int, names: tuple[str, ...]) -> list[float] | None:
         """Arguments first.. (1-based token index) as numbers; every bad one is reported."""
-        values, ok = [], True
+        values: list[float] = []
+        ok = True
         for offset, name in enumerate(names):
             token = line.tokens[first + offset]
             value = number(token.text)
@@ -60,5 +61,6 @@ class KeywordReader:
                     line, f"{line.keyword}: expected {name} (a number), found {quoted(token.text)}", first + offset
                 )
                 ok = False
-            values.append(value)
+            else:
+                values.append(value)
         return values if ok else None

@@ -198,7 +198,7 @@ def _settle(pose: Pose, extent, walls: _Grid) -> tuple[Pose, Wall | None]:
 def _separation(a, b) -> tuple[float, float] | None:
     """None when two footprints (corner lists of rectangles) do not overlap (touching is not
     overlapping), else the shortest shift of `a` that takes it off `b` (separating axes)."""
-    best = None
+    best: tuple[float, float, float] | None = None
     for corners in (a, b):
         for k in range(4):
             (x1, y1), (x2, y2) = corners[k], corners[(k + 1) % 4]
@@ -212,6 +212,7 @@ def _separation(a, b) -> tuple[float, float] | None:
             shift = (forward, nx, ny) if forward < backward else (backward, -nx, -ny)
             if best is None or shift[0] < best[0]:
                 best = shift
+    assert best is not None, "each of the eight axes either separates them or sets best"
     depth, nx, ny = best
     return (depth + CLEARANCE) * nx, (depth + CLEARANCE) * ny
 
@@ -268,7 +269,9 @@ def _free_place(pose: Pose, extent, other: _Body, walls: _Grid, bodies: _Grid) -
         corners = _corners(candidate, extent)
         return _first_overlap(corners, bodies) is None and _clear_of_walls(candidate, extent, walls)
 
-    sx, sy = _separation(_corners(pose, extent), other.corners)
+    shift = _separation(_corners(pose, extent), other.corners)
+    assert shift is not None, "`other` is a body that `pose` overlaps"
+    sx, sy = shift
     pushed = replace(pose, x=float(round(pose.x + sx)), y=float(round(pose.y + sy)))
     if free(pushed):
         return pushed
@@ -384,6 +387,5 @@ def clear_place(
         pose = replace(pose, x=float(round(pose.x)), y=float(round(pose.y)))
     other = _first_overlap(_corners(pose, own), bodies)
     if other is not None:
-        overlapped = other.describe()
-        pose = _free_place(pose, own, other, wall_grid, bodies)
+        return _free_place(pose, own, other, wall_grid, bodies), other.describe()
     return pose, overlapped

@@ -8,8 +8,8 @@ written because whether a name is a robot or an object depends on the files it l
 from __future__ import annotations
 
 import difflib
-
 from dataclasses import dataclass
+from typing import Any
 
 from eyesim.scene.description import Location, Marker, Settings
 from eyesim.scene.diagnostics import Diagnostics, quoted
@@ -80,7 +80,8 @@ class _SceneReader(KeywordReader):
         super().__init__(source, diagnostics)
         self.world: Reference | None = None
         self.flags: set[str] = set()
-        self.values: dict[str, float | int] = {}
+        # Settings field -> value, of that field's type (setting_value reads SEED as a whole number)
+        self.values: dict[str, Any] = {}
         self.robot_files: list[Reference] = []
         self.object_files: list[Reference] = []
         self.placements: list[Placement] = []
@@ -212,7 +213,8 @@ class _SceneReader(KeywordReader):
                 return
             color[i] = value
         if values is not None:
-            self.markers.append(Marker(values[0], values[1], tuple(color)))
+            r, g, b, a = color
+            self.markers.append(Marker(values[0], values[1], (r, g, b, a)))
 
     def placement(self, line: Line) -> None:
         name, args = line.keyword, line.args
@@ -231,9 +233,9 @@ class _SceneReader(KeywordReader):
                 return
             values = self.numbers(line, 1, ("x in mm", "y in mm"))
             rest = list(args[2:])
-            phi = 0.0
-            if rest and number(rest[0].text) is not None:
-                phi = number(rest.pop(0).text)
+            phi = number(rest[0].text) if rest else None
+            if phi is not None:
+                rest.pop(0)
             if len(rest) > 1:
                 self.error(
                     line,
@@ -248,14 +250,16 @@ class _SceneReader(KeywordReader):
                         type_name=name,
                         x=values[0],
                         y=values[1],
-                        phi=phi,
+                        phi=phi if phi is not None else 0.0,
                         program=rest[0].text if rest else None,
                         location=self.at(line),
                     )
                 )
         elif len(first) == 1 and first.isalpha() and not args[0].quoted:
             rest = list(args[1:])
-            phi = number(rest.pop(0).text) if rest and number(rest[0].text) is not None else None
+            phi = number(rest[0].text) if rest else None
+            if phi is not None:
+                rest.pop(0)
             if len(rest) > 1:
                 self.error(
                     line,
@@ -302,19 +306,27 @@ def write_sim(document: SimDocument) -> str:
     for p in document.placements:
         program = f" {quote_token(p.program)}" if p.program is not None else ""
         if p.robi is not None:
-            pose = f" {f(p.x)} {f(p.y)} {f(p.phi)}" if p.x is not None else ""
-            out.append(f"robi {quote_token(p.robi)} {quote_token(p.program or '')}{pose}")
+            out.append(f"robi {quote_token(p.robi)} {quote_token(p.program or '')}{_pose(p)}")
         elif p.model is not None:
-            out.append(f"object {f(p.x)} {f(p.y)} {f(p.phi)} {f(p.friction or 0.0)} {quote_token(p.model)}")
-        elif p.start is not None:
-            phi = f" {f(p.phi)}" if p.phi is not None else ""
-            out.append(f"{_type_token(p.type_name)} {p.start}{phi}{program}")
+            out.append(f"object{_pose(p)} {f(p.friction or 0.0)} {quote_token(p.model)}")
         else:
-            out.append(f"{_type_token(p.type_name)} {f(p.x)} {f(p.y)} {f(p.phi or 0.0)}{program}")
+            assert p.type_name is not None, "a placement is of a type_name, a robi or a model"
+            if p.start is not None:
+                phi = f" {f(p.phi)}" if p.phi is not None else ""
+                out.append(f"{_type_token(p.type_name)} {p.start}{phi}{program}")
+            else:
+                out.append(f"{_type_token(p.type_name)}{_pose(p)}{program}")
     for m in document.markers:
         color = " ".join(str(c) for c in (m.color if m.color[3] != 255 else m.color[:3]))
         out.append(f"marker {f(m.x)} {f(m.y)} {color}")
     return "\n".join(out) + "\n"
+
+
+def _pose(p: Placement) -> str:
+    """' <x> <y> <phi>' of a placement at a position, '' of one that has none."""
+    if p.x is None or p.y is None:
+        return ""
+    return f" {format_number(p.x)} {format_number(p.y)} {format_number(p.phi or 0.0)}"
 
 
 def _type_token(name: str) -> str:

@@ -78,6 +78,8 @@ class Camera(Component):
     def take(self, finish) -> render_worker.Frame:
         """Start an image at the chosen resolution, of the world as it is now, drawn on the render
         thread; `finish(image)` makes the reply there. `taken(frame)` once the program has it."""
+        if self.size is None:
+            raise RuntimeError("the camera has no resolution yet: start it first (CAMInit)")
         width, height = self.size
         return render_worker.draw(self.world, self.view(width, height), finish)
 
@@ -92,10 +94,10 @@ class Camera(Component):
         for (not for programs' calls: the robot editor's preview, tests)."""
         frame = self.take(lambda image: None)
         frame.wait()
-        if frame.error is not None:
+        if frame.error is not None or frame.image is None:
             raise RuntimeError(f"the camera image could not be drawn:\n{frame.error}")
         self.taken(frame)
-        return self.image
+        return frame.image
 
     # -- how it shows itself (robot/component.py) --------------------------------------------------
     recorded_ops = frozenset((g.OP_CAM_GET, g.OP_CAM_GET_GRAY))

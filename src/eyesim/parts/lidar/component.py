@@ -141,7 +141,8 @@ class LidarScanner(Component):
         if self.robot.type.lidar is None:
             return {}
         if self.last_scan is None:
-            self.scan()
+            self.scan()  # sets last_scan
+            assert self.last_scan is not None
         origin, directions, _ = self.last_scan
         return {"lidar": {"origin": origin, "directions": directions, "points": len(directions)}}
 

@@ -9,7 +9,8 @@ from eyesim.protocol import constants
 from eyesim.scene.lexer import Line, Token, format_number, integer
 from eyesim.parts.part import Part, PartReader, coordinate, in_schema, list_of, name_token, record_of, text, whole
 
-PSD_IDS = constants.GROUPS["psd"]  # RoBIOS 7: PSD_FRONT 1 .. PSD_BACK 4
+# RoBIOS 7: PSD_FRONT 1 .. PSD_BACK 4 (the group's values are all numbers)
+PSD_IDS = {name: value for name, value in constants.GROUPS["psd"].items() if isinstance(value, int)}
 ID_NAMES = ", ".join(f"{name}={value}" for name, value in PSD_IDS.items())
 
 

@@ -41,6 +41,7 @@ class JointServo(Servo):
     def __init__(self, joint: JointSpec, name: str):
         self.joint = joint
         self.name = name
+        self.actuator = self.qpos = -1  # its MuJoCo actuator id and qpos address, once bound
         revolute = joint.kind == "revolute"
         convert = math.radians if revolute else mm
         super().__init__(
@@ -139,7 +140,8 @@ class Arm(Component):
 
     def end_effector(self) -> tuple[float, float, float]:
         """World position (m) of the end effector."""
-        return tuple(float(v) for v in self.world.data.site_xpos[self.site])
+        x, y, z = (float(v) for v in self.world.data.site_xpos[self.site])
+        return x, y, z
 
 
 def create(context) -> list[Component]:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from functools import partial
+
 from eyesim.physics.units import mm
 from eyesim.physics.water import DENSITY, WaterForces
 from eyesim.robot.component import Component
@@ -26,7 +28,8 @@ class Buoyancy(Component):
         self.afloat_draft = height * robot_type.mass / displaced if displaced > robot_type.mass else None
         self.height = height
         self.start_depth = mm(robot_type.start_depth) if robot_type.start_depth is not None else None
-        self.parameters = dict(
+        self.forces_on = partial(  # the forces on the robot's body, once it is bound
+            WaterForces,
             volume=spec.volume / 1000.0,
             buoyancy_centre=(mm(spec.x), mm(spec.y), mm(spec.z)),
             hull_centre=(0.0, 0.0, height / 2),
@@ -39,7 +42,7 @@ class Buoyancy(Component):
 
     def bind(self, world) -> None:
         super().bind(world)
-        self.forces = WaterForces(self.robot.body, **self.parameters)
+        self.forces = self.forces_on(self.robot.body)
         self.forces.bind(world)
 
     def reset(self) -> None:

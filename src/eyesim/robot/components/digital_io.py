@@ -73,8 +73,9 @@ class DigitalLines(Component):
             return self.outputs[index]
         if index in self.wired:
             return self.wired[index][1]()
-        if self.driven[index] is not None:
-            return self.driven[index]
+        driven = self.driven[index]
+        if driven is not None:
+            return driven
         return 1 if self.directions[index] == "I" else 0
 
     def read_all(self) -> int:

@@ -8,7 +8,9 @@ from eyesim.protocol import constants
 from eyesim.robot.component import Component
 
 # RoBIOS IRTV codes are characters; the remote's buttons by name (IRTV_OK -> OK: "O").
-BUTTONS = {name.removeprefix("IRTV_"): chr(code) for name, code in constants.GROUPS["irtv"].items()}
+BUTTONS = {
+    name.removeprefix("IRTV_"): chr(code) for name, code in constants.GROUPS["irtv"].items() if isinstance(code, int)
+}
 CODES = frozenset(ord(code) for code in BUTTONS.values())
 MAX_WAITING = 64  # codes nobody has read yet; older ones are dropped beyond this
 

@@ -140,9 +140,9 @@ class VwController(Component):
         self.stuck = False  # the last manoeuvre ended stalled: VWStalled keeps saying so until the next command
 
     # -- geometry ----------------------------------------------------------------------------
-    def _progress(self) -> tuple[float, float]:
+    def _progress(self, m: Manoeuvre) -> tuple[float, float]:
         """Distance (m) and rotation (rad) since the manoeuvre started, from the encoders."""
-        distance, _, rotation = self.drive.motion(self.manoeuvre.start, self.drive.odometer())
+        distance, _, rotation = self.drive.motion(m.start, self.drive.odometer())
         return distance, rotation
 
     def _refuse_spot_turn(self) -> None:
@@ -250,7 +250,7 @@ class VwController(Component):
         m = self.manoeuvre
         if m is None:
             return 0.0
-        distance, rotation = self._progress()
+        distance, rotation = self._progress(m)
         left = max(0.0, m.length - m.progress(distance, rotation))
         return left * self.spot_radius if m.on_the_spot else left / m.factor
 
@@ -289,7 +289,7 @@ class VwController(Component):
                 # few dozen steps): planning again would come out the same, and the wheels hold its speeds.
                 self._cruise_steps = self._held_steps
                 return
-            self._plan(dt, reading)
+            self._plan(self.manoeuvre, dt, reading)
         v, w, target_v, target_w = self.v, self.w, self.target_v, self.target_w
         v = _ramp(v, target_v, self.accel * dt)
         if self.steered:  # the arc's curvature holds while the speed ramps
@@ -303,8 +303,7 @@ class VwController(Component):
             self.engaged = False
             self.driving = v != 0.0 or w != 0.0
 
-    def _plan(self, dt: float, reading: tuple) -> None:
-        m = self.manoeuvre
+    def _plan(self, m: Manoeuvre, dt: float, reading: tuple) -> None:
         distance, _, rotation = self.drive.motion(m.start, reading)
         self._planned_at = reading
         self._held_steps = 0

@@ -132,7 +132,8 @@ class OmniDrive(Component, Kinematics):
 
     # -- kinematics (the V-omega controller's interface) ----------------------------------------
     def odometer(self) -> tuple[int, int, int, int]:
-        return tuple(wheel.raw_ticks() for wheel in self.wheels)
+        a, b, c, d = (wheel.raw_ticks() for wheel in self.wheels)
+        return a, b, c, d
 
     def motion(self, before, after) -> tuple[float, float, float]:
         """The inverse of the wheel speeds (docs/robots.md): sideways motion too, so VWGetPosition

@@ -148,8 +148,9 @@ def read_size(reader: PartReader, line: Line) -> None:
 
 def read_color(reader: PartReader, line: Line) -> None:
     if reader.arity(line, (3,), "<r> <g> <b>"):
-        rgb = [reader.whole(line, 1 + i, c + " (0..255)", 0) for i, c in enumerate(("red", "green", "blue"))]
-        if None not in rgb:
+        read = [reader.whole(line, 1 + i, c + " (0..255)", 0) for i, c in enumerate(("red", "green", "blue"))]
+        rgb = [c for c in read if c is not None]
+        if len(rgb) == 3:
             if any(c > 255 for c in rgb):
                 reader.error(
                     line, "color: expected components 0..255, found " + " ".join(str(c) for c in rgb), 1, "bad-value"
@@ -281,17 +282,20 @@ def hull_centroid(robot_type: RobotType) -> tuple[float, float, float]:
     colliders = hull_colliders(robot_type)
     volumes = [collider_volume(c) for c in colliders]
     total = sum(volumes) or 1.0
-    return tuple(sum(v * c.center[i] for v, c in zip(volumes, colliders)) / total for i in range(3))
+    x, y, z = (sum(v * c.center[i] for v, c in zip(volumes, colliders)) / total for i in range(3))
+    return x, y, z
 
 
 def _half_extent(collider: Collider) -> tuple[float, float, float]:
     if collider.kind == "box":
-        return tuple(v / 2 for v in collider.size)
+        sx, sy, sz = collider.size
+        return sx / 2, sy / 2, sz / 2
     r = collider.size[0]
     if collider.kind == "sphere":
         return (r, r, r)
     along = max(collider.size[1] / 2, r)  # a capsule's height includes its caps
-    return tuple(along if axis == collider.axis else r for axis in "xyz")
+    x, y, z = (along if axis == collider.axis else r for axis in "xyz")
+    return x, y, z
 
 
 def check(robot, diagnostics, at) -> dict:
