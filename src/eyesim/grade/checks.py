@@ -4,9 +4,17 @@ its evidence (the judge_* functions of eyesim.testing.assertions do the measurin
 from __future__ import annotations
 
 import traceback
+from dataclasses import dataclass
 from pathlib import Path
 
 from eyesim.testing import assertions as a
+
+
+@dataclass
+class ScoredVerdict(a.Verdict):
+    """A custom check's verdict with its score 0..1 (the other kinds score 1 when passed, else 0)."""
+
+    score: float = 0.0
 
 
 def _target(check: dict) -> dict:
@@ -90,9 +98,7 @@ def python(sim, check, context):
     score = float(value)
     if not 0 <= score <= 1:
         return a.Verdict(False, f"custom check {check['function']} returned {value!r}, not a score 0..1", {})
-    verdict = a.Verdict(score == 1, message or f"custom check {check['function']}: {score:g}", {"score": score})
-    verdict.score = score
-    return verdict
+    return ScoredVerdict(score == 1, message or f"custom check {check['function']}: {score:g}", {"score": score}, score)
 
 
 KINDS = {
@@ -126,7 +132,7 @@ def judge(sim, check: dict, context: dict) -> dict:
         verdict = KINDS[check["kind"]](sim, check, context)
     except Exception as error:  # a check must never end the grading of the other checks
         verdict = a.Verdict(False, f"the check could not be evaluated: {type(error).__name__}: {error}", {})
-    score = getattr(verdict, "score", 1.0 if verdict.passed else 0.0)
+    score = verdict.score if isinstance(verdict, ScoredVerdict) else 1.0 if verdict.passed else 0.0
     return {
         "name": describe(check),
         "kind": check["kind"],

@@ -24,6 +24,7 @@ import tempfile
 import threading
 import time
 from pathlib import Path
+from typing import Protocol
 
 from eyesim import platform
 from eyesim.grade import sandbox, warm
@@ -34,6 +35,16 @@ CASE_PROCESSES = 256  # processes and threads a sandboxed case's user may have (
 log = logging.getLogger("eyesim")
 _running: set[subprocess.Popen] = set()  # case processes of this process, for an interrupted run
 _running_lock = threading.Lock()
+
+
+class RunningCase(Protocol):
+    """A case process as the grader talks to it: a cold one (subprocess.Popen) or one a warm
+    runner forked (warm.CaseProcess)."""
+
+    @property
+    def returncode(self) -> int | None: ...
+
+    def communicate(self, input: bytes, timeout: float, /) -> tuple[bytes, bytes]: ...
 
 
 def kill_running() -> None:
@@ -72,21 +83,24 @@ def run_case_isolated(task: dict, runner: warm.Runner | None = None) -> dict:
     unisolated = sandbox.why_not_isolated()
     if unisolated and task.get("require_isolation"):
         return timed(failed_result(task, "grader_error", f"refused: {unisolated} (--require-isolation)"))
+    process: RunningCase
     with contextlib.ExitStack() as stack:
         if runner is not None and task.get("isolate", True):
-            folder, process = runner.start_case(sandbox.case_uid())
+            uid = sandbox.case_uid()
+            assert uid is not None, "warm runners run only for a root grader (warm.usable), which has case users"
+            folder, process = runner.start_case(uid)
             task, watched = dict(task, processes=CASE_PROCESSES), runner.process
         else:
             folder = None
-            process, task = _start_case(
+            watched, task = _start_case(
                 task, Path(stack.enter_context(tempfile.TemporaryDirectory(prefix="eyesim-grade-")))
             )
-            watched = process
+            process = watched
         with _running_lock:
             _running.add(watched)
         timeout = task["case"].wall_clock + HARD_MARGIN
         try:
-            stdout, stderr = process.communicate(pickle.dumps(task), timeout=timeout)
+            stdout, stderr = process.communicate(pickle.dumps(task), timeout)
         except subprocess.TimeoutExpired:
             _kill_group(watched)
             return timed(
@@ -94,7 +108,7 @@ def run_case_isolated(task: dict, runner: warm.Runner | None = None) -> dict:
             )
         finally:
             if folder is None:
-                _kill_group(process)  # programs the case left behind in its group
+                _kill_group(watched)  # the case process, and programs the case left behind in its group
             else:
                 shutil.rmtree(folder, ignore_errors=True)  # its namespaces ended with it
             with _running_lock:
@@ -148,15 +162,16 @@ class WarmRunners:
 def _start_case(task: dict, work: Path) -> tuple[subprocess.Popen, dict]:
     """The case process, sandboxed where bubblewrap is (and the task allows), with the task as it
     is sent to it."""
-    inner = [sys.executable, "-m", "eyesim.grade.case_run", str(work / "case")]
-    pipes = dict(stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=work)
-    if not task.get("isolate", True) or sandbox.bwrap() is None:
-        return platform.start(inner, own_group=True, **pipes), task
-    uid = sandbox.case_uid()
-    if uid is not None:
-        os.chown(work, uid, uid)
-    task = dict(task, processes=CASE_PROCESSES if uid is not None else None)
-    process = subprocess.Popen(sandbox.command(inner, work, uid), start_new_session=True, **pipes)
+    command = [sys.executable, "-m", "eyesim.grade.case_run", str(work / "case")]
+    if task.get("isolate", True) and sandbox.bwrap() is not None:
+        uid = sandbox.case_uid()
+        if uid is not None:
+            os.chown(work, uid, uid)
+        task = dict(task, processes=CASE_PROCESSES if uid is not None else None)
+        command = sandbox.command(command, work, uid)
+    process = platform.start(
+        command, own_group=True, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=work
+    )
     return process, task
 
 

@@ -60,9 +60,10 @@ def trajectory_plot(scene, result: dict, path: Path) -> Path:
         )
         x, y = at(points[0][1], points[0][2]).split(",")
         parts.append(f"<circle cx='{x}' cy='{y}' r='3.5' fill='{colour}'/>")
-        x, y = map(float, at(robot["final"]["x"], robot["final"]["y"]).split(","))
+        end_x, end_y = map(float, at(robot["final"]["x"], robot["final"]["y"]).split(","))
         parts.append(
-            f"<path d='M{x - 4:.1f},{y - 4:.1f}L{x + 4:.1f},{y + 4:.1f}M{x - 4:.1f},{y + 4:.1f}L{x + 4:.1f},{y - 4:.1f}' "
+            f"<path d='M{end_x - 4:.1f},{end_y - 4:.1f}L{end_x + 4:.1f},{end_y + 4:.1f}"
+            f"M{end_x - 4:.1f},{end_y + 4:.1f}L{end_x + 4:.1f},{end_y - 4:.1f}' "
             f"stroke='{colour}' stroke-width='2'/>"
         )
         for contact in result.get("contacts", []):

@@ -117,8 +117,10 @@ def case_environment(work: Path) -> list[str]:
 def _file_system(unshare: list[str], work: Path) -> list[str]:
     # Empty /run and /tmp first: what is bound below them afterwards (a Python environment or the
     # work folder under /tmp, as in a CI checkout made with mktemp) stays visible.
+    program = bwrap()
+    assert program is not None, "a case is sandboxed only where bwrap() found bubblewrap"
     args = [
-        bwrap(),
+        program,
         *unshare,
         "--die-with-parent",
         "--new-session",
@@ -131,8 +133,8 @@ def _file_system(unshare: list[str], work: Path) -> list[str]:
         "--tmpfs",
         "/tmp",
     ]
-    for folder in SYSTEM_FOLDERS:
-        args += ["--ro-bind-try", folder, folder]
+    for system in SYSTEM_FOLDERS:
+        args += ["--ro-bind-try", system, system]
     for folder in readable_folders():
         # bwrap makes missing parent folders private (0700); the case's user must pass through them
         for parent in reversed(folder.parents[:-1]):

@@ -11,13 +11,18 @@ import sys
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from eyesim.grade.toml_lines import key_lines, line_of
 
 if sys.version_info >= (3, 11):
     import tomllib
 else:  # pragma: no cover - Python 3.10
-    import tomli as tomllib
+    # mypy checks as Python 3.10 ([tool.mypy]) from an environment of a later Python, without tomli
+    import tomli as tomllib  # type: ignore[import-not-found]
+
+if TYPE_CHECKING:
+    from eyesim.scene import Scene
 
 SCHEMA_PATH = Path(__file__).resolve().parent / "grading.schema.json"
 DEFAULT_LIMITS = {"time": 60.0, "wall_clock": 120.0, "cpu": 60.0, "memory_mb": 1024}
@@ -44,7 +49,7 @@ class ProgramSpec:
 @dataclass
 class CaseSpec:
     name: str
-    scene: object  # eyesim.scene.description.Scene, loaded once here and shipped to the workers
+    scene: Scene  # loaded once here and shipped to the workers
     scene_path: str
     time: float
     wall_clock: float
@@ -149,9 +154,10 @@ class _Checker:
                     tuple(p.get("flags", ["-O2"] if p.get("language", "c") != "python" else [])),
                 )
         python_checks: dict[str, str] = {}
-        cases, names = [], set()
-        raw_cases = doc.get("cases") if isinstance(doc.get("cases"), list) else []
-        for index, raw in enumerate(raw_cases):
+        cases: list[CaseSpec] = []
+        names: set[str] = set()
+        raw_cases = doc.get("cases")
+        for index, raw in enumerate(raw_cases if isinstance(raw_cases, list) else []):
             with _passed_over():
                 cases.append(self._case(("cases", index), raw, names, limits, programs, python_checks))
         if self.problems:

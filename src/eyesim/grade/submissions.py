@@ -44,8 +44,8 @@ def read_submission(path: Path, name: str | None = None) -> Submission:
             raise SubmissionError(f"{path}: more than {MAX_BYTES >> 20} MiB of files")
         files[relative.as_posix()] = data
     digest = hashlib.sha256()
-    for relative, data in files.items():
-        digest.update(relative.encode() + b"\0" + hashlib.sha256(data).digest())
+    for file_name, data in files.items():
+        digest.update(file_name.encode() + b"\0" + hashlib.sha256(data).digest())
     return Submission(name or path.name, path, files, digest.hexdigest()[:16])
 
 

@@ -72,7 +72,7 @@ class Runner:
             with open(self.spool / "runner.log", "wb") as log:  # hidden from the cases with the spool
                 self.process = subprocess.Popen(
                     sandbox.warm_command(inner, self.spool),
-                    stdin=theirs,
+                    stdin=theirs.fileno(),
                     stdout=subprocess.DEVNULL,
                     stderr=log,
                     start_new_session=True,
@@ -85,9 +85,9 @@ class Runner:
             ready = False
         self._socket.settimeout(None)
         if not ready:
-            log = (self.spool / "runner.log").read_text(errors="replace")[-2000:]
+            said = (self.spool / "runner.log").read_text(errors="replace")[-2000:]
             self.close()
-            raise RunnerFailed(f"the warm case runner did not start: {log}")
+            raise RunnerFailed(f"the warm case runner did not start: {said}")
 
     def start_case(self, uid: int) -> tuple[Path, CaseProcess]:
         """A case process in a folder of its own (which it owns), running as `uid`."""
