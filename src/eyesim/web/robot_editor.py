@@ -28,6 +28,7 @@ import os
 import threading
 import time
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 from aiohttp import web
@@ -64,7 +65,7 @@ ANSWER_TIMEOUT = 10.0  # s a test-drive request waits for the simulation thread
 IDLE_STOP = 60.0  # s without a state request (the tab was closed): the test drive stops
 # What the editor always draws over the built robot (the page's defaults, none drawn); the robot's
 # components fill it in (their `editor_view`, robot/component.py).
-NOTHING_DRAWN = {"psds": [], "lidar": None, "camera": None}
+NOTHING_DRAWN: dict[str, list | None] = {"psds": [], "lidar": None, "camera": None}
 
 
 class EditorError(Exception):
@@ -146,6 +147,8 @@ def new_robot(drive_name: str) -> RobotType:
     if drive is None:
         raise EditorError(f"unknown drive {drive_name!r}: expected one of {', '.join(d.name for d in DRIVES)}")
     robot, problems = check_document(full_json(RobotType(name="NewRobot", source=EDITED, drive=drive.name)))
+    if robot is None:  # the simulator's own fault: said as such, not as a failed full_json(None)
+        raise EditorError(f"a new {drive.name} robot does not load: " + "; ".join(p["message"] for p in problems), 500)
     return robot
 
 
@@ -298,7 +301,9 @@ def _gathered(robot, hook: str, start: dict) -> dict:
     """The components' answers to a hook that returns named entries (robot/component.py): a list
     adds to the list of its name, another value is the entry; arrays as rounded lists, images as
     JPEG (base64)."""
-    gathered = {name: list(value) if isinstance(value, list) else value for name, value in start.items()}
+    gathered: dict[str, Any] = {
+        name: list(value) if isinstance(value, list) else value for name, value in start.items()
+    }
     for component in robot.components:
         for name, value in getattr(component, hook)().items():
             if isinstance(value, list):
