@@ -37,7 +37,8 @@ def register(subparsers) -> None:
         "--require-isolation",
         action="store_true",
         help="refuse to grade where cases cannot be sandboxed (Linux without bubblewrap, macOS, "
-        "Windows); on a Dask cluster, each worker refuses cases it cannot sandbox",
+        "Windows), also for a local Dask cluster (local:N); on a remote cluster, each worker refuses "
+        "cases it cannot sandbox",
     )
     parser.add_argument(
         "--keep-recordings",
