@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 import os
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -24,6 +25,7 @@ from eyesim.scene.sim import Placement, Reference, SimDocument, write_sim
 from eyesim.scene.wld import write_wld
 
 DUPLICATE_OFFSET = 150.0  # mm a copy is placed beside its original
+Placed = RobotPlacement | ObjectPlacement  # a robot or object where the scene puts it
 
 
 class EditError(ValueError):
@@ -308,16 +310,16 @@ def duplicate(draft: Draft, op: dict, locate) -> Draft:
         return dataclasses.replace(draft, robots=draft.robots + (dataclasses.replace(original, pose=pose),))
     draft = _owning(draft, kind, op)
     if kind == "object":
-        original = draft.objects[_index(op, len(draft.objects), "object")]
-        pose = Pose(original.pose.x + DUPLICATE_OFFSET, original.pose.y, original.pose.phi)
-        return dataclasses.replace(draft, objects=draft.objects + (dataclasses.replace(original, pose=pose),))
+        obj = draft.objects[_index(op, len(draft.objects), "object")]
+        pose = Pose(obj.pose.x + DUPLICATE_OFFSET, obj.pose.y, obj.pose.phi)
+        return dataclasses.replace(draft, objects=draft.objects + (dataclasses.replace(obj, pose=pose),))
     if kind == "marker":
-        original = draft.markers[_index(op, len(draft.markers), "marker")]
-        copy = dataclasses.replace(original, x=original.x + DUPLICATE_OFFSET)
+        marker = draft.markers[_index(op, len(draft.markers), "marker")]
+        copy = dataclasses.replace(marker, x=marker.x + DUPLICATE_OFFSET)
         return dataclasses.replace(draft, markers=draft.markers + (copy,))
-    original = draft.world.walls[_index(op, len(draft.world.walls), "wall")]
-    copy = dataclasses.replace(original, y1=original.y1 + DUPLICATE_OFFSET, y2=original.y2 + DUPLICATE_OFFSET)
-    return dataclasses.replace(draft, world=dataclasses.replace(draft.world, walls=draft.world.walls + (copy,)))
+    wall = draft.world.walls[_index(op, len(draft.world.walls), "wall")]
+    moved = dataclasses.replace(wall, y1=wall.y1 + DUPLICATE_OFFSET, y2=wall.y2 + DUPLICATE_OFFSET)
+    return dataclasses.replace(draft, world=dataclasses.replace(draft.world, walls=draft.world.walls + (moved,)))
 
 
 def set_floor(draft: Draft, op: dict, locate) -> Draft:
@@ -358,7 +360,7 @@ def set_program(draft: Draft, op: dict, locate) -> Draft:
     index = _index(op, len(draft.robots), "robot")
     program = op.get("program")
     path = locate(program) if program is not None else None
-    if path is not None and not path.is_file():
+    if program is not None and path is not None and not path.is_file():
         raise EditError(f"set-program: no program file {program.get('path')!r}")
     robots = list(draft.robots)
     robots[index] = dataclasses.replace(robots[index], program=str(path) if path else None)
@@ -442,7 +444,11 @@ def settled(draft: Draft, scene: Scene) -> Draft:
     """The draft with its robots and objects where the loader put them (out of a wall drawn
     across them, say), so that the saved file loads as it is shown, without `overlap` warnings."""
     robots, objects = _placements(draft)
-    for kind, placed, built in (("robot", robots, scene.robots), ("object", objects, scene.objects)):
+    kinds: tuple[tuple[str, Sequence[Placed], Sequence[Placed]], ...] = (
+        ("robot", robots, scene.robots),
+        ("object", objects, scene.objects),
+    )
+    for kind, placed, built in kinds:
         for index, (before, after) in enumerate(zip(placed, built)):
             if (before.pose.x, before.pose.y) != (after.pose.x, after.pose.y):
                 draft = move(
@@ -472,7 +478,7 @@ def saved_files(draft: Draft, target: Path, as_json: bool) -> dict[Path, str]:
         stem = target.name[: -len(".json")] if target.name.lower().endswith(".json") else target.stem
         stem = Path(stem).stem
         world_file = folder / (f"{stem}.world.json" if as_json else f"{stem}.wld")
-        world = dataclasses.replace(draft.world, floor_texture=_relative(draft.world.floor_texture, folder))
+        world = dataclasses.replace(draft.world, floor_texture=_relative_or_none(draft.world.floor_texture, folder))
         files[world_file] = dumps(to_json("world", world)) if as_json else write_wld(world)
     document = dataclasses.replace(
         draft.document(),
@@ -481,7 +487,9 @@ def saved_files(draft: Draft, target: Path, as_json: bool) -> dict[Path, str]:
         robot_files=tuple(Reference(_relative(p, folder)) for p in draft.robot_files),
         object_files=tuple(Reference(_relative(p, folder)) for p in draft.object_files),
         placements=tuple(
-            dataclasses.replace(p, program=_relative(p.program, folder), model=_relative(p.model, folder))
+            dataclasses.replace(
+                p, program=_relative_or_none(p.program, folder), model=_relative_or_none(p.model, folder)
+            )
             for p in draft.document().placements
         ),
     )
@@ -489,10 +497,14 @@ def saved_files(draft: Draft, target: Path, as_json: bool) -> dict[Path, str]:
     return files
 
 
-def _relative(path: str | None, folder: Path) -> str | None:
+def _relative_or_none(path: str | None, folder: Path) -> str | None:
+    return None if path is None else _relative(path, folder)
+
+
+def _relative(path: str, folder: Path) -> str:
     """A reference as written in a saved file: relative to its folder (with / on every system)
     when the file exists, else as it was."""
-    if path is None or not Path(path).is_absolute():
+    if not Path(path).is_absolute():
         return path
     try:
         return Path(os.path.relpath(path, folder)).as_posix()

@@ -14,7 +14,7 @@ import types
 import typing
 from functools import lru_cache
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any, Mapping
 
 from eyesim.scene import limits
 from eyesim.scene.description import Location, Marker, ObjectPlacement, ObjectType, Pose, RobotType, Settings, World
@@ -121,6 +121,7 @@ def _scene_json(doc: SimDocument) -> dict:
 
 
 def _placement_json(p: Placement) -> dict:
+    out: dict[str, Any]
     if p.robi is not None:
         out = {"robi": p.robi, "program": p.program or ""}
     elif p.model is not None:
@@ -229,9 +230,9 @@ class _Positions:
 
     def __init__(self, text: str, source: str):
         self.text, self.source = text, source
-        self._maps = None
+        self._maps: tuple[dict, dict] | None = None  # (values, keys): json_positions
 
-    def _load(self):
+    def _load(self) -> tuple[dict, dict]:
         if self._maps is None:
             try:
                 self._maps = json_positions(self.text)
@@ -267,8 +268,9 @@ def _describe(value) -> str:
 def _report(error: "jsonschema.ValidationError", positions: _Positions, diagnostics: Diagnostics) -> None:
     path = list(error.absolute_path)
     if error.validator == "additionalProperties":
-        allowed = sorted(error.schema.get("properties", {}))
-        for key in sorted(k for k in error.instance if k not in error.schema.get("properties", {})):
+        allowed = sorted(_properties(error))
+        instance = typing.cast(Any, error.instance)  # set on every error the validator raises
+        for key in sorted(k for k in instance if k not in _properties(error)):
             _add(
                 diagnostics,
                 positions.key(path + [key]),
@@ -284,8 +286,14 @@ def _add(diagnostics: Diagnostics, location: Location, message: str) -> None:
         diagnostics.error(location, message, "json-schema")
 
 
+def _properties(error: "jsonschema.ValidationError") -> Mapping[str, Any]:
+    """The properties the schema that failed allows (none for a schema that is true or false)."""
+    return error.schema.get("properties", {}) if isinstance(error.schema, Mapping) else {}
+
+
 def _message(error: "jsonschema.ValidationError") -> str:
-    v, value, instance = error.validator, error.validator_value, error.instance
+    # validator_value and instance are set on every error the validator raises (Unset only on hand-made ones)
+    v, value, instance = error.validator, typing.cast(Any, error.validator_value), typing.cast(Any, error.instance)
     if v == "required":
         missing = [k for k in value if k not in instance]
         return f"missing required propert{'y' if len(missing) == 1 else 'ies'} " + ", ".join(quoted(k) for k in missing)
@@ -309,7 +317,7 @@ def _message(error: "jsonschema.ValidationError") -> str:
     if v == "dependentRequired":
         return f"x, y and phi go together: found only {', '.join(k for k in ('x', 'y', 'phi') if k in instance)}"
     if v == "additionalProperties":
-        extra = sorted(k for k in instance if k not in error.schema.get("properties", {}))
+        extra = sorted(k for k in instance if k not in _properties(error))
         return "unknown propert" + ("y " if len(extra) == 1 else "ies ") + ", ".join(quoted(k) for k in extra)
     if v == "oneOf" and error.context:
         # the form the data comes closest to is the one with the fewest complaints

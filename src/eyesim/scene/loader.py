@@ -100,6 +100,7 @@ class _SceneLoader:
         self.builtin_objects: dict[str, ObjectType | None] = {}
         self.refused_references: set[str] = set()  # file names past the limits (reported)
         self.scene_file: Path | None = None  # the scene being loaded: its folders are searched too
+        self.edited_world: World | None = None  # a world edited in memory, in place of the scene's own
 
     # -- files ---------------------------------------------------------------------------------
     def world(self, path: Path) -> World | None:
@@ -199,7 +200,9 @@ class _SceneLoader:
         if robot is None:
             stock = builtins.stock_robot(reference)
             stand_in = stock[1] if stock else builtins.FALLBACK_ROBOT
-            robot = dataclasses.replace(self.builtin_robot(stand_in), name=stem)
+            shipped = self.builtin_robot(stand_in)
+            assert shipped is not None, "the stock robots and the fallback robot ship with eyesim"
+            robot = dataclasses.replace(shipped, name=stem)
             if found is None:
                 self.missing(where, "robot file", reference, scene_file, self.stand_in_text(stock, robot, stem))
         else:
@@ -282,7 +285,7 @@ class _SceneLoader:
         return obj
 
     def known_names(self) -> list[str]:
-        names = {t.name for t in (*self.robot_types.values(), *self.object_types.values())}
+        names = {t.name for t in self.robot_types.values()} | {t.name for t in self.object_types.values()}
         return sorted(names | set(builtins.robot_names()) | set(builtins.object_names()))
 
     # -- the scene -----------------------------------------------------------------------------
@@ -307,9 +310,7 @@ class _SceneLoader:
                 robots.append(RobotPlacement(robot.name, pose, program, where))
             elif placement.model is not None:
                 obj = self.model_object(placement.model, where, scene_file)
-                objects.append(
-                    ObjectPlacement(obj.name, Pose(placement.x, placement.y, placement.phi), where, placement.friction)
-                )
+                objects.append(ObjectPlacement(obj.name, starts.pose(placement, where), where, placement.friction))
             else:
                 self.place_type(placement, where, scene_file, starts, robots, objects)
             if limits.too_many(len(robots), limits.MAX_ROBOTS, "robots", where, self.diagnostics) or limits.too_many(
@@ -340,6 +341,8 @@ class _SceneLoader:
         return Scene(str(scene_file), world)
 
     def scene_world(self, document: SimDocument, scene_file: Path) -> World:
+        if self.edited_world is not None:
+            return self.finish_world(self.edited_world, Path(self.edited_world.source), {})
         if document.world is None:
             if self.diagnostics.has_errors:
                 return World(str(scene_file))  # a broken world line was reported already
@@ -356,6 +359,7 @@ class _SceneLoader:
 
     def place_type(self, placement: Placement, where: Location, scene_file: Path, starts, robots, objects) -> None:
         name = placement.type_name
+        assert name is not None, "a placement is of a type_name, a robi or a model"
         robot = self.robot_type(name)
         if robot is not None:
             pose = starts.pose(placement, where)
@@ -381,7 +385,7 @@ class _SceneLoader:
                 "syntax",
             )
             return
-        objects.append(ObjectPlacement(obj.name, Pose(placement.x, placement.y, placement.phi or 0.0), where))
+        objects.append(ObjectPlacement(obj.name, starts.pose(placement, where), where))
 
     def model_object(self, model: str, where: Location, scene_file: Path) -> ObjectType:
         """EyeSim 6 `object x y phi friction model`: the type named like the model file."""
@@ -443,8 +447,8 @@ class _StartPicker:
         self.used: dict[str, int] = {}
 
     def pose(self, placement: Placement, where: Location) -> Pose:
-        if placement.x is not None:
-            return Pose(placement.x, placement.y, placement.phi or 0.0)
+        if placement.pose is not None:
+            return placement.pose
         if placement.start is None:
             return self.default(where)
         letter = placement.start
@@ -500,6 +504,7 @@ def load_scene(path: str | Path) -> Scene:
         world = loader.finish_world(document, path, where)
         scene = Scene(str(path), world, {}, dict(loader.used_objects), (), world.objects, world.markers)
     diagnostics.raise_if_errors()
+    assert scene is not None, "read_document reported why it read nothing"
     return dataclasses.replace(scene, warnings=diagnostics.warnings)
 
 
@@ -511,8 +516,7 @@ def build_scene(document: SimDocument, scene_file: str | Path, world: World | No
     paths.clear_cache()
     diagnostics = Diagnostics()
     loader = _SceneLoader(diagnostics)
-    if world is not None:
-        loader.scene_world = lambda document, scene_file: loader.finish_world(world, Path(world.source), {})
+    loader.edited_world = world
     scene = loader.scene(document, Path(scene_file))
     diagnostics.raise_if_errors()
     return dataclasses.replace(scene, warnings=diagnostics.warnings)
@@ -524,6 +528,7 @@ def load_world(path: str | Path) -> World:
     diagnostics = Diagnostics()
     world = _SceneLoader(diagnostics).world(Path(path))
     diagnostics.raise_if_errors()
+    assert world is not None, "read_document reported why it read nothing"
     return world
 
 

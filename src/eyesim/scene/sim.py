@@ -11,7 +11,7 @@ import difflib
 from dataclasses import dataclass
 from typing import Any
 
-from eyesim.scene.description import Location, Marker, Settings
+from eyesim.scene.description import Location, Marker, Pose, Settings
 from eyesim.scene.diagnostics import Diagnostics, quoted
 from eyesim.scene.keyword_reader import KeywordReader
 from eyesim.scene.lexer import Line, format_number, integer, number, quote_token, split_lines
@@ -52,6 +52,13 @@ class Placement:
     model: str | None = None
     friction: float | None = None
     location: Location | None = None
+
+    @property
+    def pose(self) -> Pose | None:
+        """Where it is placed when the line gives x and y (phi 0 unless given), else None."""
+        if self.x is None or self.y is None:
+            return None
+        return Pose(self.x, self.y, self.phi or 0.0)
 
 
 @dataclass(frozen=True)
