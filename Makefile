@@ -6,7 +6,7 @@
 PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
-SOURCES := $(shell find src robios protocol -type f -not -path '*/__pycache__/*' 2>/dev/null) pyproject.toml
+SOURCES := $(shell find src robios interface -type f -not -path '*/__pycache__/*' 2>/dev/null) pyproject.toml
 INSTALLED := $(VENV)/.installed
 
 .PHONY: demo test install lint wheels viewer protocol schemas bench clean
@@ -83,8 +83,8 @@ $(VENV)/.ziglang: $(BIN)/python
 # Python code (ruff: unused or undefined names), its layout (ruff format), the types of the packages pyproject.toml's
 # [tool.mypy] lists (mypy), and the types of the viewer's TypeScript (tsc --noEmit).
 lint: $(INSTALLED) viewer-app/node_modules/.package-lock.json
-	$(BIN)/ruff check src tests bench tools protocol
-	$(BIN)/ruff format --check src tests bench tools protocol
+	$(BIN)/ruff check src tests bench tools interface
+	$(BIN)/ruff format --check src tests bench tools interface
 	$(BIN)/mypy
 	cd viewer-app && npm run --silent typecheck
 
@@ -98,12 +98,12 @@ viewer-app/node_modules/.package-lock.json: viewer-app/package-lock.json
 viewer:
 	cd viewer-app && npm ci --no-audit --no-fund && npm run build
 
-# Regenerate from protocol/protocol.json the protocol tables, the pass-through layers of the API
+# Regenerate from interface/protocol.json the protocol tables, the pass-through layers of the API
 # (eyebot.h declarations, C wrappers, eye modules) and the RoBIOS constants (eyebot.h's defines,
-# eye/constants.py, eyesim/protocol/constants.py), and from protocol/viewer.schema.json the viewer
+# eye/constants.py, eyesim/protocol/constants.py), and from interface/viewer.schema.json the viewer
 # channel's TypeScript types and parsers and the package's copy of the schema.
 protocol:
-	$(PYTHON) protocol/generate.py
+	$(PYTHON) interface/generate.py
 
 # Rewrite the published JSON Schemas in docs/schemas/ (the robot schema comes from the part
 # declarations in eyesim/scene/parts/; tests/scene/test_schemas.py fails while they are stale).

@@ -43,7 +43,7 @@ typedef int COLOR;           /* 0xRRGGBB */
 typedef int TIMER;           /* handle returned by OSAttachTimer */
 
 /* ==== Generated constants ==== */
-/* From the "constants" groups of protocol/protocol.json down to "End of the generated constants": change
+/* From the "constants" groups of interface/protocol.json down to "End of the generated constants": change
  * them there and run `make protocol`. */
 
 /* ---- Truth values (C only: Python has its own) ----------------------------------------------- */
@@ -269,7 +269,7 @@ typedef BYTE CAM5MPgray[CAM5MP_PIXELS];
 #pragma clang attribute push(__declspec(dllexport), apply_to = any(function, variable(is_global)))
 #endif
 
-/* ==== Generated from the "api" groups of protocol/protocol.json down to "End of the generated
+/* ==== Generated from the "api" groups of interface/protocol.json down to "End of the generated
  * declarations": change them there and run `make protocol`. ==== */
 
 /* ---- LCD: a 480 x 320 screen; text cells are addressed by row and column --------------------- */

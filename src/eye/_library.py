@@ -1,5 +1,5 @@
 """Loads libeyesim, the same C library C programs link, and binds its functions with the C prototypes
-of eye/_prototypes.py (generated from protocol/protocol.json)."""
+of eye/_prototypes.py (generated from interface/protocol.json)."""
 
 from __future__ import annotations
 

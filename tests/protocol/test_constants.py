@@ -14,13 +14,13 @@ import pytest
 from eyesim.protocol import constants as sim_constants
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "protocol"))
-import generate  # noqa: E402  (protocol/generate.py)
+sys.path.insert(0, str(ROOT / "interface"))
+import generate  # noqa: E402  (interface/generate.py)
 import generate_viewer  # noqa: E402
 import layers  # noqa: E402
 import robios_constants  # noqa: E402
 
-SPEC = json.loads((ROOT / "protocol" / "protocol.json").read_text())
+SPEC = json.loads((ROOT / "interface" / "protocol.json").read_text())
 ENTRIES = [entry for group in SPEC["constants"] for entry in group["constants"]]
 NAMES = {entry["name"] for entry in ENTRIES}
 PYTHON_NAMES = {entry["name"] for entry in ENTRIES if not entry.get("c_only")}
@@ -172,7 +172,7 @@ def test_the_generator_refuses_a_constant_it_cannot_write(entry, message):
 def test_the_viewer_schema_names_the_soft_keys_and_gets_their_values_from_protocol_json():
     """The viewer schema (JSON, for the browser too) names the soft keys a key command may press;
     the server's copy and the TypeScript get KEY1..KEY4's values from protocol.json."""
-    source = json.loads((ROOT / "protocol" / "viewer.schema.json").read_text())
+    source = json.loads((ROOT / "interface" / "viewer.schema.json").read_text())
     assert source["$defs"]["KeyCommand"]["properties"]["key"] == {
         "description": "KEY1..KEY4",
         "x-robios-constants": ["KEY1", "KEY2", "KEY3", "KEY4"],

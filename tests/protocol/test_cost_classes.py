@@ -13,10 +13,10 @@ from eyesim.protocol import generated as g
 from eyesim.protocol.ops import DEVICE, LOCAL, WAIT
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "protocol"))
-import generate  # noqa: E402  (protocol/generate.py)
+sys.path.insert(0, str(ROOT / "interface"))
+import generate  # noqa: E402  (interface/generate.py)
 
-SPEC = json.loads((ROOT / "protocol" / "protocol.json").read_text())
+SPEC = json.loads((ROOT / "interface" / "protocol.json").read_text())
 
 
 def test_every_op_has_a_class_and_blocking_ops_are_the_waits():

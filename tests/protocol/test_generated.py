@@ -19,9 +19,9 @@ ROOT = Path(__file__).resolve().parents[2]
 
 def test_generated_files_match_protocol_json():
     """Also the viewer channel's: viewer-app/src/generated/viewer_protocol.ts (the messages' and the HTTP
-    routes' types and parsers) and the server's copy of protocol/viewer.schema.json."""
+    routes' types and parsers) and the server's copy of interface/viewer.schema.json."""
     result = subprocess.run(
-        [sys.executable, str(ROOT / "protocol" / "generate.py"), "--check"], capture_output=True, text=True
+        [sys.executable, str(ROOT / "interface" / "generate.py"), "--check"], capture_output=True, text=True
     )
     assert result.returncode == 0, result.stdout + result.stderr
 
@@ -32,7 +32,7 @@ def test_the_route_table_is_generated_from_the_schema_and_goes_stale_with_it():
     import generate_viewer  # protocol/, on the path for layers below
     import robios_constants
 
-    constants = robios_constants.values_of(json.loads((ROOT / "protocol/protocol.json").read_text()))
+    constants = robios_constants.values_of(json.loads((ROOT / "interface/protocol.json").read_text()))
     schema = generate_viewer.with_constants(json.loads(generate_viewer.SCHEMA.read_text()), constants, {})
     committed = generate_viewer.TS_OUT.read_text()
     for route, entry in schema["routes"].items():
@@ -85,12 +85,12 @@ def test_operation_codes_are_unique_and_fit_the_header():
     assert all(0 < code < 65536 for code in codes)
 
 
-# ---- The pass-through layers (protocol/layers.py) ------------------------------------------------
+# ---- The pass-through layers (interface/layers.py) ------------------------------------------------
 
-sys.path.insert(0, str(ROOT / "protocol"))
-import layers  # noqa: E402  (protocol/layers.py, beside generate.py)
+sys.path.insert(0, str(ROOT / "interface"))
+import layers  # noqa: E402  (interface/layers.py, beside generate.py)
 
-SPEC = json.loads((ROOT / "protocol" / "protocol.json").read_text())
+SPEC = json.loads((ROOT / "interface" / "protocol.json").read_text())
 
 
 def api_functions() -> list[dict]:
@@ -100,7 +100,7 @@ def api_functions() -> list[dict]:
 def test_every_generated_file_says_so_and_how_to_regenerate():
     for path in layers.outputs(SPEC):
         text = path.read_text()
-        assert "protocol/protocol.json" in text and "make protocol" in text, path
+        assert "interface/protocol.json" in text and "make protocol" in text, path
 
 
 def test_a_changed_description_makes_the_header_and_the_python_module_stale():
@@ -226,7 +226,7 @@ def test_a_wrong_api_entry_is_refused_with_its_name(change, message):
 
 
 def test_the_viewer_schema_is_package_data_the_server_loads():
-    """The installed package carries protocol/viewer.schema.json (as eyesim/protocol/viewer.schema.json,
+    """The installed package carries interface/viewer.schema.json (as eyesim/protocol/viewer.schema.json,
     found with importlib.resources) and checks messages against it."""
     from importlib import resources
 
@@ -235,5 +235,5 @@ def test_the_viewer_schema_is_package_data_the_server_loads():
     packaged = resources.files("eyesim.protocol").joinpath("viewer.schema.json")
     assert packaged.is_file()
     assert json.loads(packaged.read_text(encoding="utf-8")) == channel_schema.SCHEMA
-    source = json.loads((ROOT / "protocol/viewer.schema.json").read_text())
+    source = json.loads((ROOT / "interface/viewer.schema.json").read_text())
     assert channel_schema.SCHEMA["$defs"].keys() == source["$defs"].keys()

@@ -1,4 +1,4 @@
-"""The shared test vectors (protocol/vectors.json): Python encodes and decodes them exactly.
+"""The shared test vectors (interface/vectors.json): Python encodes and decodes them exactly.
 
 robios/tests/test_protocol.c checks the same vectors with the C codec."""
 
@@ -9,7 +9,7 @@ import pytest
 
 from eyesim.protocol import FrameDecoder, decode_payload, encode_error, encode_message, generated as g
 
-VECTORS = json.loads((Path(__file__).resolve().parents[2] / "protocol" / "vectors.json").read_text())["vectors"]
+VECTORS = json.loads((Path(__file__).resolve().parents[2] / "interface" / "vectors.json").read_text())["vectors"]
 
 
 def layout_of(vector):

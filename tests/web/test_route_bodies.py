@@ -1,4 +1,4 @@
-"""The JSON bodies of the HTTP routes follow protocol/viewer.schema.json (`routes`).
+"""The JSON bodies of the HTTP routes follow interface/viewer.schema.json (`routes`).
 
 A real `eyesim run` with a scene of a robot with an .obj model, a compiled program and a broken
 scene beside it: every route is used as the page uses it (programs, settings, the robot editor

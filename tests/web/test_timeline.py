@@ -151,7 +151,7 @@ def test_replay_server_answers_the_viewer_and_refuses_changes(tour):
     assert messages[3]["type"] == "error" and "can be watched, not changed" in messages[3]["message"]
     assert messages[4]["type"] == "error" and "not valid JSON" in messages[4]["message"]
     assert messages[5]["type"] == "frame" and messages[5]["time"] == 1.0
-    # a replay speaks the same channel as a live simulator (protocol/viewer.schema.json)
+    # a replay speaks the same channel as a live simulator (interface/viewer.schema.json)
     assert [problem for m in messages for problem in server_message_problems(m)] == []
 
 

@@ -1,4 +1,4 @@
-"""Browser commands are checked against protocol/viewer.schema.json before anything acts on them:
+"""Browser commands are checked against interface/viewer.schema.json before anything acts on them:
 each wrong one gets one sentence naming the field, and every command the schema lists is handled."""
 
 from __future__ import annotations

@@ -63,7 +63,7 @@ def test_the_viewer_draws_the_models_where_the_bodies_are(browser_context, tmp_p
         robot = fetch(f"{base}/scene/mesh/robot/1")
         in_file = sum(len(p.triangles) for p in read_obj(S4BLUE.with_suffix(".obj")).parts)
         assert sum(len(p["triangles"]) for p in robot["parts"]) == 3 * in_file  # every triangle
-        for body in (sign, robot):  # as protocol/viewer.schema.json describes the route
+        for body in (sign, robot):  # as interface/viewer.schema.json describes the route
             assert [error.message for error in mesh_body_validator().iter_errors(body)] == []
         for missing in ("object/2", "robot/0", "robot/x", "wall/1"):
             with pytest.raises(urllib.error.HTTPError) as error:

@@ -1,4 +1,4 @@
-"""What a live simulator really sends to a browser follows protocol/viewer.schema.json.
+"""What a live simulator really sends to a browser follows interface/viewer.schema.json.
 
 A scene with several robots (LCD, PSDs, lidar, camera, an arm, omni wheels), objects, the VIS and
 TRACE settings and a loader warning; programs print on their LCDs, set menus, take camera images

@@ -1,5 +1,5 @@
 // The simulator's HTTP routes with JSON bodies (docs/viewer-channel.md): one call per route, named
-// by method and path as protocol/viewer.schema.json names it. The request's type and the answer's
+// by method and path as interface/viewer.schema.json names it. The request's type and the answer's
 // checking parser are generated from the schema (./generated/viewer_protocol.ts, `make protocol`).
 
 import {

@@ -1,5 +1,5 @@
 // Viewer channel messages (docs/viewer-channel.md). Their types and checking parsers are generated
-// from protocol/viewer.schema.json into ./generated/viewer_protocol.ts (`make protocol`); this file
+// from interface/viewer.schema.json into ./generated/viewer_protocol.ts (`make protocol`); this file
 // adds the few checks a JSON Schema cannot say (one field's length depending on another's) and
 // turns a WebSocket frame into a message or null.
 

@@ -2,7 +2,7 @@
 `eyesim run` options (--key, --touch, --irtv, --serial, --digital, --analog) and the testing API.
 
 Each input is a command of the viewer channel, so its fields and ranges are declared once, in
-protocol/viewer.schema.json, and every source checks them with the same validator; what depends
+interface/viewer.schema.json, and every source checks them with the same validator; what depends
 on the world (the robot exists, an IR button's name, a fixed object) is checked here.
 `prepare` turns a command into the action the simulation thread carries out (eyesim.core.robot_input)."""
 

@@ -1,4 +1,4 @@
-"""The wire protocol between RoBIOS programs and the simulator (see protocol/protocol.json)."""
+"""The wire protocol between RoBIOS programs and the simulator (see interface/protocol.json)."""
 
 from eyesim.protocol import generated
 from eyesim.protocol.codec import (

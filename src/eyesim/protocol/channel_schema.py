@@ -1,10 +1,10 @@
-"""Checking viewer-channel messages against protocol/viewer.schema.json (docs/viewer-channel.md).
+"""Checking viewer-channel messages against interface/viewer.schema.json (docs/viewer-channel.md).
 
 Every command from a browser, and every JSON body sent to an HTTP route, is checked here before
 anything acts on it, and answered with one short sentence naming the field and what it must be;
 tests check what the server sends with `server_message_problems` and `route_answer_problems`.
 The schema itself is package data, viewer.schema.json: `make protocol` writes it from
-protocol/viewer.schema.json, with the RoBIOS constants the source names filled in from
+interface/viewer.schema.json, with the RoBIOS constants the source names filled in from
 protocol.json, so that the installed package carries it."""
 
 from __future__ import annotations

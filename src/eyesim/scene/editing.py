@@ -185,7 +185,7 @@ def _is_builtin(builtin: Path | None, source: str) -> bool:
 # -- edit operations --------------------------------------------------------------------------
 def apply(draft: Draft, op: dict, locate) -> Draft:
     """The draft after the edit `op`, a JSON object from the browser that its definition in
-    protocol/viewer.schema.json (`SceneEdit`) has checked: its fields' types and ranges; what
+    interface/viewer.schema.json (`SceneEdit`) has checked: its fields' types and ranges; what
     depends on the scene (is there a robot 3) is checked here. `locate(place)` turns a
     {"root", "path"} object into a confined absolute Path."""
     return OPERATIONS[op["op"]](draft, op, locate)

@@ -8,7 +8,7 @@ simulator's program port speaking the same protocol as libeyesim.
         return robot.PSDGet(2)
 
 RoBIOS functions are called by their C names (`VWSetSpeed`) or by protocol op names
-(`robot.call("VW_SET_SPEED", 200, 0)`); arguments and replies follow protocol/protocol.json
+(`robot.call("VW_SET_SPEED", 200, 0)`); arguments and replies follow interface/protocol.json
 (one value comes back as itself, several as a tuple). `token`: the run's program token
 (the engine's `program_token`), sent in the HELLO."""
 

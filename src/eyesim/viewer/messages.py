@@ -3,7 +3,7 @@ scene, snapshots, status, a robot's menu and I/O. Messages made from plain value
 console lines, the timeline), which replays send too, are in plain_messages.py, so reading a
 recording does not load the simulator.
 
-Each function returns one message as a dict; protocol/viewer.schema.json describes them and
+Each function returns one message as a dict; interface/viewer.schema.json describes them and
 tests/web/test_viewer_messages.py checks what a live simulator sends against it. A new message is
 one schema entry and one function here or there."""
 

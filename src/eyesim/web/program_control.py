@@ -6,7 +6,7 @@ how they end reaches the page as the usual console and program events. Settings 
 seed, VIS, TRACE) change the running scene's description, so a save writes them.
 
 Every route is behind the viewer's access checks (access.py), and every body is checked against
-its definition in protocol/viewer.schema.json (route_bodies.py). Bad requests get 400 and a JSON
+its definition in interface/viewer.schema.json (route_bodies.py). Bad requests get 400 and a JSON
 {"error": ...} saying what was wrong; nothing else changes."""
 
 from __future__ import annotations

@@ -12,7 +12,7 @@ Files: robots open from and save to the scene root (the folder the simulator was
 its sub-folders only; paths are relative, without `..`, and a symbolic link that leads out of the
 root is refused. A file is never overwritten unless the request says so.
 
-Every request body is checked against its definition in protocol/viewer.schema.json first
+Every request body is checked against its definition in interface/viewer.schema.json first
 (route_bodies.py); what needs the robot or the files to check is checked here."""
 
 from __future__ import annotations

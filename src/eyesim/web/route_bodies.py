@@ -1,5 +1,5 @@
 """Reading the JSON body of a request to an HTTP route, checked against its definition in
-protocol/viewer.schema.json (`routes`, docs/viewer-channel.md) before the route acts on it.
+interface/viewer.schema.json (`routes`, docs/viewer-channel.md) before the route acts on it.
 
 A body the schema refuses is answered 400 with one sentence naming the field (413 when it is too
 large); what needs the world to check (does robot 7 exist, is the file under a root) is left to

@@ -12,7 +12,7 @@ JSON routes under /scenes/ (behind the viewer's access checks like every route):
     POST /scenes/undo, /redo
     POST /scenes/save            {"root", "path", "format": "sim"|"json", "overwrite": bool}
 
-Every body is checked against its definition in protocol/viewer.schema.json first
+Every body is checked against its definition in interface/viewer.schema.json first
 (route_bodies.py): a malformed one answers 400 naming the field. A scene that fails to load or an
 edit the loader refuses answers 422 with the diagnostics (file:line) and leaves the running scene
 as it was. Editing stops the programs and pauses the simulation; each edit rebuilds the world

@@ -1,8 +1,8 @@
-"""The RoBIOS constants generated from the "constants" groups of protocol/protocol.json.
+"""The RoBIOS constants generated from the "constants" groups of interface/protocol.json.
 
 Every constant a program can name (key codes, colours, resolutions, LCD modes, PSD positions, IR
 remote codes, ...) is listed there once, in its group, with its value. From that list
-protocol/generate.py writes:
+interface/generate.py writes:
 
 - the constant definitions of robios/include/eyebot.h (between its "generated constants" markers);
 - eye/constants.py: the same names for Python programs;
@@ -34,7 +34,7 @@ SIM_CONSTANTS = ROOT / "src" / "eyesim" / "protocol" / "constants.py"
 HEADER_BEGIN = "/* ==== Generated constants ==== */"
 HEADER_END = "/* ==== End of the generated constants ==== */"
 HEADER_NOTE = (
-    'From the "constants" groups of protocol/protocol.json down to "End of the generated constants": '
+    'From the "constants" groups of interface/protocol.json down to "End of the generated constants": '
     "change them there and run `make protocol`."
 )
 KINDS = ("value", "char", "text", "expression")
