@@ -8,7 +8,7 @@ from support.connected import connected_program
 from support.worlds import arena_scene, example_robot
 
 from eyesim.protocol import generated as g
-from eyesim.robot.drives.ackermann_wheels import AckermannDrive
+from eyesim.robot.wheels.ackermann_wheels import AckermannDrive
 from eyesim.robot.components.arm import Arm
 from eyesim.robot.components.gripper import Gripper
 

@@ -7,7 +7,7 @@ import pytest
 from eyesim.core.clock import Clock
 from eyesim.core.engine import Simulation
 from eyesim.robot.components.vw import VwController
-from eyesim.robot.drives.differential_wheels import DifferentialDrive
+from eyesim.robot.wheels.differential_wheels import DifferentialDrive
 from support.worlds import arena_scene
 
 

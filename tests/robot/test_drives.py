@@ -6,8 +6,8 @@ from pathlib import Path
 
 import pytest
 
-from eyesim.robot.drives import ackermann_wheels, differential_wheels, omni_wheels
-from eyesim.robot.drives.kinematics import Kinematics
+from eyesim.robot.wheels import ackermann_wheels, differential_wheels, omni_wheels
+from eyesim.robot.wheels.kinematics import Kinematics
 from eyesim.scene.drives import DRIVES, drive_named, drive_of
 from eyesim.scene.drives.archetype import MachineType
 from eyesim.scene.json_format import schema

@@ -1,14 +1,14 @@
 """Registry of component kinds: each factory looks at a robot type and returns the components it needs.
 
 A robot is built from, in this order: its drive (the wheels its declared drive archetype names,
-scene/drives, built by robot/drives) and the VW controller that drives it; the components of its
+scene/drives, built by robot/wheels) and the VW controller that drives it; the components of its
 parts, which each part declaration names (scene/parts: a new part kind needs no line here); and
 the parts of the robot's computer that every robot has, listed below (a new one of those = one new
 module with a `create(context)` function + one line here)."""
 
 from __future__ import annotations
 
-from eyesim.robot import drives
+from eyesim.robot import wheels
 from eyesim.robot.component import named
 from eyesim.robot.components import analog_io
 from eyesim.robot.components import battery
@@ -42,7 +42,7 @@ def factories() -> tuple:
     """The factories, in the order they build a robot. The parts' are looked up here, not when this
     package is imported: a part's component may import a module of it (a bumper, digital_io)."""
     return (
-        drives.create,
+        wheels.create,
         vw.create,  # after the drive: it drives any drive with kinematics
         *(named(name) for part in PARTS for name in part.components),
         *COMPUTER,

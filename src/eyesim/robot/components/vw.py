@@ -1,4 +1,4 @@
-"""V-omega driving for any drive with kinematics (robot/drives/kinematics.py: differential, mecanum,
+"""V-omega driving for any drive with kinematics (robot/wheels/kinematics.py: differential, mecanum,
 Ackermann): speed control, manoeuvres (straight, turn, curve, drive to a point), odometry and
 stall detection.
 
@@ -12,7 +12,7 @@ import math
 
 from eyesim.physics.units import mm, to_mm
 from eyesim.robot.component import Component
-from eyesim.robot.drives.kinematics import Kinematics
+from eyesim.robot.wheels.kinematics import Kinematics
 
 LINEAR_ACCEL = 1.0  # m/s^2 the controller ramps linear speed by (keeps the wheels from slipping)
 BRAKE_FRACTION = 0.5  # of the acceleration used to plan the stop, leaving headroom for lag

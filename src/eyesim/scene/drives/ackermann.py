@@ -14,5 +14,5 @@ DRIVE = DriveArchetype(
     parts=("wheels", "steering", "axis_offset", "axle_height", "arm"),
     wheel_keyword="wheel drive",
     wheels_outside_hull=True,
-    component="eyesim.robot.drives.ackermann_wheels:AckermannDrive",
+    component="eyesim.robot.wheels.ackermann_wheels:AckermannDrive",
 )

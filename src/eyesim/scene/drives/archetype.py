@@ -39,7 +39,7 @@ class DriveArchetype:
     viewer_wheels: bool = False
     # The drive's own component (its wheels and motors) as "module:Class", built when the robot
     # type has wheels; "" when other components move it. A name, not an import: declarations sit
-    # below the physics (docs/architecture.md, "Layers"), robot/drives/ resolves it.
+    # below the physics (docs/architecture.md, "Layers"), robot/wheels/ resolves it.
     component: str = ""
     # The robot fields of drive-dependent parts (robot schema keys) this drive can use; the robot
     # editor offers only these (an arm rides on wheels too: the Picker).

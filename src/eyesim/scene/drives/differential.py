@@ -13,5 +13,5 @@ DRIVE = DriveArchetype(
     parts=("wheels", "axis_offset", "axle_height", "arm"),
     wheels_outside_hull=True,
     viewer_wheels=True,
-    component="eyesim.robot.drives.differential_wheels:DifferentialDrive",
+    component="eyesim.robot.wheels.differential_wheels:DifferentialDrive",
 )

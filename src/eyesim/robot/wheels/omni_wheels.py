@@ -16,8 +16,8 @@ import mujoco
 from eyesim.physics.units import mm
 from eyesim.robot.actuators import WheelMotor
 from eyesim.robot.component import Component
-from eyesim.robot.drives.kinematics import Kinematics
-from eyesim.robot.drives.wheels import (
+from eyesim.robot.wheels.kinematics import Kinematics
+from eyesim.robot.wheels.wheel import (
     WHEEL_ARMATURE,
     WHEEL_DAMPING,
     WHEEL_MASS,

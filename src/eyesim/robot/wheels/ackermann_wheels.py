@@ -13,8 +13,8 @@ import mujoco
 from eyesim.physics.units import mm
 from eyesim.robot.actuators import Servo, WheelMotor
 from eyesim.robot.component import Component
-from eyesim.robot.drives.kinematics import Kinematics
-from eyesim.robot.drives.wheels import GRAVITY, WHEEL_ARMATURE, add_wheel, ground_positions, wheel_torque
+from eyesim.robot.wheels.kinematics import Kinematics
+from eyesim.robot.wheels.wheel import GRAVITY, WHEEL_ARMATURE, add_wheel, ground_positions, wheel_torque
 
 MAX_STEER = math.radians(45)  # servo 0 steers 45 degrees left, 255 as far right (the EyeSim car)
 STRAIGHT = 127  # the servo position that steers straight ahead

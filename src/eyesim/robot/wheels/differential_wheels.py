@@ -10,8 +10,8 @@ import mujoco
 from eyesim.physics.units import mm
 from eyesim.robot.actuators import WheelMotor
 from eyesim.robot.component import Component
-from eyesim.robot.drives.kinematics import Kinematics
-from eyesim.robot.drives.wheels import GRAVITY, add_wheel, ground_positions, wheel_constants, wheel_torque
+from eyesim.robot.wheels.kinematics import Kinematics
+from eyesim.robot.wheels.wheel import GRAVITY, add_wheel, ground_positions, wheel_constants, wheel_torque
 
 CASTER_RADIUS = 0.012  # m
 CASTER_LIFT = 0.001  # m casters sit above the floor: the wheels carry the robot, casters catch its tilt
