@@ -21,7 +21,7 @@ LAYERS = [
     ["scene"],
     ["physics"],
     ["robot"],
-    ["net", "world", "commands"],
+    ["net", "world", "calls"],
     ["viewer"],
     ["core"],
     ["programs", "record", "web"],
@@ -31,7 +31,7 @@ ENTRY_POINTS = {"__init__", "__main__"}  # the public API and `python -m eyesim`
 # A part kind's folder (eyesim/parts/<kind>/) cuts across the layers: each of its modules sits on the
 # layer of its role, and its packages (docstrings only) on the lowest.
 PART_FOLDERS = "parts"
-ROLES = {"declaration": "scene", "component": "robot", "calls": "commands"}
+ROLES = {"declaration": "scene", "component": "robot", "calls": "calls"}
 
 
 def part_of(module: str) -> str | None:
@@ -212,7 +212,7 @@ def test_every_module_of_a_part_folder_has_a_role():
     assert modules and modules <= set(ROLES), f"modules of no known role: {sorted(modules - set(ROLES))}"
     assert part_of("eyesim.parts.bumper.declaration") == "scene"
     assert part_of("eyesim.parts.bumper.component") == "robot"
-    assert part_of("eyesim.parts.psd.calls") == "commands"
+    assert part_of("eyesim.parts.psd.calls") == "calls"
 
 
 # The modules that show the robots' parts (viewer, recorder, plots, editors, settings) learn about

@@ -245,12 +245,12 @@ def test_quiet_stretches_of_steps_change_nothing_but_how_often_the_sockets_are_l
 
 
 def test_the_simulator_survives_a_handler_crash(monkeypatch):
-    from eyesim import commands
+    from eyesim import calls
 
     def broken(sim, robot, request):
         raise ZeroDivisionError("boom")
 
-    monkeypatch.setitem(commands.HANDLERS, g.OP_PSD_GET, broken)
+    monkeypatch.setitem(calls.HANDLERS, g.OP_PSD_GET, broken)
     with running_simulation(arena()) as (sim, port):
         client = ProgramClient(port)
         client.hello()

@@ -11,7 +11,7 @@ def program_lines(output: str) -> list[str]:
 def test_timer_callbacks_run_at_their_period_of_simulation_time(tmp_path):
     program = build("timers", tmp_path, "-Wall", "-Wextra", "-Werror")
     # Calls as good as free (0.1 ms): the counts below need the 18 attaches to take no time worth
-    # speaking of. Timers under the default call time: tests/commands/test_timer.py.
+    # speaking of. Timers under the default call time: tests/calls/test_timer.py.
     result = run_headless("--call-time", "0", "--program", f"1={program}", cwd=tmp_path)
     assert result.returncode == 0, result.stdout + result.stderr
     lines = program_lines(result.stdout)

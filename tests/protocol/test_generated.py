@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from eyesim import commands
+from eyesim import calls
 from eyesim.protocol import generated as g
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -52,31 +52,31 @@ def test_the_route_table_is_generated_from_the_schema_and_goes_stale_with_it():
 
 def test_every_operation_but_the_sessions_own_has_a_handler():
     # the handshake and the library's THREADS notice are the engine's own
-    missing = [op.name for op in g.OPS.values() if op.group != "session" and op.code not in commands.HANDLERS]
+    missing = [op.name for op in g.OPS.values() if op.group != "session" and op.code not in calls.HANDLERS]
     assert missing == []
 
 
 def test_a_handler_module_may_only_handle_its_own_groups_operations(monkeypatch):
-    from eyesim.parts.psd import calls
+    from eyesim.parts.psd import calls as psd_calls
 
-    monkeypatch.setitem(calls.HANDLERS, "LIDAR_GET", calls.HANDLERS["PSD_GET"])
+    monkeypatch.setitem(psd_calls.HANDLERS, "LIDAR_GET", psd_calls.HANDLERS["PSD_GET"])
     with pytest.raises(RuntimeError, match="eyesim.parts.psd.calls handles LIDAR_GET, an operation of group lidar"):
-        commands._build_registry()
+        calls._build_registry()
 
 
 def test_a_part_folder_finds_its_handlers_and_two_modules_may_not_share_a_group(monkeypatch):
-    from eyesim.parts.psd import calls
+    from eyesim.parts.psd import calls as psd_calls
 
-    modules = commands.handler_modules()
-    assert modules["psd"] is calls and modules["lcd"].__name__ == "eyesim.commands.lcd"
-    monkeypatch.setattr(calls, "GROUP", "lcd")
-    with pytest.raises(RuntimeError, match="eyesim.commands.lcd and eyesim.parts.psd.calls both handle group lcd"):
-        commands.handler_modules()
-    monkeypatch.setattr(calls, "GROUP", "lidar")
+    modules = calls.handler_modules()
+    assert modules["psd"] is psd_calls and modules["lcd"].__name__ == "eyesim.calls.lcd"
+    monkeypatch.setattr(psd_calls, "GROUP", "lcd")
+    with pytest.raises(RuntimeError, match="eyesim.calls.lcd and eyesim.parts.psd.calls both handle group lcd"):
+        calls.handler_modules()
+    monkeypatch.setattr(psd_calls, "GROUP", "lidar")
     with pytest.raises(
         RuntimeError, match="eyesim.parts.psd.calls and eyesim.parts.lidar.calls both handle group lidar"
     ):
-        commands.handler_modules()
+        calls.handler_modules()
 
 
 def test_operation_codes_are_unique_and_fit_the_header():

@@ -7,7 +7,7 @@ bench/bench_worst_requests.py (what each costs the simulation thread)."""
 
 from __future__ import annotations
 
-from eyesim.commands.audio import MAX_SOUND_BYTES
+from eyesim.calls.audio import MAX_SOUND_BYTES
 from eyesim.protocol import generated as g
 
 INT_MAX, INT_MIN = 2**31 - 1, -(2**31)

@@ -15,7 +15,7 @@ import secrets
 import struct
 import traceback
 
-from eyesim import commands
+from eyesim import calls
 from eyesim.net import program_token
 from eyesim.net.program_server import version_refusal
 from eyesim.net.session import Deferred, Pending, Request, Session
@@ -99,13 +99,13 @@ class Requests:
             elif op.code == g.OP_THREADS and session.robot is not None:
                 result = self._threads(session)
             elif session.robot is None:
-                raise commands.CommandError("the first request must be the HELLO handshake", g.ERR_NO_HANDSHAKE)
+                raise calls.CallError("the first request must be the HELLO handshake", g.ERR_NO_HANDSHAKE)
             else:
                 problem = op.ranges and op.out_of_range(request.args)  # protocol.json's ranges, before any work
                 if problem:
-                    raise commands.CommandError(problem, g.ERR_BAD_ARGUMENT)
-                result = commands.HANDLERS[op.code](self.sim, session.robot, request)
-        except commands.CommandError as error:
+                    raise calls.CallError(problem, g.ERR_BAD_ARGUMENT)
+                result = calls.HANDLERS[op.code](self.sim, session.robot, request)
+        except calls.CallError as error:
             self.sim.timing.answer(request, encode_error(op.code, request.request_id, error.code, str(error)))
             if error.code == g.ERR_BAD_TOKEN:  # no second guess on this connection
                 session.connection.close(flush=True)
@@ -173,9 +173,9 @@ class Requests:
         session = request.session
         sim = self.sim
         if version != g.VERSION:
-            raise commands.CommandError(version_refusal(version), g.ERR_VERSION)
+            raise calls.CallError(version_refusal(version), g.ERR_VERSION)
         if session.robot is not None:
-            raise commands.CommandError("handshake sent twice", g.ERR_BAD_PAYLOAD)
+            raise calls.CallError("handshake sent twice", g.ERR_BAD_PAYLOAD)
         if sim.program_token is not None and not secrets.compare_digest(token.encode(), sim.program_token.encode()):
             sim.network.warnings.warn(
                 "refused: a wrong or missing program token",
@@ -185,7 +185,7 @@ class Requests:
                 pid,
                 "wrong" if token else "no",
             )
-            raise commands.CommandError(program_token.refusal(token, sim.program_token_file), g.ERR_BAD_TOKEN)
+            raise calls.CallError(program_token.refusal(token, sim.program_token_file), g.ERR_BAD_TOKEN)
         robot = self._choose_robot(selector)
         session.robot, session.program, session.pid = robot, program, pid
         for component in robot.components:
@@ -208,11 +208,11 @@ class Requests:
         taken = {s.robot.id for s in self.sim.sessions if s.robot is not None and not s.closed}
         names = ", ".join(f"{r.id} {r.name}" for r in robots) or "none"
         if not robots:
-            raise commands.CommandError("the scene has no robots", g.ERR_NO_ROBOT)
+            raise calls.CallError("the scene has no robots", g.ERR_NO_ROBOT)
         if selector == "":
             free = [r for r in robots if r.id not in taken]
             if not free:
-                raise commands.CommandError(f"every robot already runs a program (robots: {names})", g.ERR_NO_ROBOT)
+                raise calls.CallError(f"every robot already runs a program (robots: {names})", g.ERR_NO_ROBOT)
             return free[0]
         if selector.isascii() and selector.isdigit():  # not '²', which isdigit() but int() refuses
             robot = self.sim.robot_by_id(int(selector)) if len(selector) <= 9 else None
@@ -220,12 +220,10 @@ class Requests:
         else:
             candidates = [r for r in robots if r.name.lower() == selector.lower()]
         if not candidates:
-            raise commands.CommandError(
-                f"no robot {reprlib.repr(selector)} in the scene (robots: {names})", g.ERR_NO_ROBOT
-            )
+            raise calls.CallError(f"no robot {reprlib.repr(selector)} in the scene (robots: {names})", g.ERR_NO_ROBOT)
         free = [r for r in candidates if r.id not in taken]
         if not free:
-            raise commands.CommandError(f"robot {selector!r} already runs a program", g.ERR_NO_ROBOT)
+            raise calls.CallError(f"robot {selector!r} already runs a program", g.ERR_NO_ROBOT)
         return free[0]
 
     # -- replies that come later -----------------------------------------------------------------

@@ -25,7 +25,7 @@ class OpSpec(NamedTuple):
     # cost_us when that is more; WAIT, a blocking call, only what it waits.
     cost: str = "device"
     # "Component.method" for an op that only calls that method of the robot's component (its
-    # request's values the arguments) and has no handler of its own (eyesim/commands/__init__.py).
+    # request's values the arguments) and has no handler of its own (eyesim/calls/__init__.py).
     calls: str = ""
 
     def out_of_range(self, args: tuple) -> str | None:

@@ -4,7 +4,7 @@ stops it: protocol.json's "calls").
 A frame is drawn, turned gray and encoded on the render thread (physics/render_worker.py), not on
 the simulation thread, which serves every program: CAMGet's reply is Deferred."""
 
-from eyesim.commands.errors import CommandError, component_of
+from eyesim.calls.errors import CallError, component_of
 from eyesim.net.session import Deferred
 from eyesim.parts.camera.component import Camera
 from eyesim.physics.render import to_gray
@@ -30,7 +30,7 @@ def _started(robot) -> tuple[Camera, tuple[int, int]]:
     """The camera and its (width, height), once CAMInit chose them."""
     camera = _camera(robot)
     if camera.size is None:
-        raise CommandError("the camera is not initialised; call CAMInit first")
+        raise CallError("the camera is not initialised; call CAMInit first")
     return camera, camera.size
 
 
@@ -38,9 +38,9 @@ def cam_init(sim, robot, request):
     (resolution,) = request.args
     camera = _camera(robot)
     if resolution == CUSTOM:
-        raise CommandError("CUSTOM is for LCD images only; the camera takes " + NAMES)
+        raise CallError("CUSTOM is for LCD images only; the camera takes " + NAMES)
     if resolution not in RESOLUTIONS:
-        raise CommandError(f"unknown resolution {resolution}; expected one of {NAMES}")
+        raise CallError(f"unknown resolution {resolution}; expected one of {NAMES}")
     width, height = RESOLUTIONS[resolution]
     camera.start(width, height)
     return (0, width, height)

@@ -1,7 +1,7 @@
 """RoBIOS LIDAR group: the scanner's field, tilt and beam count (LIDARGet and SIMLaserScan only take
 a scan, an int32 array encoded as it is: protocol.json's "calls")."""
 
-from eyesim.commands.errors import CommandError, component_of
+from eyesim.calls.errors import CallError, component_of
 from eyesim.parts.lidar.component import MAX_POINTS, LidarScanner
 
 GROUP = "lidar"  # protocol.json's group of the operations below
@@ -14,11 +14,11 @@ def _scanner(robot) -> LidarScanner:
 def lidar_set(sim, robot, request):
     field, tilt, points = request.args
     if not 1 <= field <= 360:
-        raise CommandError(f"range {field} is not a field of view of 1..360 degrees")
+        raise CallError(f"range {field} is not a field of view of 1..360 degrees")
     if not -90 < tilt < 90:
-        raise CommandError(f"tilt {tilt} is not between -90 and 90 degrees")
+        raise CallError(f"tilt {tilt} is not between -90 and 90 degrees")
     if not 1 <= points <= MAX_POINTS:
-        raise CommandError(f"{points} points; expected 1..{MAX_POINTS}")
+        raise CallError(f"{points} points; expected 1..{MAX_POINTS}")
     _scanner(robot).configure(field, tilt, points)
     return (0,)
 

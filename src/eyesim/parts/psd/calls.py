@@ -1,6 +1,6 @@
 """RoBIOS PSD group: PSDGet and PSDGetRaw read a robot's sensor by its RoBIOS id."""
 
-from eyesim.commands.errors import CommandError
+from eyesim.calls.errors import CallError
 from eyesim.parts.psd.component import PsdSensor
 
 GROUP = "psd"  # protocol.json's group of the operations below
@@ -11,7 +11,7 @@ def _sensor(robot, psd_id: int) -> PsdSensor:
         if sensor.id == psd_id:
             return sensor
     ids = sorted(s.id for s in robot.components_of(PsdSensor))
-    raise CommandError(f"robot {robot.id} has no PSD {psd_id} (it has {ids or 'none'})")
+    raise CallError(f"robot {robot.id} has no PSD {psd_id} (it has {ids or 'none'})")
 
 
 def psd_get(sim, robot, request):

@@ -5,7 +5,7 @@ from contextlib import contextmanager
 from eyesim.protocol import generated
 
 
-class CommandError(Exception):
+class CallError(Exception):
     def __init__(self, message: str, code: int = generated.ERR_BAD_ARGUMENT):
         super().__init__(message)
         self.code = code
@@ -14,7 +14,7 @@ class CommandError(Exception):
 def require(component, robot, what: str):
     """The component, or a NOT_SUPPORTED error naming what the robot lacks."""
     if component is None:
-        raise CommandError(f"robot {robot.id} ({robot.name}) has no {what}", generated.ERR_NOT_SUPPORTED)
+        raise CallError(f"robot {robot.id} ({robot.name}) has no {what}", generated.ERR_NOT_SUPPORTED)
     return component
 
 
@@ -29,4 +29,4 @@ def checked_arguments():
     try:
         yield
     except ValueError as error:
-        raise CommandError(str(error)) from None
+        raise CallError(str(error)) from None

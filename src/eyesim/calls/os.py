@@ -1,6 +1,6 @@
 """RoBIOS system group: waiting and counting in simulation time (milliseconds), and the machine's identity."""
 
-from eyesim.commands.errors import CommandError
+from eyesim.calls.errors import CallError
 from eyesim.net.session import Pending
 from eyesim.scene.drives import drive_of
 
@@ -8,7 +8,7 @@ from eyesim.scene.drives import drive_of
 def os_wait(sim, robot, request):
     (ms,) = request.args
     if ms < 0:
-        raise CommandError(f"negative time {ms} ms")
+        raise CallError(f"negative time {ms} ms")
     wake_us = request.time_us + ms * 1000
     return Pending.until(wake_us, (0,))
 
@@ -18,7 +18,7 @@ def os_sleep(sim, robot, request):
     in simulation time like OSWait, to the microsecond (rounded up, so that any sleep lets time go on)."""
     seconds, nanoseconds = request.args
     if nanoseconds >= 1_000_000_000:
-        raise CommandError(f"sleep: {nanoseconds} nanoseconds is not below one second")
+        raise CallError(f"sleep: {nanoseconds} nanoseconds is not below one second")
     return Pending.until(request.time_us + seconds * 1_000_000 + -(-nanoseconds // 1000), (0,))
 
 

@@ -1,7 +1,7 @@
 """RoBIOS I/O group: 16 digital lines, 8 analog channels with 1 kHz recording, and the battery voltage
 (reading a line or a channel only calls the component: protocol.json's "calls")."""
 
-from eyesim.commands.errors import CommandError, checked_arguments, component_of, require
+from eyesim.calls.errors import CallError, checked_arguments, component_of, require
 from eyesim.net.session import Pending
 from eyesim.robot.components.analog_io import AnalogInputs
 from eyesim.robot.components.battery import Battery
@@ -46,7 +46,7 @@ def analog_transfer(sim, robot, request):
     """Blocks until the recording is complete."""
     recording = _analog(robot).recording
     if recording is None:
-        raise CommandError("nothing was recorded; call ANALOGRecord first")
+        raise CallError("nothing was recorded; call ANALOGRecord first")
 
     def poll(at_us):
         return (recording.samples(),) if at_us >= recording.end_us else None

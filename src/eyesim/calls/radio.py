@@ -1,6 +1,6 @@
 """RoBIOS radio group: messages between robots' programs, in order per sender (ids = robot ids)."""
 
-from eyesim.commands.errors import CommandError, require
+from eyesim.calls.errors import CallError, require
 from eyesim.net.session import Pending
 from eyesim.protocol import generated as g
 from eyesim.robot.components.radio import MAX_WAITING, Radio
@@ -13,7 +13,7 @@ def _radio(robot) -> Radio:
 def _switched_on(robot, request) -> Radio:
     radio = _radio(robot)
     if not radio.on or radio.owner is not request.session:
-        raise CommandError("the radio is off; call RADIOInit first", g.ERR_NOT_SUPPORTED)
+        raise CallError("the radio is off; call RADIOInit first", g.ERR_NOT_SUPPORTED)
     return radio
 
 
@@ -32,9 +32,9 @@ def radio_send(sim, robot, request):
     target = sim.robot_by_id(destination)
     if target is None or target.component(Radio) is None:
         ids = [r.id for r in sim.robots if r.component(Radio) is not None]
-        raise CommandError(f"no robot {destination} to send to (robot ids: {ids})")
+        raise CallError(f"no robot {destination} to send to (robot ids: {ids})")
     if not target.component(Radio).deliver(robot.id, bytes(message)):
-        raise CommandError(f"robot {destination} has {MAX_WAITING} unread messages; it takes no more")
+        raise CallError(f"robot {destination} has {MAX_WAITING} unread messages; it takes no more")
     return (0,)
 
 

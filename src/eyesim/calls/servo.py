@@ -3,7 +3,7 @@
 Servo numbers come from the robot file (docs/api/servo.md): the Ackermann steering is servo 1,
 arm joints and grippers use the numbers of their `joint` and `gripper` lines."""
 
-from eyesim.commands.errors import CommandError
+from eyesim.calls.errors import CallError
 from eyesim.protocol import generated
 from eyesim.robot.actuators import SERVO_MAX
 
@@ -12,7 +12,7 @@ def _servo(robot, number: int):
     servo = robot.servos.get(number)
     if servo is None:
         numbers = ", ".join(str(n) for n in sorted(robot.servos)) or "none"
-        raise CommandError(
+        raise CallError(
             f"robot {robot.id} ({robot.name}) has no servo {number} (its servos: {numbers})",
             generated.ERR_BAD_ARGUMENT if robot.servos else generated.ERR_NOT_SUPPORTED,
         )
@@ -21,7 +21,7 @@ def _servo(robot, number: int):
 
 def _position(value: int, what: str) -> None:
     if not 0 <= value <= SERVO_MAX:
-        raise CommandError(f"{what} {value} is out of range 0..{SERVO_MAX}")
+        raise CallError(f"{what} {value} is out of range 0..{SERVO_MAX}")
 
 
 def servo_set(sim, robot, request):
@@ -43,7 +43,7 @@ def servo_range(sim, robot, request):
     _position(low, "low")
     _position(high, "high")
     if low >= high:
-        raise CommandError(f"low {low} must be below high {high}")
+        raise CallError(f"low {low} must be below high {high}")
     _servo(robot, number).set_range(low, high)
     return (0,)
 

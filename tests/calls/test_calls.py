@@ -4,7 +4,7 @@ values and shapes the reply from the op's reply fields."""
 
 import pytest
 
-from eyesim import commands
+from eyesim import calls
 from eyesim.protocol import generated as g
 from eyesim.protocol.ops import OpSpec
 from eyesim.robot.components.digital_io import DigitalLines
@@ -17,7 +17,7 @@ def test_every_declared_call_is_served_by_the_registry_and_no_module_handles_it(
     assert {"LCD_CLEAR", "LCD_SET_POS", "KEY_READ", "IRTV_FLUSH", "DIGITAL_READ", "SER_INIT"} <= declared
     assert len(declared) == 24
     for name in declared:
-        handler = commands.HANDLERS[g.OPS_BY_NAME[name].code]
+        handler = calls.HANDLERS[g.OPS_BY_NAME[name].code]
         assert handler.__qualname__ == "calling.<locals>.handler", name
 
 
@@ -42,28 +42,28 @@ def test_a_value_error_of_the_method_is_a_bad_argument_with_its_message():
         assert client.call("LCD_CLEAR") == (0,)  # the simulator goes on
 
 
-def op_calling(calls: str, reply=(("result", "i32"),)) -> OpSpec:
-    return OpSpec("TEST_OP", 9999, "lcd", 10, False, (), reply, calls=calls)
+def op_calling(method: str, reply=(("result", "i32"),)) -> OpSpec:
+    return OpSpec("TEST_OP", 9999, "lcd", 10, False, (), reply, calls=method)
 
 
 @pytest.mark.parametrize(
-    "calls, message",
+    "method, message",
     [
         ("Lcdd.clear", "'Lcdd': 0 component classes have that name"),
         ("Lcd.wipe", "TEST_OP calls Lcd.wipe: Lcd needs the method and a noun"),
         ("Component.reset", "Component needs the method and a noun"),
     ],
 )
-def test_a_declaration_naming_no_component_method_is_refused(calls, message):
+def test_a_declaration_naming_no_component_method_is_refused(method, message):
     with pytest.raises(RuntimeError, match=message):
-        commands.calling(op_calling(calls))
+        calls.calling(op_calling(method))
 
 
 def test_a_module_may_not_handle_an_op_declared_as_a_call(monkeypatch):
-    from eyesim.commands import lcd
+    from eyesim.calls import lcd
 
     monkeypatch.setitem(lcd.HANDLERS, "LCD_CLEAR", lcd.HANDLERS["LCD_GET_SIZE"])
     with pytest.raises(
-        RuntimeError, match="eyesim.commands.lcd handles LCD_CLEAR, which protocol.json says calls Lcd.clear"
+        RuntimeError, match="eyesim.calls.lcd handles LCD_CLEAR, which protocol.json says calls Lcd.clear"
     ):
-        commands._build_registry()
+        calls._build_registry()

@@ -7,7 +7,7 @@ from support.client import ProgramClient, RemoteError
 from support.connected import connected_program
 from support.worlds import arena_scene
 
-from eyesim import commands
+from eyesim import calls
 from eyesim.protocol import generated as g
 
 INT_MAX, INT_MIN = 2**31 - 1, -(2**31)
@@ -59,7 +59,7 @@ def test_a_handler_that_raises_answers_its_caller_and_the_simulation_goes_on(mon
     def broken(sim, robot, request):
         raise ZeroDivisionError("a bug in a handler")
 
-    monkeypatch.setitem(commands.HANDLERS, g.OP_PSD_GET, broken)
+    monkeypatch.setitem(calls.HANDLERS, g.OP_PSD_GET, broken)
     with connected_program(_scene(), mode="realtime") as (sim, client):  # realtime: `other` may idle
         other = ProgramClient(client.sock.getpeername()[1])
         other.hello("2")
@@ -73,7 +73,7 @@ def test_a_handler_that_raises_answers_its_caller_and_the_simulation_goes_on(mon
 
 
 def test_a_result_that_does_not_fit_its_reply_is_an_error_not_a_crash(monkeypatch, caplog):
-    monkeypatch.setitem(commands.HANDLERS, g.OP_VW_REMAIN, lambda sim, robot, request: (2**40,))
+    monkeypatch.setitem(calls.HANDLERS, g.OP_VW_REMAIN, lambda sim, robot, request: (2**40,))
     with connected_program(_scene()) as (sim, client):
         with pytest.raises(RemoteError, match="does not fit the reply"):
             client.call("VW_REMAIN")

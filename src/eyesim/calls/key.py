@@ -1,7 +1,7 @@
 """RoBIOS key group: soft keys and touches on the LCD, from the viewer or a script (KEYRead only
 takes a press: protocol.json's "calls")."""
 
-from eyesim.commands.errors import CommandError, component_of
+from eyesim.calls.errors import CallError, component_of
 from eyesim.net.session import Pending
 from eyesim.robot.components.keys import KEYS, Keys
 
@@ -29,7 +29,7 @@ def key_wait(sim, robot, request):
     (mask,) = request.args
     keys = _keys(robot)
     if not mask & sum(KEYS):
-        raise CommandError(f"mask {mask:#x} contains none of KEY1..KEY4, so no key could end the wait")
+        raise CallError(f"mask {mask:#x} contains none of KEY1..KEY4, so no key could end the wait")
 
     def take():
         key = keys.take_matching(mask)

@@ -1,7 +1,7 @@
 """RoBIOS IR remote group: codes from the viewer's remote, the keyboard or a script (IRTVRead and
 IRTVFlush only call the receiver: protocol.json's "calls")."""
 
-from eyesim.commands.errors import component_of
+from eyesim.calls.errors import component_of
 from eyesim.net.session import Pending
 from eyesim.robot.components.irtv import IrReceiver
 

@@ -2,7 +2,7 @@
 
 import base64
 
-from eyesim.commands.errors import CommandError, require
+from eyesim.calls.errors import CallError, require
 from eyesim.robot.components.analog_io import MICROPHONE, AnalogInputs
 from eyesim.robot.components.speaker import BEEP_HERTZ, BEEP_SECONDS, Speaker
 from eyesim.robot.sound_files import SoundError, sound_length
@@ -28,7 +28,7 @@ def au_play(sim, robot, request):
     try:
         kind, seconds = sound_length(data)
     except SoundError as error:
-        raise CommandError(f"{name}: {error}") from None
+        raise CallError(f"{name}: {error}") from None
     speaker.play(seconds, request.time_us)
     sound = {"sound": "file", "name": name, "format": kind, "duration": round(seconds, 3)}
     if sim.events.wants_lcd:  # a viewer is watching: only it can play the bytes

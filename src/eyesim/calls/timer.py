@@ -5,7 +5,7 @@ that calls TIMER_WAIT and runs the callbacks of the timers its reply names, then
 deterministic mode time goes on only while both that thread and the main thread wait in a call
 (session.Session.blocked): not while the main thread computes, nor while callbacks run."""
 
-from eyesim.commands.errors import checked_arguments, require
+from eyesim.calls.errors import checked_arguments, require
 from eyesim.net.session import Pending
 from eyesim.robot.components.timers import ProgramTimers
 

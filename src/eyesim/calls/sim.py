@@ -5,7 +5,7 @@ scene's objects in scene order (maze balls and crates first, then the .sim file'
 
 import math
 
-from eyesim.commands.errors import CommandError
+from eyesim.calls.errors import CallError
 from eyesim.physics.objects import FixedObjectError
 from eyesim.physics.units import mm, wrap_degrees
 from eyesim.robot.robot import MountedRobotError
@@ -16,7 +16,7 @@ def _robot(sim, caller, robot_id: int):
         return caller
     target = sim.robot_by_id(robot_id)
     if target is None:
-        raise CommandError(f"no robot {robot_id} (0 = this robot, 1..{len(sim.robots)} = the scene's)")
+        raise CallError(f"no robot {robot_id} (0 = this robot, 1..{len(sim.robots)} = the scene's)")
     return target
 
 
@@ -24,7 +24,7 @@ def _object(sim, object_id: int):
     target = sim.object_by_id(object_id)
     if target is None:
         known = f"1..{len(sim.objects)}" if sim.objects else "the scene has none"
-        raise CommandError(f"no object {object_id} ({known})")
+        raise CallError(f"no object {object_id} ({known})")
     return target
 
 
@@ -39,7 +39,7 @@ def _place(target, x: int, y: int, z: int, phi: int) -> tuple:
     try:
         target.set_pose(mm(x), mm(y), mm(max(z, 0)), math.radians(phi))
     except (FixedObjectError, MountedRobotError) as error:
-        raise CommandError(str(error)) from None
+        raise CallError(str(error)) from None
     return (0,)
 
 

@@ -3,12 +3,12 @@
 The groups are protocol.json's. A part kind's folder holds its group's handlers
 (`eyesim/parts/psd/calls.py` serves group `psd`: its GROUP names the group, its HANDLERS table the
 operations); a group of the robot's computer has its module here, named after it
-(`eyesim.commands.lcd`). Both are found without a registry line (the session group, the
+(`eyesim.calls.lcd`). Both are found without a registry line (the session group, the
 handshake, is the engine's own). An operation that only calls one method of the robot's
 component declares it in protocol.json (`"calls": "Lcd.set_position"`) and has no handler
 function: `calling` makes its handler.
 
-A handler is `handler(sim, robot, request) -> reply values | Pending`; it raises CommandError for
+A handler is `handler(sim, robot, request) -> reply values | Pending`; it raises CallError for
 requests it cannot serve. The network layer never knows what an operation means."""
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ from types import ModuleType
 
 import eyesim.parts
 import eyesim.robot.components  # noqa: F401  (the computer's component classes, for "calls" to name)
-from eyesim.commands.errors import CommandError, checked_arguments, component_of
+from eyesim.calls.errors import CallError, checked_arguments, component_of
 from eyesim.protocol import generated
 from eyesim.protocol.ops import OpSpec
 from eyesim.robot.component import Component, named
@@ -74,7 +74,7 @@ def calling(op: OpSpec):
 
 def handler_modules() -> dict[str, ModuleType]:
     """The handler module of each group that has one: the `calls` module of a part kind's folder
-    (the group its GROUP names), else `eyesim.commands.<group>`."""
+    (the group its GROUP names), else `eyesim.calls.<group>`."""
     modules: dict[str, ModuleType] = {}
     for folder in pkgutil.iter_modules(eyesim.parts.__path__):
         name = f"{eyesim.parts.__name__}.{folder.name}.calls"
@@ -120,4 +120,4 @@ def __getattr__(name: str) -> dict:
     return registry
 
 
-__all__ = ["HANDLERS", "CommandError"]
+__all__ = ["HANDLERS", "CallError"]

@@ -3,7 +3,7 @@ drive with kinematics; what a drive cannot do (a car turning on the spot) is a B
 
 import math
 
-from eyesim.commands.errors import CommandError, checked_arguments, require
+from eyesim.calls.errors import CallError, checked_arguments, require
 from eyesim.net.session import Pending
 from eyesim.physics.units import mm, to_mm, wrap_degrees
 from eyesim.robot.components.vw import VwController
@@ -60,9 +60,7 @@ def vw_drive(sim, robot, request):
     dx, dy, speed = request.args
     vw = _vw(robot)
     if dx < abs(dy) or dx <= 0:  # dx == |dy| is a quarter circle
-        raise CommandError(
-            f"the point ({dx}, {dy}) cannot be reached on an arc: dx must be at least |dy| (and above 0)"
-        )
+        raise CallError(f"the point ({dx}, {dy}) cannot be reached on an arc: dx must be at least |dy| (and above 0)")
     with checked_arguments():
         vw.drive_to(mm(dx), mm(dy), mm(speed))
     return (0,)

@@ -2,7 +2,7 @@
 colours, fonts, pixels, lines, images) with the request's values: printing at a position, the
 cursor, modes and the soft-key menu (which the viewer is told of), the size, filled shapes."""
 
-from eyesim.commands.errors import checked_arguments, component_of
+from eyesim.calls.errors import checked_arguments, component_of
 from eyesim.robot.components.lcd import HEIGHT, WIDTH, Lcd
 
 

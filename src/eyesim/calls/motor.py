@@ -4,7 +4,7 @@ Motor and encoder numbers depend on the drive (docs/api/motor.md): differential 
 Ackermann 1 = the driven axle; omni 1..4 front left, front right, back left, back right;
 submarine = its thrusters' numbers (no encoders)."""
 
-from eyesim.commands.errors import CommandError
+from eyesim.calls.errors import CallError
 from eyesim.protocol import generated
 from eyesim.robot.actuators import ActuatorError
 from eyesim.robot.components.vw import VwController
@@ -20,7 +20,7 @@ def _numbers(table: dict) -> str:
 def _motor(robot, number: int):
     motor = robot.motors.get(number)
     if motor is None:
-        raise CommandError(
+        raise CallError(
             f"robot {robot.id} ({robot.name}) has no motor {number} (its motors: {_numbers(robot.motors)})",
             generated.ERR_NOT_SUPPORTED if not robot.motors else generated.ERR_BAD_ARGUMENT,
         )
@@ -34,7 +34,7 @@ def _motor(robot, number: int):
 def _encoder(robot, number: int):
     encoder = robot.encoders.get(number)
     if encoder is None:
-        raise CommandError(
+        raise CallError(
             f"robot {robot.id} ({robot.name}) has no encoder {number} (its encoders: {_numbers(robot.encoders)})",
             generated.ERR_NOT_SUPPORTED if not robot.encoders else generated.ERR_BAD_ARGUMENT,
         )
@@ -43,7 +43,7 @@ def _encoder(robot, number: int):
 
 def _check(value: int, low: int, high: int, what: str) -> None:
     if not low <= value <= high:
-        raise CommandError(f"{what} {value} is out of range {low}..{high}")
+        raise CallError(f"{what} {value} is out of range {low}..{high}")
 
 
 def motor_drive(sim, robot, request):
@@ -57,9 +57,9 @@ def _carry_out(action) -> tuple:
     try:
         action()
     except ActuatorError as error:
-        raise CommandError(f"motor {error}", generated.ERR_NOT_SUPPORTED) from None
+        raise CallError(f"motor {error}", generated.ERR_NOT_SUPPORTED) from None
     except ValueError as error:
-        raise CommandError(str(error)) from None
+        raise CallError(str(error)) from None
     return (0,)
 
 

@@ -1,7 +1,7 @@
 """RoBIOS serial group: byte streams on interface 0 (serial port) and 1..20 (USB) (SERInit,
 SERReceive, SERFlush and SERClose only call the ports: protocol.json's "calls")."""
 
-from eyesim.commands.errors import checked_arguments, component_of
+from eyesim.calls.errors import checked_arguments, component_of
 from eyesim.net.session import Pending
 from eyesim.robot.components.serial_ports import SerialPorts
 
