@@ -8,13 +8,22 @@ never say HELLO (past the connection cap), a program pipelining thousands of KEY
 without reading, and handshakes with forged program tokens. The run requires its tokens, as a
 run does by default. Reported: calls served, errors, the well-behaved programs' p99 with the
 attackers against the quiet baseline of the same run (ratio), and the simulator's memory (RSS),
-file descriptors (named, when their count grows) and threads before and after.
+file descriptors (named, when their count grows) and threads before and after. Also the CPU each
+phase took, in seconds per second: the simulator's threads, the well-behaved programs, and this
+process (the attackers, fuzzers and tabs are threads of it), which tells the simulator's own work
+for the attackers from theirs on the same cores.
+
+With --nice-attackers the attackers, fuzzers and tabs run at nice 19 (each thread of this process
+lowers its own priority; Linux). They are clients on the machine the simulator runs on: at the same
+priority they take the two cores from the well-behaved programs, so their p99 shows the operating
+system's scheduler as much as the simulator's fairness. Niced, the figures show the simulator's
+share; run it both ways and report both.
 
 Load (--load, after the soak; --minutes 0 for the load alone): 100 programs connected at once each
 calling in a loop, 200 browser tabs opened at once and closed, 500 connect/disconnect cycles of
 programs. Each must be served with no failed call; descriptors and threads must come back.
 
-Run:  python3 bench/soak.py [--minutes 10] [--baseline-minutes 2] [--programs 50] [--load]
+Run:  python3 bench/soak.py [--minutes 10] [--baseline-minutes 2] [--programs 50] [--load] [--nice-attackers]
       python3 bench/soak.py --minutes 0.5 --load        (a smoke run, about 2 minutes)
 Exit status 1 when a check fails. Every loop is bounded in count and in time."""
 
@@ -25,6 +34,7 @@ import asyncio
 import json
 import os
 import random
+import resource
 import re
 import statistics
 import struct
@@ -49,6 +59,7 @@ HOST = "127.0.0.1"
 INT_MAX, INT_MIN, U32_MAX = 2**31 - 1, -(2**31), 2**32 - 1
 EDGES = [0, 1, -1, 2, 8, 255, 256, 480, 3600, 65535, 10_000_000, 10_000_001, INT_MAX, INT_MIN]
 FUZZ_ROBOTS = 2
+ATTACKER_NICE = 19  # with --nice-attackers
 SETTLE = 3.0  # s to wait after clients leave before counting descriptors and threads
 
 
@@ -88,6 +99,8 @@ class Simulator:
         names = sorted(open(f"/proc/{pid}/task/{task}/comm").read().strip() for task in os.listdir(f"/proc/{pid}/task"))
         fds = sorted(_fd_target(pid, fd) for fd in os.listdir(f"/proc/{pid}/fd"))
         return {
+            "cpu_s": _cpu_seconds(f"/proc/{pid}/stat"),
+            "thread_cpu_s": _thread_cpu(pid),
             "rss_mb": round(rss_mb(pid), 1),
             "fds": len(fds),
             "fd_targets": fds,
@@ -110,6 +123,69 @@ class Simulator:
         except subprocess.TimeoutExpired:
             self.process.kill()
         self.log.close()
+
+
+def _cpu_seconds(stat_path: str) -> float:
+    """User + system CPU time of a process or thread, from its /proc stat."""
+    try:
+        with open(stat_path) as stat:
+            fields = stat.read().rsplit(")", 1)[1].split()
+    except OSError:
+        return 0.0
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+def _thread_cpu(pid: int) -> dict[str, float]:
+    """CPU seconds of the process's threads, by "name/id" (Python threads are all named python, the
+    first is the simulation's, the next ones in the order they started)."""
+    seconds: dict[str, float] = {}
+    for task in sorted(os.listdir(f"/proc/{pid}/task"), key=int):
+        try:
+            with open(f"/proc/{pid}/task/{task}/comm") as comm:
+                name = comm.read().strip()
+        except OSError:
+            continue
+        seconds[f"{name}/{task}"] = _cpu_seconds(f"/proc/{pid}/task/{task}/stat")
+    return seconds
+
+
+class CpuMeter:
+    """CPU seconds per wall second over a phase: the simulator (and by thread), the programs this
+    process waited for, and this process itself."""
+
+    def __init__(self, simulator: "Simulator"):
+        self.simulator = simulator
+        self.start = self._now()
+
+    def _now(self) -> dict:
+        resources = self.simulator.resources()
+        own, children = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+        return {
+            "wall": time.monotonic(),
+            "simulator": resources["cpu_s"],
+            "threads": resources["thread_cpu_s"],
+            "programs": children.ru_utime + children.ru_stime,
+            "bench": own.ru_utime + own.ru_stime,
+        }
+
+    def phase(self) -> dict:
+        """The figures since the start or the last phase (call once the phase's programs were collected)."""
+        now = self._now()
+        start, self.start = self.start, now
+        wall = now["wall"] - start["wall"]
+        per_second = {key: round((now[key] - start[key]) / wall, 3) for key in ("simulator", "programs", "bench")}
+        per_second["simulator_threads"] = {
+            name: round((seconds - start["threads"].get(name, 0.0)) / wall, 3)
+            for name, seconds in sorted(now["threads"].items())
+            if seconds - start["threads"].get(name, 0.0) > 0.01 * wall
+        }
+        return per_second
+
+
+def lower_priority(nice: int) -> None:
+    """Lower the calling thread's priority (Linux: a thread is a task of its own; elsewhere nothing)."""
+    if nice and sys.platform == "linux":
+        os.setpriority(os.PRIO_PROCESS, threading.get_native_id(), nice)
 
 
 def _fd_target(pid: int, fd: str) -> str:
@@ -222,8 +298,9 @@ def random_frame(rng: random.Random) -> tuple[bytes, int | None]:
     return struct.pack("<I", rng.choice([0, 3, g.MAX_FRAME + 1, U32_MAX])) + bytes(8), None
 
 
-def fuzzer(port: int, robot: int, until: float, seed: int, counts: dict, lock: threading.Lock) -> None:
+def fuzzer(port: int, robot: int, until: float, seed: int, counts: dict, lock: threading.Lock, nice: int) -> None:
     """Fresh connections to `robot` until `until`, each sending up to 20 fuzzed frames."""
+    lower_priority(nice)
     rng = random.Random(seed)
     while time.monotonic() < until:
         try:
@@ -301,16 +378,18 @@ async def many_tabs(port: int, token: str, count: int) -> dict:
 
 
 # -- the runs --------------------------------------------------------------------------------------------------
-def soak(minutes: float, baseline_minutes: float, programs: int, program) -> dict:
+def soak(minutes: float, baseline_minutes: float, programs: int, program, nice: int = 0) -> dict:
     seconds = minutes * 60
     simulator = Simulator(scene_file(programs + FUZZ_ROBOTS + 1), "soak")  # and one for the KEYWait flooder
     try:
         warm_up(simulator, programs + 1)
         before = simulator.resources()
+        cpu = CpuMeter(simulator)
         quiet = collect_programs(
             start_programs(program, simulator.port, range(1, programs + 1), baseline_minutes * 60),
             timeout=baseline_minutes * 60 + 120,
         )
+        quiet_cpu = cpu.phase()
         after_quiet = simulator.resources()
         start = time.monotonic()
         until = start + seconds
@@ -318,7 +397,7 @@ def soak(minutes: float, baseline_minutes: float, programs: int, program) -> dic
         counts = {"sent": 0, "replies": 0, "error_replies": 0, "connections": 0}
         lock = threading.Lock()
         fuzzers = [
-            threading.Thread(target=fuzzer, args=(simulator.port, programs + 1 + k, until, k, counts, lock))
+            threading.Thread(target=fuzzer, args=(simulator.port, programs + 1 + k, until, k, counts, lock, nice))
             for k in range(FUZZ_ROBOTS)
         ]
         attacks = {
@@ -329,10 +408,11 @@ def soak(minutes: float, baseline_minutes: float, programs: int, program) -> dic
             "forged_refused": 0,
         }
         attackers = [
-            threading.Thread(target=idle_sockets, args=(simulator.port, until, attacks, lock)),
-            threading.Thread(target=forged_tokens, args=(simulator.port, until, attacks, lock)),
+            threading.Thread(target=idle_sockets, args=(simulator.port, until, attacks, lock, nice)),
+            threading.Thread(target=forged_tokens, args=(simulator.port, until, attacks, lock, nice)),
             threading.Thread(
-                target=key_wait_flood, args=(simulator.port, programs + FUZZ_ROBOTS + 1, until, attacks, lock)
+                target=key_wait_flood,
+                args=(simulator.port, programs + FUZZ_ROBOTS + 1, until, attacks, lock, nice),
             ),
         ]
         for thread in fuzzers + attackers:
@@ -340,11 +420,14 @@ def soak(minutes: float, baseline_minutes: float, programs: int, program) -> dic
         samples = []
         sampler = threading.Thread(target=sample_memory, args=(simulator, start, until, samples))
         sampler.start()
-        tabs = asyncio.run(tabs_coming_and_going(simulator.viewer_port, simulator.viewer_token, until))
+        tabs: dict = {}
+        tab_thread = threading.Thread(target=open_tabs, args=(simulator, until, nice, tabs))
+        tab_thread.start()
         result = collect_programs(well_behaved, timeout=seconds + 120)
-        sampler.join(60)
-        for thread in fuzzers + attackers:
+        for thread in fuzzers + attackers + [tab_thread]:
             thread.join(60)
+        attack_cpu = cpu.phase()
+        sampler.join(60)
         time.sleep(SETTLE)
         after = simulator.resources()
         return {
@@ -352,6 +435,8 @@ def soak(minutes: float, baseline_minutes: float, programs: int, program) -> dic
             "well_behaved": result,
             "baseline": quiet,
             "baseline_minutes": baseline_minutes,
+            "attackers_nice": nice,
+            "cpu_per_second": {"baseline": quiet_cpu, "with_attackers": attack_cpu},
             "p99_ratio": _ratio(result["median_p99_ms"], quiet["median_p99_ms"]),
             "worst_p99_ratio": _ratio(result["worst_p99_ms"], quiet["worst_p99_ms"]),
             "fuzz": counts,
@@ -368,10 +453,16 @@ def soak(minutes: float, baseline_minutes: float, programs: int, program) -> dic
         simulator.stop()
 
 
-def idle_sockets(port: int, until: float, attacks: dict, lock: threading.Lock) -> None:
+def open_tabs(simulator: Simulator, until: float, nice: int, tabs: dict) -> None:
+    lower_priority(nice)
+    tabs.update(asyncio.run(tabs_coming_and_going(simulator.viewer_port, simulator.viewer_token, until)))
+
+
+def idle_sockets(port: int, until: float, attacks: dict, lock: threading.Lock, nice: int) -> None:
     """Bursts of 300 sockets that never say HELLO, held 8 s (past the 5 s handshake timeout), over and over."""
     import socket
 
+    lower_priority(nice)
     while time.monotonic() < until - 10:
         held = []
         for _ in range(300):
@@ -397,8 +488,9 @@ def idle_sockets(port: int, until: float, attacks: dict, lock: threading.Lock) -
             attacks["idle_refused_or_closed"] += closed
 
 
-def forged_tokens(port: int, until: float, attacks: dict, lock: threading.Lock) -> None:
+def forged_tokens(port: int, until: float, attacks: dict, lock: threading.Lock, nice: int) -> None:
     """Handshakes with a wrong program token, ten a second: each must be refused (ERR_BAD_TOKEN)."""
+    lower_priority(nice)
     rng = random.Random(25)
     while time.monotonic() < until - 1:
         refused = False
@@ -418,8 +510,9 @@ def forged_tokens(port: int, until: float, attacks: dict, lock: threading.Lock) 
         time.sleep(0.1)
 
 
-def key_wait_flood(port: int, robot: int, until: float, attacks: dict, lock: threading.Lock) -> None:
+def key_wait_flood(port: int, robot: int, until: float, attacks: dict, lock: threading.Lock, nice: int) -> None:
     """A program that pipelines KEYWait requests and never reads a reply, reconnecting each minute."""
+    lower_priority(nice)
     while time.monotonic() < until - 5:
         try:
             client = ProgramClient(port, HOST)
@@ -533,11 +626,11 @@ def checks(soaked: dict | None, loaded: dict | None) -> list[str]:
             problems.append(f"{name}: the simulator died")
         if run["tracebacks"]:
             problems.append(f"{name}: {run['tracebacks']} tracebacks in its log")
-        for resource in ("fds", "threads"):
-            if run["after"][resource] > run["before"][resource]:
-                names = "thread_names" if resource == "threads" else "fd_targets"
+        for kind in ("fds", "threads"):
+            if run["after"][kind] > run["before"][kind]:
+                names = "thread_names" if kind == "threads" else "fd_targets"
                 problems.append(
-                    f"{name}: {resource} {run['before'][resource]} -> {run['after'][resource]}: "
+                    f"{name}: {kind} {run['before'][kind]} -> {run['after'][kind]}: "
                     f"{_difference(run['before'][names], run['after'][names])}"
                 )
     if soaked:
@@ -586,18 +679,30 @@ def main() -> None:
     parser.add_argument(
         "--load", action="store_true", help="also the load scenario (100 programs, 200 tabs, 500 cycles)"
     )
+    parser.add_argument(
+        "--nice-attackers",
+        action="store_true",
+        help=f"run the attackers, fuzzers and tabs at nice {ATTACKER_NICE} (Linux), so the p99 shows the simulator's share",
+    )
     arguments = parser.parse_args()
     program = build_c(BENCH / "programs" / "poll_load.c", BUILD / "poll_load")
     soaked = (
-        soak(arguments.minutes, arguments.baseline_minutes, arguments.programs, program)
+        soak(
+            arguments.minutes,
+            arguments.baseline_minutes,
+            arguments.programs,
+            program,
+            ATTACKER_NICE if arguments.nice_attackers else 0,
+        )
         if arguments.minutes > 0
         else None
     )
     if soaked:
-        behaved, fuzz = soaked["well_behaved"], soaked["fuzz"]
+        behaved, fuzz, cpu = soaked["well_behaved"], soaked["fuzz"], soaked["cpu_per_second"]
         print_table(
             f"Soak: {arguments.minutes:g} min, {arguments.programs} well-behaved programs, "
-            f"{FUZZ_ROBOTS} fuzzing clients, browser tabs coming and going",
+            f"{FUZZ_ROBOTS} fuzzing clients, browser tabs coming and going"
+            + (f", attackers at nice {ATTACKER_NICE}" if arguments.nice_attackers else ""),
             [
                 ("well-behaved calls", behaved["calls"]),
                 ("failed well-behaved calls", len(behaved["failures"])),
@@ -624,6 +729,17 @@ def main() -> None:
                     f"{soaked['attacks']['forged_tokens']} / {soaked['attacks']['forged_refused']}",
                 ),
                 ("tabs opened / failed", f"{soaked['tabs']['opened']} / {soaked['tabs']['failed']}"),
+                *[
+                    (
+                        f"CPU s/s {phase}: simulator / programs / attackers",
+                        f"{cpu[phase]['simulator']:.2f} / {cpu[phase]['programs']:.2f} / {cpu[phase]['bench']:.2f}",
+                    )
+                    for phase in ("baseline", "with_attackers")
+                ],
+                (
+                    "simulator threads' CPU s/s with attackers",
+                    " ".join(f"{name}:{s:.2f}" for name, s in cpu["with_attackers"]["simulator_threads"].items()),
+                ),
                 *_resources(soaked),
                 ("tracebacks in the log", soaked["tracebacks"]),
                 ("RSS (MB) by minute", " ".join(f"{m:g}:{mb:.0f}" for m, mb in soaked["rss_mb_by_minute"])),
