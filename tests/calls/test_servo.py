@@ -9,8 +9,7 @@ from support.worlds import arena_scene, example_robot
 
 from eyesim.protocol import generated as g
 from eyesim.robot.wheels.ackermann_wheels import AckermannDrive
-from eyesim.robot.components.arm import Arm
-from eyesim.robot.components.gripper import Gripper
+from eyesim.parts.arm.component import Arm, Gripper
 
 
 def reacher():

@@ -65,7 +65,7 @@ def test_the_components_a_part_names_are_what_the_robot_builder_calls():
     from eyesim.robot.components import factories  # imports the physics: only here, not when reading
 
     named = [name for part in PARTS for name in part.components]
-    assert {"eyesim.parts.psd.component:create", "eyesim.robot.components.gripper:create"} <= set(named)
+    assert {"eyesim.parts.psd.component:create", "eyesim.parts.arm.component:create"} <= set(named)
     called = {f"{factory.__module__}:{factory.__name__}" for factory in factories()}
     assert set(named) <= called
 

@@ -22,7 +22,7 @@ ROBOTS = builtins.ROBOTS_DIR
 @pytest.fixture
 def simulator(tmp_path):
     program = tmp_path / "arm_pick"
-    source = ROOT / "tests" / "robot" / "programs" / "arm_pick.c"
+    source = ROOT / "tests" / "parts" / "arm" / "programs" / "arm_pick.c"
     built = subprocess.run(eyesim_command("cc", str(source), "-o", str(program)), capture_output=True, text=True)
     assert built.returncode == 0, built.stderr
     (tmp_path / "pool.wld").write_text(

@@ -18,15 +18,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from eyesim.parts.arm.declaration import ArmSpec, GripperSpec, JointSpec
 from eyesim.parts.camera.declaration import CameraSpec
 from eyesim.parts.lidar.declaration import LidarSpec
 from eyesim.parts.psd.declaration import PsdSpec
+from eyesim.parts.thrusters.declaration import ThrusterSpec
+from eyesim.parts.water.declaration import BuoyancySpec, DragSpec
 from eyesim.scene.diagnostics import Diagnostic, Location
 from eyesim.scene.parts import RobotType
-from eyesim.scene.parts.arm import ArmSpec, GripperSpec, JointSpec
 from eyesim.scene.parts.body import Collider
-from eyesim.scene.parts.thrusters import ThrusterSpec
-from eyesim.scene.parts.water import BuoyancySpec, DragSpec
 from eyesim.scene.parts.wheels import SteeringSpec, WheelSpec
 
 

@@ -2,9 +2,9 @@
 
 A robot is built from, in this order: its drive (the wheels its declared drive archetype names,
 scene/drives, built by robot/wheels) and the VW controller that drives it; the components of its
-parts, which each part declaration names (scene/parts: a new part kind needs no line here); and
-the parts of the robot's computer that every robot has, listed below (a new one of those = one new
-module with a `create(context)` function + one line here)."""
+parts, which each part declaration names (parts/<kind>/declaration.py: a new part kind needs no
+line here); and the parts of the robot's computer that every robot has, listed below (a new one of
+those = one new module with a `create(context)` function + one line here)."""
 
 from __future__ import annotations
 

@@ -3,17 +3,26 @@ dataclass, the `.robi` keyword table and the published robot JSON Schema.
 
 Adding a part kind = one folder, parts/<kind>/ (its declaration.py declares its PART, see
 parts/part.py; its component.py what it does in the simulation; its calls.py its RoBIOS
-handlers), + its PART in PARTS and its fields among RobotType's bases here. Kinds not yet in a folder of their own are modules of this package."""
+handlers), + its PART in PARTS and its fields among RobotType's bases here.
+
+The robot's base stays in this package: the body (chassis), the drive line and the wheels
+(body.py, drive.py, wheels.py). Every robot type has them, they name no component of their own
+(the robot builder makes the chassis, robot/wheels the drive's wheels and the VW controller drives
+them, for any drive archetype of scene/drives), and the other parts read them (the arm sits on the
+chassis, the buoyancy acts on its hull)."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
+from eyesim.parts.arm import declaration as arm
 from eyesim.parts.bumper import declaration as bumper
 from eyesim.parts.camera import declaration as camera
 from eyesim.parts.lidar import declaration as lidar
 from eyesim.parts.psd import declaration as psd
-from eyesim.scene.parts import arm, body, drive, thrusters, water, wheels
+from eyesim.parts.thrusters import declaration as thrusters
+from eyesim.parts.water import declaration as water
+from eyesim.scene.parts import body, drive, wheels
 from eyesim.parts.part import Part, text
 
 # In this order the reader finishes them (the arm sits on the chassis: after the body), their
@@ -72,7 +81,7 @@ class RobotType(
     """A robot type: what a .robi file (or a built-in definition) says about a robot.
 
     `name` and `source` (the file it came from), then the fields each part kind declares
-    (parts/<kind>/declaration.py, scene/parts/): `drive` is one of the drive archetypes
+    (parts/<kind>/declaration.py; the base's in scene/parts/): `drive` is one of the drive archetypes
     (scene/drives); a wheeled robot may also carry an `arm`: drive commands then move the base and
     servo commands the arm."""
 

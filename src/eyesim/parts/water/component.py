@@ -4,10 +4,10 @@ from __future__ import annotations
 
 from functools import partial
 
+from eyesim.parts.water.declaration import BuoyancySpec
 from eyesim.physics.units import mm
 from eyesim.physics.water import DENSITY, WaterForces
 from eyesim.robot.component import Component
-from eyesim.scene.description import BuoyancySpec
 from eyesim.scene.parts.body import hull_centroid
 
 

@@ -1,4 +1,4 @@
-"""Thrusters (`thruster` lines); how they push: robot/components/thrusters.py."""
+"""Thrusters (`thruster` lines); how they push: component.py."""
 
 from __future__ import annotations
 
@@ -78,7 +78,7 @@ def write(robot) -> list[str]:
 
 PART = Part(
     "thrusters",
-    components=("eyesim.robot.components.thrusters:create",),
+    components=("eyesim.parts.thrusters.component:create",),
     fields=ThrustersFields,
     keywords={"thruster": read_thruster},
     write=write,

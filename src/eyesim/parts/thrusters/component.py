@@ -7,10 +7,10 @@ import math
 
 import mujoco
 
+from eyesim.parts.thrusters.declaration import ThrusterSpec
 from eyesim.physics.units import mm
 from eyesim.robot.actuators import ActuatorError
 from eyesim.robot.component import Component
-from eyesim.scene.description import ThrusterSpec
 
 
 NO_SPEED_CONTROL = "is a thruster without an encoder: it has no speed control (use MOTORDrive)"

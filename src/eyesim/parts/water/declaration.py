@@ -1,5 +1,5 @@
 """How the robot floats and moves through water (`buoyancy`, `drag`) and where it starts in it
-(`depth`); the forces: robot/components/buoyancy.py and physics/water.py."""
+(`depth`); the forces: component.py and physics/water.py."""
 
 from __future__ import annotations
 
@@ -104,7 +104,7 @@ def write(robot) -> list[str]:
 
 PART = Part(
     "water",
-    components=("eyesim.robot.components.buoyancy:create",),
+    components=("eyesim.parts.water.component:create",),
     fields=WaterFields,
     keywords={"buoyancy": read_buoyancy, "drag": read_drag, "depth": read_depth},
     write=write,

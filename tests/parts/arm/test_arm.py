@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from eyesim.robot.components.arm import Arm
+from eyesim.parts.arm.component import Arm
 from support.client import ProgramClient
 from support.simulator import running_simulation
 from support.worlds import arena_scene, example_robot

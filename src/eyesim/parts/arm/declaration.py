@@ -1,5 +1,5 @@
 """A manipulator arm (`arm`, `joint` lines) and its gripper (`gripper`); how they move:
-robot/components/arm.py and gripper.py."""
+component.py."""
 
 from __future__ import annotations
 
@@ -163,10 +163,7 @@ def json_locations(robot, positions) -> dict:
 
 PART = Part(
     "arm",
-    components=(
-        "eyesim.robot.components.arm:create",
-        "eyesim.robot.components.gripper:create",
-    ),
+    components=("eyesim.parts.arm.component:create",),
     fields=ArmFields,
     keywords={"arm": read_arm, "joint": read_joint, "gripper": read_gripper},
     write=write,
