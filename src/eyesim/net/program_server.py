@@ -95,7 +95,7 @@ class ProgramConnection:
         self.connected_at = time.monotonic()
 
     # -- replies -------------------------------------------------------------------------------
-    def send(self, data: bytes) -> None:
+    def send(self, data: bytes | memoryview) -> None:
         if self.closed:
             return
         if not self.backlog.size:
@@ -264,11 +264,12 @@ class ProgramConnection:
             return
         self.closed = True
         if flush and self.backlog.size:
+            # What the kernel takes now (the error reply, as a rule); never a wait on the simulation
+            # thread: a program that stopped reading would hold every other program up.
             try:
-                self.sock.setblocking(True)
-                self.sock.settimeout(1.0)
                 for chunk in self.backlog.chunks():
-                    self.sock.sendall(chunk)
+                    if self.sock.send(chunk) < len(chunk):
+                        break
             except OSError:
                 pass
         self.backlog = Backlog()  # given back at once, not when the session is forgotten
