@@ -10,7 +10,7 @@ from support.simulator import running_simulation
 
 from eyesim.core import robot_input, schedules
 from eyesim.core.engine import DEFAULT_CALL_TIME_US
-from eyesim.net.program_server import ProgramSockets
+from eyesim.net.program_server import SimulationEventLoop
 from eyesim.protocol import generated as g
 from eyesim.robot.components.keys import KEY2
 
@@ -227,13 +227,13 @@ def test_quiet_stretches_of_steps_change_nothing_but_how_often_the_sockets_are_l
     in one go instead of looking at the sockets after each: the same trajectory, step for step, as
     one step a round, with far fewer looks."""
     looks = []
-    poll = ProgramSockets.poll
+    poll = SimulationEventLoop.poll
 
     def counted_poll(sockets, timeout):
         looks[-1] += 1
         return poll(sockets, timeout)
 
-    monkeypatch.setattr(ProgramSockets, "poll", counted_poll)
+    monkeypatch.setattr(SimulationEventLoop, "poll", counted_poll)
     runs = []
     for quiet_steps in (1, schedules.QUIET_STEPS):
         monkeypatch.setattr(schedules, "QUIET_STEPS", quiet_steps)

@@ -25,7 +25,7 @@ from eyesim.core.clock import DEFAULT_CALL_TIME_US, Clock
 from eyesim.core.events import EventBus
 from eyesim.core.requests import Requests
 from eyesim.core.schedules import SNAPSHOT_PERIOD, schedule_for
-from eyesim.net.program_server import ProgramSockets
+from eyesim.net.program_server import SimulationEventLoop
 from eyesim.net.session import Session
 from eyesim.protocol.ops import DEVICE
 from eyesim.robot.component import Component
@@ -48,7 +48,7 @@ class Simulation:
         self.requests = Requests(self)
         self.timing = schedule_for(self)  # realtime or lock-step, for the life of the clock
         # Program sockets are served on this thread: waiting for the next step means waiting on them.
-        self.network = ProgramSockets(self.requests.deliver, self.requests.connected, self.requests.drop)
+        self.network = SimulationEventLoop(self.requests.deliver, self.requests.connected, self.requests.drop)
         self._running = False
         self.sessions: list[Session] = []
         self.expected_programs: set[int] = set()  # robot ids whose launched program has not connected

@@ -83,7 +83,7 @@ def hello_version(message) -> int | None:
 class ProgramConnection:
     """One program's socket; used only on the simulation thread."""
 
-    def __init__(self, sockets: "ProgramSockets", sock: socket.socket, peer: str):
+    def __init__(self, sockets: "SimulationEventLoop", sock: socket.socket, peer: str):
         self.sockets = sockets
         self.sock = sock
         self.decoder = FrameDecoder()
@@ -283,9 +283,9 @@ class ProgramConnection:
         self.sockets.closed(self)
 
 
-class ProgramSockets:
-    """The selector the simulation thread waits on: listeners, program connections and a wake-up
-    socket pair for the other threads. `deliver(request)`, `connected(session)` and
+class SimulationEventLoop:
+    """The simulation thread's event loop: the selector it waits on between steps, for listeners,
+    program connections and a wake-up socket pair for the other threads. `deliver(request)`, `connected(session)` and
     `disconnected(session)` are the simulation's, called on its thread."""
 
     def __init__(self, deliver, connected, disconnected):
@@ -469,7 +469,7 @@ class ProgramSockets:
 
 class ProgramServer:
     """Listens for programs on host:port (port 0 = any free port; see `port` once started). The
-    simulation thread accepts and serves the connections (see ProgramSockets).
+    simulation thread accepts and serves the connections (see SimulationEventLoop).
 
     Every HELLO must carry the run's program token (net/program_token.py): `token`, else a new
     random one; `require_token=False` lets any program in, on loopback only (NoTokenRefused, a
