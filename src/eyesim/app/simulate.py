@@ -211,6 +211,7 @@ def simulate(args, cleanup: contextlib.ExitStack) -> int:
     if sim.clock.deterministic or args.headless:
         watch = StallWatch(sim, _say_why_the_run_stands_still, keys_can_come=not args.headless).start()
     wall_limit = _wall_limit(sim, args.wall_limit)
+    memory_trim = _MemoryTrim()
     try:
         sim.run(until=args.until)
     except KeyboardInterrupt:
@@ -221,6 +222,7 @@ def simulate(args, cleanup: contextlib.ExitStack) -> int:
             watch.stop()
         if wall_limit is not None:
             wall_limit.cancel()
+        memory_trim.stop()
         launcher.stop_all(let_finish=5.0 if sim.stop_when_programs_done else 0.0)
         sim.shutdown_programs()
         sim.handle_queued()
@@ -293,6 +295,26 @@ class _WallLimit:
 
     def cancel(self) -> None:
         self._timer.cancel()
+
+
+class _MemoryTrim:
+    """Once a minute of a run, the C heap's free memory goes back to the system
+    (platform.return_free_memory): a run of hours, a class's lab session, stays at the size it needs
+    instead of growing by the pages freed messages and images leave behind."""
+
+    EVERY = 60.0  # s of wall time
+
+    def __init__(self):
+        self._stop = threading.Event()
+        self._thread = threading.Thread(target=self._run, name="memory trim", daemon=True)
+        self._thread.start()
+
+    def _run(self) -> None:
+        while not self._stop.wait(self.EVERY):
+            platform.return_free_memory()
+
+    def stop(self) -> None:
+        self._stop.set()
 
 
 def _wall_limit(sim, seconds: float | None) -> _WallLimit | None:
