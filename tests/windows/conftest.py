@@ -57,6 +57,12 @@ def x_display():
     if not number.isdigit():
         server.kill()
         pytest.fail(f"Xvfb did not start: {server.communicate(timeout=10)[1].decode(errors='replace')}")
+    # Wine's session (wineserver and its desktop process) outlives one program by a few seconds, and
+    # a session started without a display keeps making windows without one: GLFW then finds no
+    # OpenGL. End it, so the next program starts a session on this display.
+    wineserver = shutil.which("wineserver") or "wineserver"
+    subprocess.run([wineserver, "--kill"], env=windows_env.wine_env(), timeout=60)
+    subprocess.run([wineserver, "--wait"], env=windows_env.wine_env(), timeout=60)
     try:
         yield f":{number}"
     finally:
