@@ -9,36 +9,24 @@ and FUZZ_SEED (any integer: a new random series instead of the fixed one)."""
 from __future__ import annotations
 
 import logging
-import os
 import struct
 import time
 
 import pytest
-from hypothesis import HealthCheck, given, seed, settings
+from hypothesis import given
 from hypothesis import strategies as st
 from support.client import ProgramClient, RemoteError
 from support.error_log import ErrorLog
 from support.memory import rss_mb
 from support.simulator import running_simulation
 from support.worlds import arena_scene, example_robot
+from support.fuzz import examples, fuzz_settings
 
 from eyesim.protocol import encode_frame, encode_payload, generated as g
 from eyesim.scene.description import Wall
 
 INT_MAX, INT_MIN, U32_MAX = 2**31 - 1, -(2**31), 2**32 - 1
-EXAMPLES = int(os.environ.get("FUZZ_EXAMPLES", "300"))
-SEED = os.environ.get("FUZZ_SEED")
-
-
-def fuzz_settings(test):
-    test = settings(
-        max_examples=EXAMPLES,
-        deadline=None,
-        derandomize=SEED is None,
-        database=None,
-        suppress_health_check=list(HealthCheck),
-    )(test)
-    return seed(int(SEED))(test) if SEED is not None else test
+EXAMPLES = examples(300)
 
 
 GOOD_ROBOT = 2  # the well-behaved program's robot: in a room of its own, facing its east wall
@@ -222,7 +210,7 @@ def answer_to(client: ProgramClient, request_id: int):
             return message
 
 
-@fuzz_settings
+@fuzz_settings(EXAMPLES)
 @given(st.sampled_from(["1", "3", None]), answered)
 def test_fuzzed_requests_are_answered_and_harm_nobody(fuzz_target, robot, request):
     sim, port, good, _ = fuzz_target
@@ -276,7 +264,7 @@ def test_every_operation_with_extreme_values(fuzz_target, code):
     good.check()
 
 
-@fuzz_settings
+@fuzz_settings(EXAMPLES)
 @given(st.sampled_from(["1", "3", None]), unanswered)
 def test_bytes_that_are_not_whole_frames_harm_nobody(fuzz_target, robot, data):
     sim, port, good, _ = fuzz_target

@@ -11,31 +11,19 @@ For a longer run set FUZZ_EXAMPLES (e.g. 5000) and FUZZ_SEED."""
 
 from __future__ import annotations
 
-import os
 import tempfile
 from pathlib import Path
 
-from hypothesis import HealthCheck, given, seed, settings
+from hypothesis import given
 from hypothesis import strategies as st
+from support.fuzz import examples, fuzz_settings
 
 from eyesim.scene import Scene, SceneError, load_scene
 from scene_testing import CORPUS, manifest
 
-EXAMPLES = int(os.environ.get("FUZZ_EXAMPLES", "150"))
-SEED = os.environ.get("FUZZ_SEED")
+EXAMPLES = examples(150)
 SCENE_FILES = sorted(relative for relative, kind in manifest() if kind in ("sim", "wld", "maz"))
 REFERENCED = sorted(relative for relative, kind in manifest() if kind in ("robi", "esObj"))
-
-
-def fuzz_settings(test):
-    test = settings(
-        max_examples=EXAMPLES,
-        deadline=None,
-        derandomize=SEED is None,
-        database=None,
-        suppress_health_check=list(HealthCheck),
-    )(test)
-    return seed(int(SEED))(test) if SEED is not None else test
 
 
 @st.composite
@@ -88,7 +76,7 @@ def corpus_file_changed(draw, files):
     return relative, draw(changed((CORPUS / relative).read_bytes()))
 
 
-@fuzz_settings
+@fuzz_settings(EXAMPLES)
 @given(corpus_file_changed(SCENE_FILES))
 def test_cut_or_changed_corpus_scenes_load_or_say_where_they_are_wrong(case):
     relative, content = case
@@ -104,7 +92,7 @@ def _scenes_using(relative: str) -> list[str]:
 USED_DEFINITIONS = [r for r in REFERENCED if _scenes_using(r)]
 
 
-@fuzz_settings
+@fuzz_settings(EXAMPLES)
 @given(corpus_file_changed(USED_DEFINITIONS), st.data())
 def test_cut_or_changed_robot_and_object_files_inside_their_scenes(case, data):
     relative, content = case

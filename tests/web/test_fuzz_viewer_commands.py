@@ -11,7 +11,6 @@ from __future__ import annotations
 import asyncio
 import json
 import logging
-import os
 import sys
 import threading
 import time
@@ -19,28 +18,17 @@ from pathlib import Path
 
 import aiohttp
 import pytest
-from hypothesis import HealthCheck, given, seed, settings
+from hypothesis import given
 from hypothesis import strategies as st
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from support.error_log import ErrorLog  # noqa: E402
 from support.viewer import viewer_simulation  # noqa: E402
 from support.worlds import arena_scene  # noqa: E402
+from support.fuzz import examples, fuzz_settings
 
-EXAMPLES = int(os.environ.get("FUZZ_EXAMPLES", "300"))
-SEED = os.environ.get("FUZZ_SEED")
+EXAMPLES = examples(300)
 REPLY_TIMEOUT = 10.0
-
-
-def fuzz_settings(test):
-    test = settings(
-        max_examples=EXAMPLES,
-        deadline=None,
-        derandomize=SEED is None,
-        database=None,
-        suppress_health_check=list(HealthCheck),
-    )(test)
-    return seed(int(SEED))(test) if SEED is not None else test
 
 
 # Fields of each command (docs/viewer-channel.md, "Browser -> server" and "Timeline").
@@ -193,7 +181,7 @@ def _is_timeline(frame) -> bool:
     return isinstance(data, dict) and isinstance(data.get("type"), str) and data["type"] in TIMELINE
 
 
-@fuzz_settings
+@fuzz_settings(EXAMPLES)
 @given(frames)
 def test_every_command_gets_no_error_or_one_error_and_the_connection_stays(viewer_target, frame):
     sim, browser, _ = viewer_target
