@@ -10,41 +10,25 @@ import threading
 
 import numpy as np
 import pytest
-from PIL import Image
 from support.client import ProgramClient
-from support.scenes import arena
+from support.scenes import arena, coloured_scene
 from support.simulator import running_simulation
 
 from eyesim.core.engine import Simulation
 from eyesim.physics import render_raycast, renderer_choice
 from eyesim.physics.render_raycast import RayCastRenderer
 from eyesim.parts.camera.component import Camera
-from eyesim.scene.description import Wall
 
 CAM5MP = 5
 ROBOTS = ((600, 600, 30), (1200, 900, 100), (700, 1300, 200))
 
 
 def room(tmp_path, fisheye: bool = False, texture: bool = False) -> Simulation:
-    """A 2 m room with walls of four colours, a low wall, three robots, and if asked a checkered
-    floor and fisheye cameras."""
-    colours = ((255, 0, 0), (0, 200, 0), (0, 0, 255), (230, 230, 0))
-    corners = ((0, 0), (2000, 0), (2000, 2000), (0, 2000))
-    walls = tuple(Wall(*corners[k], *corners[(k + 1) % 4], color=colours[k]) for k in range(4))
-    walls += (Wall(1000, 300, 1400, 300, thickness=40, height=120, color=(255, 120, 0)),)
-    scene = arena(robots=ROBOTS)
-    world = dataclasses.replace(scene.world, walls=walls)
-    if texture:
-        checks = np.kron(np.indices((8, 8)).sum(axis=0) % 2, np.ones((16, 16), dtype=np.int64))
-        image = np.where(checks[:, :, None] == 1, (240, 240, 240), (60, 60, 140)).astype(np.uint8)
-        Image.fromarray(image).save(tmp_path / "checker.png")
-        world = dataclasses.replace(world, floor_texture=str(tmp_path / "checker.png"))
-    scene = dataclasses.replace(scene, world=world)
+    """The cameras' coloured room (support/scenes.py), with fisheye cameras if asked."""
+    s4 = arena().robot_types["S4"]
     if fisheye:
-        s4 = scene.robot_types["S4"]
         s4 = dataclasses.replace(s4, camera=dataclasses.replace(s4.camera, fisheye=True, fov=150))
-        scene = dataclasses.replace(scene, robot_types={"S4": s4})
-    return Simulation(scene)
+    return Simulation(coloured_scene(tmp_path, s4, ROBOTS, texture))
 
 
 def views(sim: Simulation, width: int, height: int):

@@ -8,18 +8,14 @@ import sys
 
 import numpy as np
 import pytest
-from PIL import Image
 from support.client import ProgramClient
-from support.scenes import arena
+from support.scenes import BLUE, GREEN, ORANGE, RED, arena, coloured_scene
 from support.simulator import running_simulation
 
 from eyesim.core.engine import Simulation
 from eyesim.physics import render_gl, renderer_choice
 from eyesim.physics.render_raycast import RayCastRenderer
 from eyesim.parts.camera.component import Camera
-from eyesim.scene.description import Wall
-
-RED, GREEN, BLUE, YELLOW, ORANGE = (255, 0, 0), (0, 200, 0), (0, 0, 255), (230, 230, 0), (255, 120, 0)
 
 
 @pytest.fixture(scope="module")
@@ -34,31 +30,6 @@ def coloured_room(
     tmp_path, robot_type=None, robots=((600, 600, 30), (1200, 900, 100), (700, 1300, 200)), texture=False
 ):
     return Simulation(coloured_scene(tmp_path, robot_type, robots, texture))
-
-
-def coloured_scene(
-    tmp_path, robot_type=None, robots=((600, 600, 30), (1200, 900, 100), (700, 1300, 200)), texture=False
-):
-    """A 2 m room with a wall of each colour, a low orange wall, three robots and, if asked, a
-    checkered floor texture."""
-    walls = (
-        Wall(0, 0, 2000, 0, color=RED),
-        Wall(2000, 0, 2000, 2000, color=GREEN),
-        Wall(2000, 2000, 0, 2000, color=BLUE),
-        Wall(0, 2000, 0, 0, color=YELLOW),
-        Wall(1000, 300, 1400, 300, thickness=40, height=120, color=ORANGE),
-    )
-    scene = arena(robots=robots)
-    world = dataclasses.replace(scene.world, walls=walls)
-    if texture:
-        checks = np.kron(np.indices((8, 8)).sum(axis=0) % 2, np.ones((16, 16), dtype=np.int64))
-        image = np.where(checks[:, :, None] == 1, (240, 240, 240), (60, 60, 140)).astype(np.uint8)
-        Image.fromarray(image).save(tmp_path / "checker.png")
-        world = dataclasses.replace(world, floor_texture=str(tmp_path / "checker.png"))
-    scene = dataclasses.replace(scene, world=world)
-    if robot_type is not None:
-        scene = dataclasses.replace(scene, robot_types={robot_type.name: robot_type})
-    return scene
 
 
 def difference(first: np.ndarray, second: np.ndarray, block: int = 1) -> tuple[float, float]:
