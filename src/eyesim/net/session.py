@@ -92,7 +92,7 @@ class Deferred(Pending):
         self.work.cancel()
 
 
-@dataclass
+@dataclass(eq=False)  # a session is itself: compared field by field, each `in sim.sessions` compared whole sessions
 class Session:
     connection: Connection
     peer: str = ""

@@ -102,6 +102,7 @@ class ViewerHub:
         self.latest_status: str | None = None
         self._rate = (time.perf_counter(), 0.0, 1.0)  # wall, sim time, real-time factor
         self.history = LiveHistory([r.id for r in sim.robots])
+        self._psd_readings: list[tuple] = []  # (robot, time, reading) since the last snapshot; simulation thread
         # In the URLs of the scene's floor texture and models: another scene has other URLs, so a
         # browser never shows the last scene's image from its cache (the routes stay the same).
         self.scene_version = secrets.token_hex(4)
@@ -116,13 +117,16 @@ class ViewerHub:
 
     def on_snapshot(self, message: dict) -> None:
         states = [robot_state(robot) for robot in self.sim.robots]  # for the history's plots
-        self.loop.call_soon_threadsafe(self._snapshot, message, messages.status(self.sim, None), states)
+        readings, self._psd_readings = self._psd_readings, []
+        self.loop.call_soon_threadsafe(self._snapshot, message, messages.status(self.sim, None), states, readings)
 
     def on_request(self, robot, request, reply) -> None:
-        """A request observer (engine): PSD readings, for the history's plots."""
+        """A request observer (engine): PSD readings, for the history's plots. They go to the I/O
+        loop with the next snapshot: a hand-over per reading (thousands a second) wrote to that loop's
+        wake-up pipe and woke its thread each time."""
         if request.op.code == g.OP_PSD_GET:
             reading = {"robot": robot.id, "psd": request.args[0], "distance_mm": reply[0]}
-            self.loop.call_soon_threadsafe(self.history.add_psd, robot.id, request.time_us, reading)
+            self._psd_readings.append((robot.id, request.time_us, reading))
 
     # -- I/O loop ----------------------------------------------------------------------------
     def _following(self) -> list[Browser]:
@@ -183,7 +187,9 @@ class ViewerHub:
             browser.reviewing = False
             browser.cursor = timeline.FrameCursor()
 
-    def _snapshot(self, message: dict, status: dict, states: list[dict]) -> None:
+    def _snapshot(self, message: dict, status: dict, states: list[dict], psd_readings: list[tuple]) -> None:
+        for robot_id, time_us, reading in psd_readings:
+            self.history.add_psd(robot_id, time_us, reading)
         wall, sim_time, rate = self._rate
         now = time.perf_counter()
         if now - wall >= 0.5:
