@@ -19,11 +19,17 @@ priority they take the two cores from the well-behaved programs, so their p99 sh
 system's scheduler as much as the simulator's fairness. Niced, the figures show the simulator's
 share; run it both ways and report both.
 
+--attacks chooses which of them run (fuzz, tabs, idle, forged, keywait; all by default), to tell
+their costs apart. --control makes them attack a second simulator, started before the baseline,
+instead of the well-behaved programs' own: the machine carries the same clients, but another
+process does their work, so the ratio shows what the attackers' load on the cores alone costs.
+
 Load (--load, after the soak; --minutes 0 for the load alone): 100 programs connected at once each
 calling in a loop, 200 browser tabs opened at once and closed, 500 connect/disconnect cycles of
 programs. Each must be served with no failed call; descriptors and threads must come back.
 
 Run:  python3 bench/soak.py [--minutes 10] [--baseline-minutes 2] [--programs 50] [--load] [--nice-attackers]
+                            [--attacks fuzz,tabs,idle,forged,keywait] [--control]
       python3 bench/soak.py --minutes 0.5 --load        (a smoke run, about 2 minutes)
 Exit status 1 when a check fails. Every loop is bounded in count and in time."""
 
@@ -378,11 +384,21 @@ async def many_tabs(port: int, token: str, count: int) -> dict:
 
 
 # -- the runs --------------------------------------------------------------------------------------------------
-def soak(minutes: float, baseline_minutes: float, programs: int, program, nice: int = 0) -> dict:
+ATTACKS = ("fuzz", "tabs", "idle", "forged", "keywait")
+
+
+def soak(
+    minutes: float, baseline_minutes: float, programs: int, program, nice: int = 0, chosen=ATTACKS, control=False
+) -> dict:
     seconds = minutes * 60
-    simulator = Simulator(scene_file(programs + FUZZ_ROBOTS + 1), "soak")  # and one for the KEYWait flooder
+    scene = scene_file(programs + FUZZ_ROBOTS + 1)  # and one for the KEYWait flooder
+    simulator = Simulator(scene, "soak")
+    # control: the attackers load the machine as much, but another simulator does their work
+    target = Simulator(scene, "soak_control") if control else simulator
     try:
         warm_up(simulator, programs + 1)
+        if control:
+            warm_up(target, programs + 1)
         before = simulator.resources()
         cpu = CpuMeter(simulator)
         quiet = collect_programs(
@@ -395,10 +411,11 @@ def soak(minutes: float, baseline_minutes: float, programs: int, program, nice: 
         until = start + seconds
         well_behaved = start_programs(program, simulator.port, range(1, programs + 1), seconds)
         counts = {"sent": 0, "replies": 0, "error_replies": 0, "connections": 0}
+        tabs = {"opened": 0, "failed": 0}
         lock = threading.Lock()
         fuzzers = [
-            threading.Thread(target=fuzzer, args=(simulator.port, programs + 1 + k, until, k, counts, lock, nice))
-            for k in range(FUZZ_ROBOTS)
+            threading.Thread(target=fuzzer, args=(target.port, programs + 1 + k, until, k, counts, lock, nice))
+            for k in range(FUZZ_ROBOTS if "fuzz" in chosen else 0)
         ]
         attacks = {
             "idle_sockets": 0,
@@ -408,23 +425,22 @@ def soak(minutes: float, baseline_minutes: float, programs: int, program, nice: 
             "forged_refused": 0,
         }
         attackers = [
-            threading.Thread(target=idle_sockets, args=(simulator.port, until, attacks, lock, nice)),
-            threading.Thread(target=forged_tokens, args=(simulator.port, until, attacks, lock, nice)),
-            threading.Thread(
-                target=key_wait_flood,
-                args=(simulator.port, programs + FUZZ_ROBOTS + 1, until, attacks, lock, nice),
-            ),
+            threading.Thread(target=target, args=args)
+            for name, target, args in (
+                ("idle", idle_sockets, (target.port, until, attacks, lock, nice)),
+                ("forged", forged_tokens, (target.port, until, attacks, lock, nice)),
+                ("keywait", key_wait_flood, (target.port, programs + FUZZ_ROBOTS + 1, until, attacks, lock, nice)),
+                ("tabs", open_tabs, (target, until, nice, tabs)),
+            )
+            if name in chosen
         ]
         for thread in fuzzers + attackers:
             thread.start()
         samples = []
         sampler = threading.Thread(target=sample_memory, args=(simulator, start, until, samples))
         sampler.start()
-        tabs: dict = {}
-        tab_thread = threading.Thread(target=open_tabs, args=(simulator, until, nice, tabs))
-        tab_thread.start()
         result = collect_programs(well_behaved, timeout=seconds + 120)
-        for thread in fuzzers + attackers + [tab_thread]:
+        for thread in fuzzers + attackers:
             thread.join(60)
         attack_cpu = cpu.phase()
         sampler.join(60)
@@ -446,11 +462,14 @@ def soak(minutes: float, baseline_minutes: float, programs: int, program, nice: 
             "after_baseline": after_quiet,
             "before": before,
             "after": after,
-            "tracebacks": simulator.tracebacks(),
-            "simulator_alive": simulator.process.poll() is None,
+            "attacked": "a second simulator (control)" if control else "the well-behaved programs' simulator",
+            "tracebacks": simulator.tracebacks() + (target.tracebacks() if control else 0),
+            "simulator_alive": simulator.process.poll() is None and target.process.poll() is None,
         }
     finally:
         simulator.stop()
+        if control:
+            target.stop()
 
 
 def open_tabs(simulator: Simulator, until: float, nice: int, tabs: dict) -> None:
@@ -684,6 +703,17 @@ def main() -> None:
         action="store_true",
         help=f"run the attackers, fuzzers and tabs at nice {ATTACKER_NICE} (Linux), so the p99 shows the simulator's share",
     )
+    parser.add_argument(
+        "--control",
+        action="store_true",
+        help="the attackers hit a second simulator: the p99 ratio then shows what their load on the machine "
+        "alone costs the well-behaved programs (run it beside a soak without it)",
+    )
+    parser.add_argument(
+        "--attacks",
+        default=",".join(ATTACKS),
+        help=f"which of {', '.join(ATTACKS)} run beside the well-behaved programs (to tell their costs apart)",
+    )
     arguments = parser.parse_args()
     program = build_c(BENCH / "programs" / "poll_load.c", BUILD / "poll_load")
     soaked = (
@@ -693,6 +723,8 @@ def main() -> None:
             arguments.programs,
             program,
             ATTACKER_NICE if arguments.nice_attackers else 0,
+            _attacks(parser, arguments.attacks),
+            arguments.control,
         )
         if arguments.minutes > 0
         else None
@@ -702,7 +734,8 @@ def main() -> None:
         print_table(
             f"Soak: {arguments.minutes:g} min, {arguments.programs} well-behaved programs, "
             f"{FUZZ_ROBOTS} fuzzing clients, browser tabs coming and going"
-            + (f", attackers at nice {ATTACKER_NICE}" if arguments.nice_attackers else ""),
+            + (f", attackers at nice {ATTACKER_NICE}" if arguments.nice_attackers else "")
+            + (", attacking a second simulator (control)" if arguments.control else ""),
             [
                 ("well-behaved calls", behaved["calls"]),
                 ("failed well-behaved calls", len(behaved["failures"])),
@@ -723,7 +756,7 @@ def main() -> None:
                     "idle sockets / refused or closed",
                     f"{soaked['attacks']['idle_sockets']} / {soaked['attacks']['idle_refused_or_closed']}",
                 ),
-                ("KEYWait requests pipelined", soaked["attacks"]["key_waits_sent"]),
+                ("KEYWait requests sent (most never read: the cap)", soaked["attacks"]["key_waits_sent"]),
                 (
                     "forged tokens / refused",
                     f"{soaked['attacks']['forged_tokens']} / {soaked['attacks']['forged_refused']}",
@@ -767,6 +800,14 @@ def main() -> None:
     write_results("soak", {"soak": soaked, "load": loaded, "problems": problems})
     print("\n" + ("\n".join(problems) if problems else "all checks passed"))
     sys.exit(1 if problems else 0)
+
+
+def _attacks(parser: argparse.ArgumentParser, names: str) -> tuple[str, ...]:
+    chosen = tuple(name.strip() for name in names.split(",") if name.strip())
+    unknown = [name for name in chosen if name not in ATTACKS]
+    if unknown:
+        parser.error(f"unknown attacks {', '.join(unknown)}; choose from {', '.join(ATTACKS)}")
+    return chosen
 
 
 def _ratio(value: float, baseline: float) -> float:
