@@ -1,6 +1,8 @@
 """Simulation.replace_scene: another scene in place of the running one (the viewer's scene browser)."""
 
+import gc
 import threading
+import weakref
 
 import pytest
 from support.client import ProgramClient
@@ -67,3 +69,17 @@ def test_a_scene_the_physics_cannot_build_leaves_the_old_one_running():
         client = ProgramClient(port)
         client.hello()
         client.call("OS_GET_COUNT")
+
+
+def test_a_replaced_scene_is_freed_in_a_run_that_froze_its_setup():
+    """`eyesim run` freezes what it set up out of the garbage collector's full passes; a scene
+    replaced later must still be freed (its robots and their parts hold each other)."""
+    with running_simulation(arena(), "realtime") as (sim, _):
+        old_robot = weakref.ref(sim.robots[0])
+        gc.freeze()
+        try:
+            on_sim_thread(sim, lambda s: s.replace_scene(arena(robots=((600, 600, 0),))))
+            assert old_robot() is None
+            assert gc.get_freeze_count()  # the new scene is frozen in its place
+        finally:
+            gc.unfreeze()

@@ -14,6 +14,7 @@ simulation time has gone on by that much since the request came in. What the Eye
 
 from __future__ import annotations
 
+import gc
 import heapq
 import itertools
 import logging
@@ -116,6 +117,10 @@ class Simulation:
         self.shutdown_programs()
         self.scene = scene
         self._build(built)
+        if gc.get_freeze_count():  # the run froze what it set up (app/simulate.py): the old scene
+            gc.unfreeze()  # holds cycles (robots and their parts) only a collection frees, so collect
+            gc.collect()  # it once, then freeze the new scene for the rest of the run
+            gc.freeze()
         self._publish_again = True  # the new robots' LCD and camera images, whether they change or not
         self.events.emit({"type": "new-scene", "opened": opened})
 
