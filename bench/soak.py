@@ -425,8 +425,8 @@ def soak(
             "forged_refused": 0,
         }
         attackers = [
-            threading.Thread(target=target, args=args)
-            for name, target, args in (
+            threading.Thread(target=attack, args=args)
+            for name, attack, args in (
                 ("idle", idle_sockets, (target.port, until, attacks, lock, nice)),
                 ("forged", forged_tokens, (target.port, until, attacks, lock, nice)),
                 ("keywait", key_wait_flood, (target.port, programs + FUZZ_ROBOTS + 1, until, attacks, lock, nice)),
@@ -733,7 +733,7 @@ def main() -> None:
         behaved, fuzz, cpu = soaked["well_behaved"], soaked["fuzz"], soaked["cpu_per_second"]
         print_table(
             f"Soak: {arguments.minutes:g} min, {arguments.programs} well-behaved programs, "
-            f"{FUZZ_ROBOTS} fuzzing clients, browser tabs coming and going"
+            f"attacks: {arguments.attacks}"
             + (f", attackers at nice {ATTACKER_NICE}" if arguments.nice_attackers else "")
             + (", attacking a second simulator (control)" if arguments.control else ""),
             [
