@@ -18,6 +18,19 @@ def require(component, robot, what: str):
     return component
 
 
+def numbered(robot, table: dict, number: int, what: str):
+    """The robot's `what` (motor, encoder, servo) by its number; none: an error naming the numbers it has
+    (NOT_SUPPORTED when it has none at all)."""
+    device = table.get(number)
+    if device is None:
+        numbers = ", ".join(str(n) for n in sorted(table)) or "none"
+        raise CallError(
+            f"robot {robot.id} ({robot.name}) has no {what} {number} (its {what}s: {numbers})",
+            generated.ERR_BAD_ARGUMENT if table else generated.ERR_NOT_SUPPORTED,
+        )
+    return device
+
+
 def component_of(robot, cls):
     """The robot's component of that class, or a NOT_SUPPORTED error naming it by its noun."""
     return require(robot.component(cls), robot, cls.noun)

@@ -4,7 +4,7 @@ Motor and encoder numbers depend on the drive (docs/api/motor.md): differential 
 Ackermann 1 = the driven axle; omni 1..4 front left, front right, back left, back right;
 submarine = its thrusters' numbers (no encoders)."""
 
-from eyesim.calls.errors import CallError
+from eyesim.calls.errors import CallError, numbered
 from eyesim.protocol import generated
 from eyesim.robot.actuators import ActuatorError
 from eyesim.robot.components.vw import VwController
@@ -13,17 +13,8 @@ MAX_PERCENT = 100
 MAX_GAIN = 255
 
 
-def _numbers(table: dict) -> str:
-    return ", ".join(str(n) for n in sorted(table)) or "none"
-
-
 def _motor(robot, number: int):
-    motor = robot.motors.get(number)
-    if motor is None:
-        raise CallError(
-            f"robot {robot.id} ({robot.name}) has no motor {number} (its motors: {_numbers(robot.motors)})",
-            generated.ERR_NOT_SUPPORTED if not robot.motors else generated.ERR_BAD_ARGUMENT,
-        )
+    motor = numbered(robot, robot.motors, number, "motor")
     # Driving a motor directly takes it over from the V-omega controller.
     for vw in robot.components_of(VwController):
         if motor in vw.drive.motors.values():
@@ -32,13 +23,7 @@ def _motor(robot, number: int):
 
 
 def _encoder(robot, number: int):
-    encoder = robot.encoders.get(number)
-    if encoder is None:
-        raise CallError(
-            f"robot {robot.id} ({robot.name}) has no encoder {number} (its encoders: {_numbers(robot.encoders)})",
-            generated.ERR_NOT_SUPPORTED if not robot.encoders else generated.ERR_BAD_ARGUMENT,
-        )
-    return encoder
+    return numbered(robot, robot.encoders, number, "encoder")
 
 
 def _check(value: int, low: int, high: int, what: str) -> None:

@@ -3,20 +3,12 @@
 Servo numbers come from the robot file (docs/api/servo.md): the Ackermann steering is servo 1,
 arm joints and grippers use the numbers of their `joint` and `gripper` lines."""
 
-from eyesim.calls.errors import CallError
-from eyesim.protocol import generated
+from eyesim.calls.errors import CallError, numbered
 from eyesim.robot.actuators import SERVO_MAX
 
 
 def _servo(robot, number: int):
-    servo = robot.servos.get(number)
-    if servo is None:
-        numbers = ", ".join(str(n) for n in sorted(robot.servos)) or "none"
-        raise CallError(
-            f"robot {robot.id} ({robot.name}) has no servo {number} (its servos: {numbers})",
-            generated.ERR_BAD_ARGUMENT if robot.servos else generated.ERR_NOT_SUPPORTED,
-        )
-    return servo
+    return numbered(robot, robot.servos, number, "servo")
 
 
 def _position(value: int, what: str) -> None:
